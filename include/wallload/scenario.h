@@ -1,0 +1,138 @@
+/* scenario.h: the scenario file (YAML) as typed, validated values.
+ *
+ * The schema is a table in src/scenario/schema.c: every key, its type, unit
+ * dimension, valid range or choices and default. Parsing walks the YAML node
+ * tree against that table, so an unknown key, a wrong type, a bad unit or an
+ * out-of-range value is reported with file:line:column, the key's path, what
+ * was found and what is valid. Cross-field rules (the slope must start before
+ * the wall, a solitary wave cannot be higher than 0.78 h, ...) are checked
+ * after all keys are read, before any computation.
+ *
+ * Every value remembers where it came from (line/column, or "default"), so
+ * `wallload check` can print the resolved scenario with each default made
+ * explicit and the user's units beside the SI value. */
+#ifndef WALLLOAD_SCENARIO_H
+#define WALLLOAD_SCENARIO_H
+
+#include <stdio.h>
+
+#include "wallload/error.h"
+#include "wallload/units.h"
+
+enum {
+  WL_SCENARIO_MAX_BED = 16,
+  WL_SCENARIO_MAX_GAUGES = 32,
+  WL_SCENARIO_MAX_LEVELS = 8,
+};
+
+/* One scalar of the scenario: number with unit, enumeration choice or text. */
+struct wl_scenario_value {
+  int given;            /* 1: written in the file; 0: the default */
+  int line, col;        /* 1-based position in the file; 0 for defaults */
+  int is_auto;          /* the value is the word "auto" (resolved by plan) */
+  int choice;           /* enumerations: index into the key's choices */
+  struct wl_quantity q; /* numbers: SI value and the value/unit as written */
+  char text[128];       /* the scalar as written (or the default's text) */
+};
+
+/* Choices of the enumerated keys; the order matches the schema's names. */
+enum wl_solitary_theory_choice { WL_THEORY_GRIMSHAW, WL_THEORY_BOUSSINESQ };
+enum wl_generation_choice { WL_GENERATION_PADDLE, WL_GENERATION_INITIAL };
+enum wl_shape_choice { WL_SHAPE_QUADRATIC, WL_SHAPE_QUADRATIC_LIP, WL_SHAPE_QUARTIC_LIP };
+enum wl_lip_form_choice { WL_LIP_AUTO, WL_LIP_PLANE, WL_LIP_AXISYMMETRIC };
+enum wl_energy_basis_choice { WL_BASIS_PER_WIDTH, WL_BASIS_SEED001 };
+enum wl_explosion_model_choice { WL_MODEL_CRATER, WL_MODEL_THROWN_MASS };
+enum wl_backend_choice { WL_BACKEND_AUTO, WL_BACKEND_CPU, WL_BACKEND_CUDA };
+enum wl_viscosity_choice { WL_VISCOSITY_ARTIFICIAL, WL_VISCOSITY_LAMINAR };
+enum wl_far_end_choice { WL_FAR_END_WALL, WL_FAR_END_BEACH, WL_FAR_END_DAMPING };
+
+struct wl_scenario_bed {
+  struct wl_scenario_value from;  /* x where this segment starts [m] */
+  struct wl_scenario_value slope; /* rise over run of the bed from `from` on */
+};
+
+struct wl_scenario_gauge {
+  struct wl_scenario_value name;
+  struct wl_scenario_value x; /* [m] from the paddle */
+};
+
+struct wl_scenario {
+  char path[512];   /* the file, as given */
+  char *text;       /* the whole file (stored with the results); owned */
+  size_t text_len;
+
+  struct wl_scenario_value name, description;
+  struct {
+    struct wl_scenario_value depth, density, gravity;
+  } water;
+  struct {
+    struct wl_scenario_value dimensions, length, width, far_end;
+  } domain;
+  int n_bed;
+  struct wl_scenario_bed bed[WL_SCENARIO_MAX_BED];
+  int bed_given;
+  struct {
+    struct wl_scenario_value x, height, probes;
+  } wall;
+  int n_gauges;
+  struct wl_scenario_gauge gauges[WL_SCENARIO_MAX_GAUGES];
+  struct {
+    int present;
+    struct wl_scenario_value height, theory, generation, at;
+  } solitary;
+  struct {
+    int present;
+    /* exactly one source: charge, energy (a number or "same-as-solitary") or
+     * crater (eta0 and r0) */
+    struct wl_scenario_value charge, energy, eta0, r0;
+    struct wl_scenario_value at, shape, lip_form, energy_basis, coefficient, wave_fraction,
+        model, thrown_parts;
+  } explosion;
+  struct {
+    struct wl_scenario_value dp, particles_per_height, target_error;
+    int n_levels;
+    struct wl_scenario_value levels[WL_SCENARIO_MAX_LEVELS];
+    int levels_given;
+  } resolution;
+  struct {
+    struct wl_scenario_value end_time, output_interval, backend, threads;
+  } run;
+  struct {
+    struct wl_scenario_value coefh, coefsound, cfl, alpha, viscosity, nu, density_diffusion,
+        shifting;
+  } numerics;
+  struct {
+    struct wl_scenario_value template_name;
+  } report;
+};
+
+/* Highest solitary-wave height that wallload accepts, H/h. The highest
+ * solitary wave has H/h ~ 0.833 (Longuet-Higgins & Fenton 1974); third-order
+ * theory is used up to 0.78, where mass and energy still rise with H. */
+#define WL_SCENARIO_MAX_EPS 0.78
+
+/* Zero a scenario so wl_scenario_clear is safe on it. */
+void wl_scenario_init(struct wl_scenario *s);
+
+/* Free what a scenario owns. Safe on a zeroed or half-loaded scenario. */
+void wl_scenario_clear(struct wl_scenario *s);
+
+/* Read, parse and validate a scenario file. On success every value is set
+ * (defaults filled in). Returns WL_OK; WL_EIO if the file cannot be read;
+ * WL_EINPUT for malformed YAML, unknown keys, wrong types, bad units,
+ * out-of-range values or inconsistent values, with "file:line:col: key: ...".
+ * On failure *s may be half-filled; call wl_scenario_clear. */
+enum wl_status wl_scenario_load(const char *path, struct wl_scenario *s, struct wl_error *err);
+
+/* Same, from text in memory (`path` is used in messages only). */
+enum wl_status wl_scenario_parse(const char *path, const char *text, size_t len,
+                                 struct wl_scenario *s, struct wl_error *err);
+
+/* Write the resolved scenario, every key with its SI value, the user's value
+ * and unit beside it, and "default" where it was not given. */
+void wl_scenario_write_resolved(const struct wl_scenario *s, FILE *out);
+
+/* Bed elevation above the flume floor at x [m], from the bathymetry segments. */
+double wl_scenario_bed_z(const struct wl_scenario *s, double x);
+
+#endif

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# setup.sh: install the Debian packages wallload needs to build and test, and
+# only those that are missing. Idempotent; silent when everything is present.
+#
+#   usage: scripts/setup.sh            (as root, or with sudo available)
+#
+# Build:   gcc, cmake, pkg-config, GSL, libyaml, cairo (+pango), HDF5, OpenMP (libgomp
+#          comes with gcc).
+# Tests:   poppler-utils (pdfinfo, pdftotext, pdftoppm check the PDF report).
+# CUDA is optional: where nvcc is on the PATH or in /usr/local/cuda, the CUDA backend
+# is compiled; it is never installed from here.
+set -eu
+
+packages="build-essential cmake pkg-config libgsl-dev libyaml-dev libcairo2-dev
+libpango1.0-dev libhdf5-dev poppler-utils"
+
+missing=""
+for p in $packages; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing="$missing $p"
+  fi
+done
+[ -z "$missing" ] && exit 0
+
+echo "setup: installing$missing" >&2
+if [ "$(id -u)" -eq 0 ]; then sudo=""; else sudo="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq >/dev/null
+# shellcheck disable=SC2086
+$sudo apt-get install -y -qq --no-install-recommends $missing >/dev/null
+echo "setup: done" >&2

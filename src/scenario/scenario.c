@@ -1,0 +1,690 @@
+/* scenario.c: load a scenario file with libyaml and check it against the
+ * schema table (schema.c), then check the rules that span several keys. */
+#include "wallload/scenario.h"
+
+#include <ctype.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <yaml.h>
+
+#include "schema.h"
+
+/* Parsing context: the file name for messages and the YAML document. */
+struct ctx {
+  const char *path;
+  yaml_document_t *doc;
+  struct wl_error *err;
+};
+
+static struct wl_scenario_value *value_at(void *base, size_t off) {
+  return (struct wl_scenario_value *)((char *)base + off);
+}
+
+static int line_of(const yaml_node_t *n) { return (int)n->start_mark.line + 1; }
+static int col_of(const yaml_node_t *n) { return (int)n->start_mark.column + 1; }
+
+static enum wl_status fail_at(struct ctx *c, const yaml_node_t *n, const char *key,
+                              const char *fmt, const char *detail) {
+  return wl_error_set(c->err, WL_EINPUT, "%s:%d:%d: %s: %s%s", c->path, line_of(n), col_of(n), key,
+                      fmt, detail ? detail : "");
+}
+
+static const char *node_kind(const yaml_node_t *n) {
+  switch (n->type) {
+  case YAML_SCALAR_NODE: return "a value";
+  case YAML_SEQUENCE_NODE: return "a list";
+  case YAML_MAPPING_NODE: return "a mapping";
+  default: return "nothing";
+  }
+}
+
+/* Levenshtein distance, for "did you mean". Keys are short. */
+static int edit_distance(const char *a, const char *b) {
+  size_t la = strlen(a), lb = strlen(b);
+  if (la > 63 || lb > 63) return 99;
+  int d[64][64];
+  for (size_t i = 0; i <= la; i++) d[i][0] = (int)i;
+  for (size_t j = 0; j <= lb; j++) d[0][j] = (int)j;
+  for (size_t i = 1; i <= la; i++)
+    for (size_t j = 1; j <= lb; j++) {
+      int cost = tolower((unsigned char)a[i - 1]) != tolower((unsigned char)b[j - 1]);
+      int m = d[i - 1][j] + 1;
+      if (d[i][j - 1] + 1 < m) m = d[i][j - 1] + 1;
+      if (d[i - 1][j - 1] + cost < m) m = d[i - 1][j - 1] + cost;
+      d[i][j] = m;
+    }
+  return d[la][lb];
+}
+
+static void list_keys(const struct wl_key *keys, char *buf, size_t size) {
+  buf[0] = '\0';
+  for (const struct wl_key *k = keys; k->name; k++) {
+    size_t used = strlen(buf);
+    snprintf(buf + used, size - used, "%s%s", k == keys ? "" : ", ", k->name);
+  }
+}
+
+static void join_path(char *out, size_t size, const char *parent, const char *name) {
+  if (parent && *parent)
+    snprintf(out, size, "%s.%s", parent, name);
+  else
+    snprintf(out, size, "%s", name);
+}
+
+static void range_text(const struct wl_key *k, char *buf, size_t size) {
+  const char *unit = wl_units_si_symbol(k->dim);
+  if (!isnan(k->lo) && !isnan(k->hi))
+    snprintf(buf, size, "a value %s %g and %s %g %s", k->lo_open ? "above" : "from", k->lo,
+             k->hi_open ? "below" : "up to", k->hi, unit);
+  else if (!isnan(k->lo))
+    snprintf(buf, size, "a value %s %g %s", k->lo_open ? "above" : "of at least", k->lo, unit);
+  else if (!isnan(k->hi))
+    snprintf(buf, size, "a value %s %g %s", k->hi_open ? "below" : "of at most", k->hi, unit);
+  else
+    buf[0] = '\0';
+}
+
+static int out_of_range(const struct wl_key *k, double v) {
+  if (!isnan(k->lo) && (k->lo_open ? v <= k->lo : v < k->lo)) return 1;
+  if (!isnan(k->hi) && (k->hi_open ? v >= k->hi : v > k->hi)) return 1;
+  return 0;
+}
+
+/* Parse one scalar `text` for key `k` into *v. `n` (may be NULL for
+ * defaults) gives the position for messages. */
+static enum wl_status set_scalar(struct ctx *c, const struct wl_key *k, const char *path,
+                                 const yaml_node_t *n, const char *text,
+                                 struct wl_scenario_value *v) {
+  memset(v, 0, sizeof *v);
+  snprintf(v->text, sizeof v->text, "%s", text);
+  if (n) {
+    v->given = 1;
+    v->line = line_of(n);
+    v->col = col_of(n);
+  }
+  char valid[256], msg[512];
+  switch (k->type) {
+  case KT_STR:
+    return WL_OK;
+  case KT_ENUM: {
+    for (int i = 0; k->choices[i]; i++)
+      if (strcmp(k->choices[i], text) == 0) {
+        v->choice = i;
+        return WL_OK;
+      }
+    valid[0] = '\0';
+    for (int i = 0; k->choices[i]; i++) {
+      size_t u = strlen(valid);
+      snprintf(valid + u, sizeof valid - u, "%s%s", i ? ", " : "", k->choices[i]);
+    }
+    snprintf(msg, sizeof msg, "found '%s'; valid: %s", text, valid);
+    return n ? fail_at(c, n, path, msg, NULL)
+             : wl_error_set(c->err, WL_EINPUT, "schema default for %s: %s", path, msg);
+  }
+  case KT_QTY_OR_AUTO:
+  case KT_INT_OR_AUTO:
+    if (strcmp(text, "auto") == 0) {
+      v->is_auto = 1;
+      return WL_OK;
+    }
+    break;
+  case KT_QTY_OR_SAME:
+    if (strcmp(text, "same-as-solitary") == 0) {
+      v->is_auto = 1;
+      return WL_OK;
+    }
+    break;
+  default:
+    break;
+  }
+  struct wl_error uerr;
+  wl_error_clear(&uerr);
+  enum wl_dim dim = (k->type == KT_INT || k->type == KT_INT_OR_AUTO) ? WL_DIM_NONE : k->dim;
+  if (wl_units_parse(text, dim, &v->q, &uerr) != WL_OK) {
+    const char *extra = k->type == KT_QTY_OR_AUTO || k->type == KT_INT_OR_AUTO
+                            ? " (or auto)"
+                            : k->type == KT_QTY_OR_SAME ? " (or same-as-solitary)" : "";
+    snprintf(msg, sizeof msg, "%s%s", uerr.msg, extra);
+    return n ? fail_at(c, n, path, msg, NULL)
+             : wl_error_set(c->err, WL_EINPUT, "schema default for %s: %s", path, msg);
+  }
+  if ((k->type == KT_INT || k->type == KT_INT_OR_AUTO) && v->q.si != floor(v->q.si)) {
+    snprintf(msg, sizeof msg, "found '%s'; expected a whole number", text);
+    return fail_at(c, n, path, msg, NULL);
+  }
+  if (out_of_range(k, v->q.si)) {
+    range_text(k, valid, sizeof valid);
+    snprintf(msg, sizeof msg, "found '%s' (%g %s); expected %s (%s)", text, v->q.si,
+             wl_units_si_symbol(k->dim), valid, k->help);
+    return n ? fail_at(c, n, path, msg, NULL)
+             : wl_error_set(c->err, WL_EINPUT, "schema default for %s: %s", path, msg);
+  }
+  return WL_OK;
+}
+
+static enum wl_status parse_map(struct ctx *c, const struct wl_key *keys, void *base,
+                                const char *parent, yaml_node_t *map);
+
+/* Fill the defaults of every key of `keys` not given; `where` (may be NULL)
+ * is the node of the enclosing map, for "missing key" messages. */
+static enum wl_status fill_defaults(struct ctx *c, const struct wl_key *keys, void *base,
+                                    const char *parent, const yaml_node_t *where,
+                                    const unsigned char *seen) {
+  for (int i = 0; keys[i].name; i++) {
+    const struct wl_key *k = &keys[i];
+    if (seen && seen[i]) continue;
+    char path[256];
+    join_path(path, sizeof path, parent, k->name);
+    if (k->type == KT_MAP) {
+      if (k->required && where) {
+        char msg[512];
+        snprintf(msg, sizeof msg, "missing required section '%s' (%s)", path, k->help);
+        return fail_at(c, where, parent && *parent ? parent : "scenario", msg, NULL);
+      }
+      enum wl_status st = fill_defaults(c, k->sub, base, path, NULL, NULL);
+      if (st) return st;
+      continue;
+    }
+    if (k->type == KT_BED || k->type == KT_GAUGES || k->type == KT_LEVELS) continue;
+    if (k->required && where) {
+      char msg[512];
+      snprintf(msg, sizeof msg, "missing required key '%s' (%s)", k->name, k->help);
+      return fail_at(c, where, parent && *parent ? parent : "scenario", msg, NULL);
+    }
+    if (k->def) {
+      enum wl_status st = set_scalar(c, k, path, NULL, k->def, value_at(base, k->off));
+      if (st) return st;
+    }
+  }
+  return WL_OK;
+}
+
+static enum wl_status parse_list_of_maps(struct ctx *c, const struct wl_key *k, const char *path,
+                                         yaml_node_t *seq, void *items, size_t item_size,
+                                         int max_items, int *n_items) {
+  if (seq->type != YAML_SEQUENCE_NODE) {
+    char msg[512];
+    snprintf(msg, sizeof msg, "found %s; expected a list (%s)", node_kind(seq), k->help);
+    return fail_at(c, seq, path, msg, NULL);
+  }
+  int n = 0;
+  for (yaml_node_item_t *it = seq->data.sequence.items.start; it < seq->data.sequence.items.top;
+       it++) {
+    yaml_node_t *item = yaml_document_get_node(c->doc, *it);
+    char ipath[256];
+    snprintf(ipath, sizeof ipath, "%s[%d]", path, n);
+    if (n >= max_items) {
+      char msg[256];
+      snprintf(msg, sizeof msg, "too many entries; at most %d are supported", max_items);
+      return fail_at(c, item, ipath, msg, NULL);
+    }
+    enum wl_status st = parse_map(c, k->sub, (char *)items + (size_t)n * item_size, ipath, item);
+    if (st) return st;
+    n++;
+  }
+  *n_items = n;
+  return WL_OK;
+}
+
+static enum wl_status parse_levels(struct ctx *c, const struct wl_key *k, const char *path,
+                                   yaml_node_t *seq, struct wl_scenario *s) {
+  if (seq->type != YAML_SEQUENCE_NODE) {
+    char msg[512];
+    snprintf(msg, sizeof msg, "found %s; expected %s", node_kind(seq), k->help);
+    return fail_at(c, seq, path, msg, NULL);
+  }
+  int n = 0;
+  for (yaml_node_item_t *it = seq->data.sequence.items.start; it < seq->data.sequence.items.top;
+       it++) {
+    yaml_node_t *item = yaml_document_get_node(c->doc, *it);
+    char ipath[256];
+    snprintf(ipath, sizeof ipath, "%s[%d]", path, n);
+    if (n >= WL_SCENARIO_MAX_LEVELS) {
+      char msg[256];
+      snprintf(msg, sizeof msg, "too many levels; at most %d", WL_SCENARIO_MAX_LEVELS);
+      return fail_at(c, item, ipath, msg, NULL);
+    }
+    if (item->type != YAML_SCALAR_NODE) {
+      char msg[256];
+      snprintf(msg, sizeof msg, "found %s; expected a number (a factor of dp)", node_kind(item));
+      return fail_at(c, item, ipath, msg, NULL);
+    }
+    struct wl_key level = *k;
+    level.type = KT_QTY;
+    level.dim = WL_DIM_RATIO;
+    enum wl_status st = set_scalar(c, &level, ipath, item, (const char *)item->data.scalar.value,
+                                   &s->resolution.levels[n]);
+    if (st) return st;
+    n++;
+  }
+  s->resolution.n_levels = n;
+  s->resolution.levels_given = 1;
+  return WL_OK;
+}
+
+static enum wl_status parse_map(struct ctx *c, const struct wl_key *keys, void *base,
+                                const char *parent, yaml_node_t *map) {
+  if (map->type != YAML_MAPPING_NODE) {
+    char msg[512], names[512];
+    list_keys(keys, names, sizeof names);
+    snprintf(msg, sizeof msg, "found %s; expected a mapping with keys: %s", node_kind(map), names);
+    return fail_at(c, map, parent && *parent ? parent : "scenario", msg, NULL);
+  }
+  int n_keys = 0;
+  while (keys[n_keys].name) n_keys++;
+  unsigned char seen[64] = {0};
+  for (yaml_node_pair_t *p = map->data.mapping.pairs.start; p < map->data.mapping.pairs.top; p++) {
+    yaml_node_t *kn = yaml_document_get_node(c->doc, p->key);
+    yaml_node_t *vn = yaml_document_get_node(c->doc, p->value);
+    if (kn->type != YAML_SCALAR_NODE)
+      return fail_at(c, kn, parent && *parent ? parent : "scenario",
+                     "a key must be a plain word", NULL);
+    const char *name = (const char *)kn->data.scalar.value;
+    char path[256];
+    join_path(path, sizeof path, parent, name);
+    int idx = -1;
+    for (int i = 0; i < n_keys; i++)
+      if (strcmp(keys[i].name, name) == 0) idx = i;
+    if (idx < 0) {
+      char msg[768], names[512];
+      list_keys(keys, names, sizeof names);
+      int best = -1, best_d = 99;
+      for (int i = 0; i < n_keys; i++) {
+        int d = edit_distance(name, keys[i].name);
+        if (d < best_d) best_d = d, best = i;
+      }
+      int close = best >= 0 && (best_d <= 2 || best_d * 3 <= (int)strlen(keys[best].name));
+      if (close)
+        snprintf(msg, sizeof msg, "unknown key '%s'; did you mean '%s'? valid keys here: %s", name,
+                 keys[best].name, names);
+      else
+        snprintf(msg, sizeof msg, "unknown key '%s'; valid keys here: %s", name, names);
+      return fail_at(c, kn, path, msg, NULL);
+    }
+    if (seen[idx])
+      return fail_at(c, kn, path, "this key appears twice in the same mapping", NULL);
+    seen[idx] = 1;
+    const struct wl_key *k = &keys[idx];
+    enum wl_status st = WL_OK;
+    switch (k->type) {
+    case KT_MAP:
+      if (k->present_off != (size_t)-1) *(int *)((char *)base + k->present_off) = 1;
+      st = parse_map(c, k->sub, base, path, vn);
+      break;
+    case KT_BED: {
+      struct wl_scenario *s = base;
+      st = parse_list_of_maps(c, k, path, vn, s->bed, sizeof s->bed[0], WL_SCENARIO_MAX_BED,
+                              &s->n_bed);
+      s->bed_given = 1;
+      break;
+    }
+    case KT_GAUGES: {
+      struct wl_scenario *s = base;
+      st = parse_list_of_maps(c, k, path, vn, s->gauges, sizeof s->gauges[0],
+                              WL_SCENARIO_MAX_GAUGES, &s->n_gauges);
+      break;
+    }
+    case KT_LEVELS:
+      st = parse_levels(c, k, path, vn, base);
+      break;
+    default:
+      if (vn->type != YAML_SCALAR_NODE) {
+        char msg[512];
+        snprintf(msg, sizeof msg, "found %s; expected a single value (%s)", node_kind(vn),
+                 k->help);
+        return fail_at(c, vn, path, msg, NULL);
+      }
+      if (vn->data.scalar.length == 0 && k->type != KT_STR) {
+        char msg[512];
+        snprintf(msg, sizeof msg, "the value is empty; expected %s",
+                 k->type == KT_ENUM ? "one of the listed choices" : wl_units_valid(k->dim));
+        return fail_at(c, vn, path, msg, NULL);
+      }
+      st = set_scalar(c, k, path, vn, (const char *)vn->data.scalar.value, value_at(base, k->off));
+    }
+    if (st) return st;
+  }
+  return fill_defaults(c, keys, base, parent, map, seen);
+}
+
+/* ---- rules that span several keys --------------------------------------- */
+
+static enum wl_status at_value(struct ctx *c, const struct wl_scenario_value *v, const char *key,
+                               const char *msg) {
+  if (v->given)
+    return wl_error_set(c->err, WL_EINPUT, "%s:%d:%d: %s: %s", c->path, v->line, v->col, key, msg);
+  return wl_error_set(c->err, WL_EINPUT, "%s: %s (default value): %s", c->path, key, msg);
+}
+
+double wl_scenario_bed_z(const struct wl_scenario *s, double x) {
+  double z = 0.0;
+  for (int i = 0; i < s->n_bed; i++) {
+    double x0 = s->bed[i].from.q.si;
+    if (x <= x0) break;
+    double x1 = i + 1 < s->n_bed ? s->bed[i + 1].from.q.si : x;
+    if (x1 > x) x1 = x;
+    z += s->bed[i].slope.q.si * (x1 - x0);
+  }
+  return z;
+}
+
+static enum wl_status check_rules(struct ctx *c, struct wl_scenario *s) {
+  char msg[768];
+  double h = s->water.depth.q.si, len = s->domain.length.q.si, xw = s->wall.x.q.si;
+  if (xw >= len) {
+    snprintf(msg, sizeof msg,
+             "found %g m, at or beyond the end of the flume; expected a position below "
+             "domain.length = %g m",
+             xw, len);
+    return at_value(c, &s->wall.x, "wall.x", msg);
+  }
+  for (int i = 0; i < s->n_bed; i++) {
+    char key[64];
+    double x0 = s->bed[i].from.q.si;
+    snprintf(key, sizeof key, "bathymetry[%d].from", i);
+    if (i > 0 && x0 <= s->bed[i - 1].from.q.si) {
+      snprintf(msg, sizeof msg,
+               "found %g m; segments must be in increasing order of 'from' (previous: %g m)", x0,
+               s->bed[i - 1].from.q.si);
+      return at_value(c, &s->bed[i].from, key, msg);
+    }
+    if (x0 >= xw) {
+      snprintf(msg, sizeof msg,
+               "found %g m, at or behind the wall (wall.x = %g m): this segment never reaches "
+               "the wall; expected a start before the wall",
+               x0, xw);
+      return at_value(c, &s->bed[i].from, key, msg);
+    }
+    double z_end = wl_scenario_bed_z(s, i + 1 < s->n_bed ? s->bed[i + 1].from.q.si : xw);
+    snprintf(key, sizeof key, "bathymetry[%d].slope", i);
+    if (z_end < -1e-12) {
+      snprintf(msg, sizeof msg,
+               "this slope takes the bed %g m below the flume floor; the floor is z = 0 and "
+               "the bed may only rise from it",
+               -z_end);
+      return at_value(c, &s->bed[i].slope, key, msg);
+    }
+    if (z_end >= h) {
+      double x_dry = x0 + (h - wl_scenario_bed_z(s, x0)) / s->bed[i].slope.q.si;
+      snprintf(msg, sizeof msg,
+               "the bed reaches the still-water level (depth %g m) at x = %.3f m, before the "
+               "wall at %g m: this slope never reaches the wall under water; expected a "
+               "gentler slope, a later start, or a flat segment before the shore",
+               h, x_dry, xw);
+      return at_value(c, &s->bed[i].slope, key, msg);
+    }
+  }
+  double z_wall = wl_scenario_bed_z(s, xw);
+  if (z_wall + s->wall.height.q.si <= h) {
+    snprintf(msg, sizeof msg,
+             "the wall's crest (%g m above the floor) is at or below the still-water level "
+             "(%g m): a submerged wall is not a seawall; expected a height above %g m",
+             z_wall + s->wall.height.q.si, h, h - z_wall);
+    return at_value(c, &s->wall.height, "wall.height", msg);
+  }
+  for (int i = 0; i < s->n_gauges; i++) {
+    char key[64];
+    snprintf(key, sizeof key, "gauges[%d].x", i);
+    double xg = s->gauges[i].x.q.si;
+    if (xg <= 0 || xg >= xw) {
+      snprintf(msg, sizeof msg,
+               "found %g m; a gauge must be in the water between the paddle (0 m) and the "
+               "wall (%g m)",
+               xg, xw);
+      return at_value(c, &s->gauges[i].x, key, msg);
+    }
+    for (int j = 0; j < i; j++)
+      if (strcmp(s->gauges[i].name.text, s->gauges[j].name.text) == 0) {
+        snprintf(key, sizeof key, "gauges[%d].name", i);
+        snprintf(msg, sizeof msg, "'%s' is already the name of gauges[%d]; names must be unique",
+                 s->gauges[i].name.text, j);
+        return at_value(c, &s->gauges[i].name, key, msg);
+      }
+  }
+  if (!s->solitary.present && !s->explosion.present)
+    return wl_error_set(c->err, WL_EINPUT,
+                        "%s: loads: no load case; expected loads.solitary and/or loads.explosion",
+                        c->path);
+  if (s->solitary.present) {
+    double H = s->solitary.height.q.si, eps = H / h;
+    if (eps > WL_SCENARIO_MAX_EPS) {
+      snprintf(msg, sizeof msg,
+               "found %g m, H/h = %.3f in %g m of water; a solitary wave can be at most "
+               "H/h = 0.833 high (Longuet-Higgins & Fenton 1974) and wallload's theories hold to "
+               "H/h = %.2f: expected a height up to %.4g m",
+               H, eps, h, WL_SCENARIO_MAX_EPS, WL_SCENARIO_MAX_EPS * h);
+      return at_value(c, &s->solitary.height, "loads.solitary.height", msg);
+    }
+    if (!s->solitary.at.is_auto) {
+      double xa = s->solitary.at.q.si;
+      if (xa <= 0 || xa >= xw) {
+        snprintf(msg, sizeof msg, "found %g m; expected a crest position between 0 and the wall (%g m)",
+                 xa, xw);
+        return at_value(c, &s->solitary.at, "loads.solitary.at", msg);
+      }
+    }
+  }
+  if (s->explosion.present) {
+    int n_src = s->explosion.charge.given + s->explosion.energy.given +
+                (s->explosion.eta0.given || s->explosion.r0.given);
+    if (n_src != 1)
+      return wl_error_set(
+          c->err, WL_EINPUT,
+          "%s: loads.explosion: %s; give exactly one of charge (e.g. 32 lb), energy (e.g. 177 kJ "
+          "or same-as-solitary) or crater (eta0 and r0)",
+          c->path, n_src == 0 ? "no source given" : "more than one source given");
+    if (s->explosion.eta0.given != s->explosion.r0.given)
+      return wl_error_set(c->err, WL_EINPUT,
+                          "%s: loads.explosion: a crater needs both eta0 and r0 (only %s given)",
+                          c->path, s->explosion.eta0.given ? "eta0" : "r0");
+    if (s->explosion.energy.is_auto && !s->solitary.present)
+      return at_value(c, &s->explosion.energy, "loads.explosion.energy",
+                      "same-as-solitary needs a loads.solitary case to match");
+    double xa = s->explosion.at.q.si;
+    if (xa <= 0 || xa >= xw) {
+      snprintf(msg, sizeof msg, "found %g m; expected a position between 0 and the wall (%g m)",
+               xa, xw);
+      return at_value(c, &s->explosion.at, "loads.explosion.at", msg);
+    }
+    int parts = (int)s->explosion.thrown_parts.q.si;
+    if (parts != 1 && parts != 3 && parts != 5)
+      return at_value(c, &s->explosion.thrown_parts, "loads.explosion.thrown_parts",
+                      "expected 1, 3 or 5 (the partitions of seed 000)");
+    if (s->explosion.shape.choice == WL_SHAPE_QUADRATIC && s->explosion.lip_form.given)
+      return at_value(c, &s->explosion.lip_form, "loads.explosion.lip_form",
+                      "a quadratic crater without lip has no lip form; remove lip_form or use "
+                      "shape: quadratic-lip or quartic-lip");
+  }
+  for (int i = 0; i < s->resolution.n_levels; i++) {
+    char key[64];
+    snprintf(key, sizeof key, "resolution.convergence[%d]", i);
+    double f = s->resolution.levels[i].q.si;
+    if (!(f > 0 && f <= 1))
+      return at_value(c, &s->resolution.levels[i], key,
+                      "expected a factor of dp above 0 and up to 1 (e.g. 1, 0.71, 0.5)");
+    if (i > 0 && f >= s->resolution.levels[i - 1].q.si)
+      return at_value(c, &s->resolution.levels[i], key,
+                      "levels must decrease (each one finer than the one before)");
+  }
+  return WL_OK;
+}
+
+/* ---- loading ------------------------------------------------------------- */
+
+void wl_scenario_init(struct wl_scenario *s) { memset(s, 0, sizeof *s); }
+
+void wl_scenario_clear(struct wl_scenario *s) {
+  if (!s) return;
+  free(s->text);
+  memset(s, 0, sizeof *s);
+}
+
+enum wl_status wl_scenario_parse(const char *path, const char *text, size_t len,
+                                 struct wl_scenario *s, struct wl_error *err) {
+  wl_scenario_clear(s);
+  snprintf(s->path, sizeof s->path, "%s", path);
+  s->text = malloc(len + 1);
+  if (!s->text) return wl_error_set(err, WL_ENOMEM, "%s: no memory for the file's text", path);
+  memcpy(s->text, text, len);
+  s->text[len] = '\0';
+  s->text_len = len;
+
+  yaml_parser_t parser;
+  yaml_document_t doc;
+  if (!yaml_parser_initialize(&parser))
+    return wl_error_set(err, WL_ENOMEM, "%s: cannot initialise the YAML parser", path);
+  yaml_parser_set_input_string(&parser, (const unsigned char *)s->text, len);
+  if (!yaml_parser_load(&parser, &doc)) {
+    enum wl_status st = wl_error_set(
+        err, WL_EINPUT, "%s:%d:%d: malformed YAML: %s%s%s", path,
+        (int)parser.problem_mark.line + 1, (int)parser.problem_mark.column + 1,
+        parser.problem ? parser.problem : "syntax error", parser.context ? " " : "",
+        parser.context ? parser.context : "");
+    yaml_parser_delete(&parser);
+    return st;
+  }
+  struct ctx c = {path, &doc, err};
+  enum wl_status st = WL_OK;
+  yaml_node_t *root = yaml_document_get_root_node(&doc);
+  if (!root)
+    st = wl_error_set(err, WL_EINPUT, "%s:1:1: scenario: the file is empty; expected a mapping "
+                      "with scenario, water, domain, wall and loads", path);
+  else
+    st = parse_map(&c, wl_schema_top, s, "", root);
+  /* A second document in the same file would be silently ignored: refuse it. */
+  if (st == WL_OK) {
+    yaml_document_t extra;
+    if (yaml_parser_load(&parser, &extra)) {
+      yaml_node_t *r2 = yaml_document_get_root_node(&extra);
+      if (r2)
+        st = wl_error_set(err, WL_EINPUT,
+                          "%s:%d:%d: a second YAML document; a scenario file holds one", path,
+                          (int)r2->start_mark.line + 1, (int)r2->start_mark.column + 1);
+      yaml_document_delete(&extra);
+    }
+  }
+  if (st == WL_OK) st = check_rules(&c, s);
+  yaml_document_delete(&doc);
+  yaml_parser_delete(&parser);
+  return st;
+}
+
+enum wl_status wl_scenario_load(const char *path, struct wl_scenario *s, struct wl_error *err) {
+  FILE *f = fopen(path, "rb");
+  if (!f) return wl_error_set(err, WL_EIO, "%s: cannot open the scenario file", path);
+  size_t cap = 1 << 14, len = 0;
+  char *buf = malloc(cap);
+  if (!buf) {
+    fclose(f);
+    return wl_error_set(err, WL_ENOMEM, "%s: no memory to read the file", path);
+  }
+  size_t got;
+  while ((got = fread(buf + len, 1, cap - len, f)) > 0) {
+    len += got;
+    if (len == cap) {
+      if (cap > ((size_t)64 << 20)) {
+        free(buf);
+        fclose(f);
+        return wl_error_set(err, WL_EINPUT, "%s: larger than 64 MiB; not a scenario file", path);
+      }
+      char *bigger = realloc(buf, cap * 2);
+      if (!bigger) {
+        free(buf);
+        fclose(f);
+        return wl_error_set(err, WL_ENOMEM, "%s: no memory to read the file", path);
+      }
+      buf = bigger;
+      cap *= 2;
+    }
+  }
+  int read_error = ferror(f);
+  fclose(f);
+  if (read_error) {
+    free(buf);
+    return wl_error_set(err, WL_EIO, "%s: read error", path);
+  }
+  enum wl_status st = wl_scenario_parse(path, buf, len, s, err);
+  free(buf);
+  return st;
+}
+
+/* ---- listing ------------------------------------------------------------- */
+
+static void write_value(FILE *out, const char *path, const struct wl_key *k,
+                        const struct wl_scenario_value *v) {
+  char left[160];
+  if (v->is_auto)
+    snprintf(left, sizeof left, "%s", v->text);
+  else if (k->type == KT_STR || k->type == KT_ENUM)
+    snprintf(left, sizeof left, "%s", v->text);
+  else if (k->type == KT_INT || k->type == KT_INT_OR_AUTO)
+    snprintf(left, sizeof left, "%.0f", v->q.si);
+  else if (k->dim == WL_DIM_RATIO && v->q.unit[0] == '\0' && strchr(v->text, '/'))
+    snprintf(left, sizeof left, "%.6g", v->q.si);
+  else if (*wl_units_si_symbol(k->dim))
+    snprintf(left, sizeof left, "%.6g %s", v->q.si, wl_units_si_symbol(k->dim));
+  else
+    snprintf(left, sizeof left, "%.6g", v->q.si);
+  char src[192];
+  if (!v->given)
+    snprintf(src, sizeof src, "default");
+  else if (strcmp(left, v->text) == 0)
+    snprintf(src, sizeof src, "line %d", v->line);
+  else
+    snprintf(src, sizeof src, "given as %s, line %d", v->text, v->line);
+  fprintf(out, "  %-40s %-22s (%s)\n", path, left, src);
+}
+
+static void write_keys(FILE *out, const struct wl_key *keys, const void *base, const char *parent,
+                       const struct wl_scenario *s) {
+  for (const struct wl_key *k = keys; k->name; k++) {
+    char path[256];
+    join_path(path, sizeof path, parent, k->name);
+    switch (k->type) {
+    case KT_MAP:
+      if (k->present_off != (size_t)-1 && !*(const int *)((const char *)base + k->present_off))
+        continue;
+      write_keys(out, k->sub, base, path, s);
+      break;
+    case KT_BED:
+      if (s->n_bed == 0) fprintf(out, "  %-40s %-22s (default)\n", path, "flat");
+      for (int i = 0; i < s->n_bed; i++) {
+        char ip[256];
+        snprintf(ip, sizeof ip, "%s[%d]", path, i);
+        write_keys(out, k->sub, &s->bed[i], ip, s);
+      }
+      break;
+    case KT_GAUGES:
+      if (s->n_gauges == 0) fprintf(out, "  %-40s %-22s\n", path, "none");
+      for (int i = 0; i < s->n_gauges; i++) {
+        char ip[256];
+        snprintf(ip, sizeof ip, "%s[%d]", path, i);
+        write_keys(out, k->sub, &s->gauges[i], ip, s);
+      }
+      break;
+    case KT_LEVELS:
+      if (s->resolution.n_levels == 0) fprintf(out, "  %-40s %-22s (default)\n", path, "none");
+      for (int i = 0; i < s->resolution.n_levels; i++) {
+        char ip[256];
+        snprintf(ip, sizeof ip, "%s[%d]", path, i);
+        struct wl_key level = *k;
+        level.type = KT_QTY;
+        level.dim = WL_DIM_RATIO;
+        write_value(out, ip, &level, &s->resolution.levels[i]);
+      }
+      break;
+    default: {
+      const struct wl_scenario_value *v =
+          (const struct wl_scenario_value *)((const char *)base + k->off);
+      if (!v->given && !k->def) continue; /* optional and absent */
+      write_value(out, path, k, v);
+    }
+    }
+  }
+}
+
+void wl_scenario_write_resolved(const struct wl_scenario *s, FILE *out) {
+  write_keys(out, wl_schema_top, s, "", s);
+}
