@@ -56,13 +56,13 @@
 #endif
 
 /* Empirical scaling [S1], in feet and pounds of TNT. */
-#define WL_VANDORN_COEF 9.6   /* R0 [ft] = 9.6 W[lb]^0.3, [S1] eq 4 */
-#define WL_VANDORN_EXP 0.3    /* exponent of W in [S1] eq 4 */
-#define WL_WHALIN_COEF 34.0   /* Hmax r [ft^2] / W[lb]^0.54, upper critical depth, [S1] eq 6 */
-#define WL_LEMEHAUTE_COEF 36.0 /* the same, Le Mehaute (1980), [S1] eq 7 */
-#define WL_WHALIN_MEAN_COEF 35.0 /* mean of eqs 6 and 7; reproduces [S1]'s Charlesworth eta0 = 2.07 m */
-#define WL_WHALIN_EXP 0.54    /* exponent of W in [S1] eqs 6-7 */
-#define WL_ETA0R0_PER_HR 0.81 /* eta0 R0 = 0.81 Hmax r, [S1] eq 5 (dimensionless: m^2/m^2) */
+#define WL_VANDORN_COEF 9.6      /* R0 [ft] = 9.6 W[lb]^0.3, [S1] eq 4 */
+#define WL_VANDORN_EXP 0.3       /* exponent of W in [S1] eq 4 */
+#define WL_WHALIN_COEF 34.0      /* Hmax r [ft^2] / W[lb]^0.54, upper critical depth, [S1] eq 6 */
+#define WL_LEMEHAUTE_COEF 36.0   /* the same, Le Mehaute (1980), [S1] eq 7 */
+#define WL_WHALIN_MEAN_COEF 35.0 /* mean of eqs 6-7; gives [S1]'s Charlesworth eta0 = 2.07 m */
+#define WL_WHALIN_EXP 0.54       /* exponent of W in [S1] eqs 6-7 */
+#define WL_ETA0R0_PER_HR 0.81    /* eta0 R0 = 0.81 Hmax r, [S1] eq 5 (dimensionless: m^2/m^2) */
 
 /* Energy partition and cavity work [S0] eqs 8-9. */
 #define WL_P_ATM 101325.0 /* standard atmosphere [Pa] */

@@ -16,6 +16,7 @@
 #define WL_IN_M 0.0254          /* metres per inch (exact) */
 #define WL_LB_KG 0.45359237     /* kilograms per avoirdupois pound (exact) */
 #define WL_TNT_J_PER_KG 4.184e6 /* TNT equivalent: 1 kg TNT = 4.184 MJ (by definition) */
+#define WL_PI 3.14159265358979323846 /* C11 has no M_PI */
 #define WL_G_STANDARD 9.81      /* gravity used by the seeds and REFERENCES [m/s^2] */
 
 /* What a quantity measures. */

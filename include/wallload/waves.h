@@ -151,7 +151,7 @@ struct wl_solitary_exact {
   double impulse;   /* I/(rho h^2 sqrt(gh)) = F M [-] */
   double kinetic;   /* T/(rho g h^3) [-] */
   double potential; /* V/(rho g h^3) [-] */
-  double K;         /* far-field decay rate times h, tan(K)/K = F^2 [-] */
+  double beta;      /* far-field decay: eta ~ e^{-beta |x|/h}, tan(beta)/beta = F^2 [-] */
   double residual;  /* max |Babenko residual| at the end [-] */
   int n_iter;       /* Petviashvili iterations used */
 };

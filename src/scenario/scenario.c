@@ -74,14 +74,15 @@ static void join_path(char *out, size_t size, const char *parent, const char *na
 }
 
 static void range_text(const struct wl_key *k, char *buf, size_t size) {
-  const char *unit = wl_units_si_symbol(k->dim);
+  char unit[24] = "";
+  if (*wl_units_si_symbol(k->dim)) snprintf(unit, sizeof unit, " %s", wl_units_si_symbol(k->dim));
   if (!isnan(k->lo) && !isnan(k->hi))
-    snprintf(buf, size, "a value %s %g and %s %g %s", k->lo_open ? "above" : "from", k->lo,
+    snprintf(buf, size, "a value %s %g and %s %g%s", k->lo_open ? "above" : "from", k->lo,
              k->hi_open ? "below" : "up to", k->hi, unit);
   else if (!isnan(k->lo))
-    snprintf(buf, size, "a value %s %g %s", k->lo_open ? "above" : "of at least", k->lo, unit);
+    snprintf(buf, size, "a value %s %g%s", k->lo_open ? "above" : "of at least", k->lo, unit);
   else if (!isnan(k->hi))
-    snprintf(buf, size, "a value %s %g %s", k->hi_open ? "below" : "of at most", k->hi, unit);
+    snprintf(buf, size, "a value %s %g%s", k->hi_open ? "below" : "of at most", k->hi, unit);
   else
     buf[0] = '\0';
 }
@@ -156,8 +157,11 @@ static enum wl_status set_scalar(struct ctx *c, const struct wl_key *k, const ch
   }
   if (out_of_range(k, v->q.si)) {
     range_text(k, valid, sizeof valid);
-    snprintf(msg, sizeof msg, "found '%s' (%g %s); expected %s (%s)", text, v->q.si,
-             wl_units_si_symbol(k->dim), valid, k->help);
+    char si[64] = "";
+    if (v->q.unit[0] || k->dim == WL_DIM_RATIO)
+      snprintf(si, sizeof si, " (%g%s%s)", v->q.si, *wl_units_si_symbol(k->dim) ? " " : "",
+               wl_units_si_symbol(k->dim));
+    snprintf(msg, sizeof msg, "found '%s'%s; expected %s (%s)", text, si, valid, k->help);
     return n ? fail_at(c, n, path, msg, NULL)
              : wl_error_set(c->err, WL_EINPUT, "schema default for %s: %s", path, msg);
   }
@@ -165,7 +169,7 @@ static enum wl_status set_scalar(struct ctx *c, const struct wl_key *k, const ch
 }
 
 static enum wl_status parse_map(struct ctx *c, const struct wl_key *keys, void *base,
-                                const char *parent, yaml_node_t *map);
+                                const char *parent, yaml_node_t *map, const yaml_node_t *owner);
 
 /* Fill the defaults of every key of `keys` not given; `where` (may be NULL)
  * is the node of the enclosing map, for "missing key" messages. */
@@ -220,7 +224,8 @@ static enum wl_status parse_list_of_maps(struct ctx *c, const struct wl_key *k, 
       snprintf(msg, sizeof msg, "too many entries; at most %d are supported", max_items);
       return fail_at(c, item, ipath, msg, NULL);
     }
-    enum wl_status st = parse_map(c, k->sub, (char *)items + (size_t)n * item_size, ipath, item);
+    enum wl_status st =
+        parse_map(c, k->sub, (char *)items + (size_t)n * item_size, ipath, item, item);
     if (st) return st;
     n++;
   }
@@ -264,8 +269,10 @@ static enum wl_status parse_levels(struct ctx *c, const struct wl_key *k, const 
   return WL_OK;
 }
 
+/* `owner` is the node that names this map (its key), or the map itself at
+ * the top: "missing key" messages point there. */
 static enum wl_status parse_map(struct ctx *c, const struct wl_key *keys, void *base,
-                                const char *parent, yaml_node_t *map) {
+                                const char *parent, yaml_node_t *map, const yaml_node_t *owner) {
   if (map->type != YAML_MAPPING_NODE) {
     char msg[512], names[512];
     list_keys(keys, names, sizeof names);
@@ -311,7 +318,7 @@ static enum wl_status parse_map(struct ctx *c, const struct wl_key *keys, void *
     switch (k->type) {
     case KT_MAP:
       if (k->present_off != (size_t)-1) *(int *)((char *)base + k->present_off) = 1;
-      st = parse_map(c, k->sub, base, path, vn);
+      st = parse_map(c, k->sub, base, path, vn, kn);
       break;
     case KT_BED: {
       struct wl_scenario *s = base;
@@ -346,7 +353,7 @@ static enum wl_status parse_map(struct ctx *c, const struct wl_key *keys, void *
     }
     if (st) return st;
   }
-  return fill_defaults(c, keys, base, parent, map, seen);
+  return fill_defaults(c, keys, base, parent, owner, seen);
 }
 
 /* ---- rules that span several keys --------------------------------------- */
@@ -469,12 +476,26 @@ static enum wl_status check_rules(struct ctx *c, struct wl_scenario *s) {
   if (s->explosion.present) {
     int n_src = s->explosion.charge.given + s->explosion.energy.given +
                 (s->explosion.eta0.given || s->explosion.r0.given);
-    if (n_src != 1)
-      return wl_error_set(
-          c->err, WL_EINPUT,
-          "%s: loads.explosion: %s; give exactly one of charge (e.g. 32 lb), energy (e.g. 177 kJ "
-          "or same-as-solitary) or crater (eta0 and r0)",
-          c->path, n_src == 0 ? "no source given" : "more than one source given");
+    const char *one_source = "give exactly one of charge (e.g. 32 lb), energy (e.g. 177 kJ or "
+                             "same-as-solitary) or a crater (eta0 and r0)";
+    if (n_src == 0)
+      return wl_error_set(c->err, WL_EINPUT, "%s: loads.explosion: no source given; %s", c->path,
+                          one_source);
+    if (n_src > 1) {
+      /* Point at the source written last: the one that conflicts. */
+      const struct wl_scenario_value *cand[] = {&s->explosion.charge, &s->explosion.energy,
+                                                &s->explosion.eta0, &s->explosion.r0};
+      const char *names[] = {"charge", "energy", "eta0", "r0"};
+      int last = 0;
+      for (int i = 1; i < 4; i++)
+        if (cand[i]->given && (!cand[last]->given || cand[i]->line > cand[last]->line ||
+                               (cand[i]->line == cand[last]->line && cand[i]->col > cand[last]->col)))
+          last = i;
+      char key[64];
+      snprintf(key, sizeof key, "loads.explosion.%s", names[last]);
+      snprintf(msg, sizeof msg, "more than one source given; %s", one_source);
+      return at_value(c, cand[last], key, msg);
+    }
     if (s->explosion.eta0.given != s->explosion.r0.given)
       return wl_error_set(c->err, WL_EINPUT,
                           "%s: loads.explosion: a crater needs both eta0 and r0 (only %s given)",
@@ -537,11 +558,14 @@ enum wl_status wl_scenario_parse(const char *path, const char *text, size_t len,
     return wl_error_set(err, WL_ENOMEM, "%s: cannot initialise the YAML parser", path);
   yaml_parser_set_input_string(&parser, (const unsigned char *)s->text, len);
   if (!yaml_parser_load(&parser, &doc)) {
+    char opened[128] = "";
+    if (parser.context)
+      snprintf(opened, sizeof opened, " %s started at %d:%d", parser.context,
+               (int)parser.context_mark.line + 1, (int)parser.context_mark.column + 1);
     enum wl_status st = wl_error_set(
-        err, WL_EINPUT, "%s:%d:%d: malformed YAML: %s%s%s", path,
-        (int)parser.problem_mark.line + 1, (int)parser.problem_mark.column + 1,
-        parser.problem ? parser.problem : "syntax error", parser.context ? " " : "",
-        parser.context ? parser.context : "");
+        err, WL_EINPUT, "%s:%d:%d: malformed YAML: %s%s", path, (int)parser.problem_mark.line + 1,
+        (int)parser.problem_mark.column + 1, parser.problem ? parser.problem : "syntax error",
+        opened);
     yaml_parser_delete(&parser);
     return st;
   }
@@ -552,7 +576,7 @@ enum wl_status wl_scenario_parse(const char *path, const char *text, size_t len,
     st = wl_error_set(err, WL_EINPUT, "%s:1:1: scenario: the file is empty; expected a mapping "
                       "with scenario, water, domain, wall and loads", path);
   else
-    st = parse_map(&c, wl_schema_top, s, "", root);
+    st = parse_map(&c, wl_schema_top, s, "", root, root);
   /* A second document in the same file would be silently ignored: refuse it. */
   if (st == WL_OK) {
     yaml_document_t extra;

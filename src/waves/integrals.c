@@ -207,15 +207,16 @@ static double energy_residual(double eps, void *p) {
   return energy_of_eps(er, eps) - er->E;
 }
 
+/* Hand an error met inside the root function on to the caller. */
+static enum wl_status pass_inner(const struct energy_root *er, struct wl_error *err) {
+  return wl_error_set(err, er->inner.status, "solitary height from energy: %s", er->inner.msg);
+}
+
 static enum wl_status height_from_energy_ws(struct energy_root *er, double *H,
                                             struct wl_error *err) {
   double lo = WL_WAVES_EPS_MIN, hi = WL_WAVES_EPS_MAX;
   double E_lo = energy_of_eps(er, lo), E_hi = energy_of_eps(er, hi);
-  if (er->inner.status != WL_OK) {
-    wl_error_set(err, er->inner.status, "%s", er->inner.msg);
-    wl_error_prefix(err, "solitary height from energy: ");
-    return err ? err->status : er->inner.status;
-  }
+  if (er->inner.status != WL_OK) return pass_inner(er, err);
   if (er->E > E_hi)
     return wl_error_set(err, WL_EINPUT,
                         "solitary height from energy: E = %g J/m on h = %g m; valid: %g <= E "
@@ -254,11 +255,7 @@ static enum wl_status height_from_energy_ws(struct energy_root *er, double *H,
   }
   double eps = gsl_root_fsolver_root(s);
   gsl_root_fsolver_free(s);
-  if (er->inner.status != WL_OK) {
-    wl_error_set(err, er->inner.status, "%s", er->inner.msg);
-    wl_error_prefix(err, "solitary height from energy: ");
-    return er->inner.status;
-  }
+  if (er->inner.status != WL_OK) return pass_inner(er, err);
   if (st != GSL_SUCCESS || iter > ROOT_MAX_ITER)
     return wl_error_set(err, WL_ENUMERIC,
                         "solitary height from energy: Brent's method did not converge for E = "

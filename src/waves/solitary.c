@@ -108,8 +108,8 @@ void wl_waves_solitary_velocity(const struct wl_solitary *sw, double X, double z
     uu = sw->sqrt_gh * (e * u1 + e2 * u2 + e3 * u3);
     double w1 = 1.0;
     double w2 = -0.375 - 2.0 * s2 + Z2 * (-0.5 + 1.5 * s2);
-    double w3 = -49.0 / 640.0 - 0.85 * s2 - 3.6 * s4 + Z2 * (-13.0 / 16.0 - (25.0 / 16.0) * s2 + 7.5 * s4) +
-                Z4 * (-0.075 + 1.125 * s2 - (27.0 / 16.0) * s4);
+    double w3 = -49.0 / 640.0 + 0.85 * s2 + 3.6 * s4 + Z2 * (13.0 / 16.0 + (25.0 / 16.0) * s2 - 7.5 * s4) +
+                Z4 * (0.075 - 1.125 * s2 + (27.0 / 16.0) * s4);
     ww = sw->sqrt_gh * sqrt(3.0 * e) * Z * s2 * q * (e * w1 + e2 * w2 + e3 * w3);
   }
   if (u) *u = uu;

@@ -1,0 +1,106 @@
+/* plan.h: from a validated scenario to what will be simulated.
+ *
+ * The plan turns the scenario's load cases into initial conditions with the
+ * wave and explosion formulae (solitary wave of height H; explosion from a
+ * charge, a crater, an energy, or the energy of the solitary wave), and
+ * chooses what the scene needs: dimension, particle spacing, end time, and
+ * the cost (particles, memory, steps, runtime) that `wallload check` prints
+ * before anything runs.
+ *
+ * Equal energy (loads.explosion.energy: same-as-solitary), two bases:
+ *  - per-width (default): the solitary wave's energy per metre of crest,
+ *    integrated from its profile and velocity field, equals the potential
+ *    energy per metre of the crater simulated in the 2D flume; charge weight,
+ *    R0 and eta0 then follow from Van Dorn (R0 = 9.6 W^0.3) and Whalin /
+ *    Le Mehaute (eta0 R0 = 0.81 C W^0.54) in feet and pounds. Since the 2D
+ *    crater energy scales as eta0^2 R0 ~ W^0.78, W follows in closed form.
+ *    In 3D the solitary energy times the flume width equals the crater's.
+ *  - seed-001: as seed 001 section 3.1.3 and Table 4: the solitary energy is
+ *    Longuet-Higgins' E = 0.958 rho g h^3 (the energy of the HIGHEST solitary
+ *    wave on depth h, whatever H is), in J/m, equated to the 3D crater
+ *    energy pi rho g eta0^2 R0^2 / 6 in J. It reproduces the paper's craters
+ *    (eta0 = 0.23 m, R0 = 1.3 m for Yu Yao's flume), but it compares a
+ *    per-metre energy with a total one and overstates the 0.05 m wave's
+ *    energy about elevenfold; `check` prints both numbers. */
+#ifndef WALLLOAD_PLAN_H
+#define WALLLOAD_PLAN_H
+
+#include <stdio.h>
+
+#include "wallload/error.h"
+#include "wallload/explosion.h"
+#include "wallload/scenario.h"
+#include "wallload/waves.h"
+
+enum wl_explosion_source { WL_SOURCE_CHARGE, WL_SOURCE_ENERGY, WL_SOURCE_SOLITARY, WL_SOURCE_CRATER };
+
+struct wl_plan_solitary {
+  int present;
+  struct wl_solitary wave;             /* theory, h, H, celerity */
+  struct wl_wave_integrals integrated; /* quadrature of the theory's field, per metre */
+  struct wl_wave_integrals first_order;/* first-order closed forms, per metre */
+  double energy_seed001;               /* 0.958 rho g h^3 [J/m], seed 001 eq 22 */
+  int paddle;                          /* 1: Goring paddle; 0: initial condition */
+  struct wl_goring goring;             /* the paddle motion when paddle = 1 */
+  double crest_x0;                     /* initial crest position [m] (initial condition) */
+  double arrival_time;                 /* crest at the wall, estimated [s] */
+  double end_time;                     /* simulated time of this case [s] */
+};
+
+struct wl_plan_explosion {
+  int present;
+  enum wl_explosion_source source;
+  enum wl_energy_basis_choice basis;
+  double matched_energy;            /* energy the crater was sized to [J/m (2D per-width) or J] */
+  struct wl_explosion_chain chain;  /* charge <-> R0, eta0 <-> 3D crater energy */
+  enum wl_crater_shape shape;       /* the shape simulated (lip form resolved) */
+  int conserves_mass;               /* the shape's net volume is zero in these dims */
+  double eta0, r0;                  /* simulated crater depth and radius [m] */
+  double extent;                    /* outer radius of the disturbance [m] */
+  double net_volume;                /* [m^2 per metre (2D) or m^3] */
+  double energy;                    /* potential energy of the simulated crater, closed form
+                                       [J/m in 2D, J in 3D] */
+  double energy_quad;               /* the same by quadrature of seed 000 eq 4 */
+  double x_center;                  /* [m] */
+  double wave_fraction;             /* scenario's share of chemical energy (a ceiling) */
+  double fraction_energy;           /* wave_fraction x chemical energy [J] */
+  int model_thrown;                 /* 1: thrown mass (seed 000) */
+  int thrown_parts;
+  double arrival_time;              /* leading wave at the wall, estimated [s] */
+  double end_time;                  /* simulated time of this case [s] */
+};
+
+enum { WL_PLAN_MAX_NOTES = 12 };
+
+struct wl_plan {
+  int dims;
+  double h, rho, g;                 /* still-water depth [m], density, gravity */
+  struct wl_plan_solitary solitary;
+  struct wl_plan_explosion explosion;
+  double dp;                        /* particle spacing [m] */
+  double h_sml;                     /* smoothing length h = coefh sqrt(dim) dp [m] */
+  double c0;                        /* numerical speed of sound [m/s] */
+  double dt;                        /* estimated time step, CFL condition [s] */
+  double fluid_area;                /* wetted flume section up to the wall [m^2] (2D) */
+  long n_fluid, n_boundary;         /* estimated particle counts */
+  double memory_bytes;              /* estimated solver memory */
+  double particle_steps;            /* estimated for all cases */
+  double cpu_seconds;               /* estimated on the reference CPU rate */
+  int n_notes;
+  char notes[WL_PLAN_MAX_NOTES][320]; /* warnings and assumptions worth reading */
+};
+
+/* Reference throughput used for runtime estimates [particle-steps/s]; the
+ * measured values are in BENCHMARKS.md. */
+#define WL_PLAN_CPU_RATE 3.0e6
+
+/* Build the plan of a validated scenario. Returns WL_OK; WL_EINPUT when a
+ * formula's validity is exceeded (message names the scenario key);
+ * WL_ENUMERIC or WL_ENOMEM from the wave integrals. */
+enum wl_status wl_plan_make(const struct wl_scenario *s, struct wl_plan *plan,
+                            struct wl_error *err);
+
+/* Print the plan: derived initial conditions with their sources, and cost. */
+void wl_plan_write(const struct wl_plan *plan, FILE *out);
+
+#endif

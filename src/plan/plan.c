@@ -1,0 +1,358 @@
+/* plan.c: load cases -> initial conditions, resolution, end time and cost.
+ * See plan.h for the two equal-energy bases. */
+#include "wallload/plan.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <string.h>
+
+#include "wallload/units.h"
+
+/* Fraction of a wave's length that must pass the wall for the load to have
+ * decayed: the load lasts about one effective wavelength at celerity c; twice
+ * that covers run-down and the reflected wave leaving the wall. */
+#define LOAD_PASSES 2.0
+/* Effective solitary wavelength: the distance over which eta > 1 % of H is
+ * 2 arccosh(10)/K (first order), about 6/K. */
+#define SOLITARY_LENGTH_FACTOR 6.0
+/* Time for the explosion's wave train to pass the wall, as a multiple of the
+ * shallow-water travel time of its leading edge. */
+#define EXPLOSION_TRAIN_FACTOR 1.5
+/* Boundary layers of dynamic boundary particles (enough for the support 2h
+ * of a Wendland kernel at h/dp up to 1.5). */
+#define BOUNDARY_LAYERS 3
+/* Bytes per particle of the CPU solver (state, predictor copies, cell keys). */
+#define BYTES_PER_PARTICLE 160.0
+
+static void note(struct wl_plan *p, const char *fmt, ...) {
+  if (p->n_notes >= WL_PLAN_MAX_NOTES) return;
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(p->notes[p->n_notes++], sizeof p->notes[0], fmt, ap);
+  va_end(ap);
+}
+
+static enum wl_crater_shape sim_shape(const struct wl_scenario *s, int dims) {
+  int lip = s->explosion.lip_form.choice;
+  int plane = lip == WL_LIP_PLANE || (lip == WL_LIP_AUTO && dims == 2);
+  switch (s->explosion.shape.choice) {
+  case WL_SHAPE_QUADRATIC: return WL_CRATER_SHAPE_QUADRATIC;
+  case WL_SHAPE_QUARTIC_LIP:
+    return plane ? WL_CRATER_SHAPE_QUARTIC_LIP_PLANE : WL_CRATER_SHAPE_QUARTIC_LIP_AXI;
+  default: return plane ? WL_CRATER_SHAPE_QUADRATIC_LIP_PLANE : WL_CRATER_SHAPE_QUADRATIC_LIP_AXI;
+  }
+}
+
+static enum wl_status plan_solitary(const struct wl_scenario *s, struct wl_plan *p,
+                                    struct wl_error *err) {
+  struct wl_plan_solitary *ps = &p->solitary;
+  ps->present = 1;
+  enum wl_solitary_theory theory = s->solitary.theory.choice == WL_THEORY_BOUSSINESQ
+                                       ? WL_SOLITARY_BOUSSINESQ
+                                       : WL_SOLITARY_GRIMSHAW;
+  enum wl_status st =
+      wl_waves_solitary_init(&ps->wave, theory, p->h, s->solitary.height.q.si, p->g, err);
+  if (st) return st;
+  st = wl_waves_solitary_integrals(&ps->wave, p->rho, &ps->integrated, err);
+  if (st) return st;
+  wl_waves_solitary_closed_form(&ps->wave, p->rho, &ps->first_order);
+  ps->energy_seed001 = wl_waves_lh74_energy(p->rho, p->g, p->h);
+
+  double H = s->solitary.height.q.si, c = wl_waves_solitary_celerity(&ps->wave);
+  double K = sqrt(3.0 * H / (4.0 * p->h * p->h * p->h));
+  double length = SOLITARY_LENGTH_FACTOR / K;
+  double xw = s->wall.x.q.si;
+  ps->paddle = s->solitary.generation.choice == WL_GENERATION_PADDLE;
+  if (ps->paddle) {
+    st = wl_waves_goring_init(&ps->goring, p->h, H, p->g, 0.002, err);
+    if (st) return st;
+    /* The crest leaves the paddle about lambda/c after the start. */
+    ps->arrival_time = ps->goring.lambda / c + xw / c;
+  } else {
+    ps->crest_x0 = s->solitary.at.is_auto ? fmin(0.5 * xw, 0.75 * length) : s->solitary.at.q.si;
+    if (!s->solitary.at.is_auto && ps->crest_x0 < 0.5 * length)
+      note(p, "loads.solitary.at = %.3g m puts the crest within half a wave length (%.3g m) of "
+              "the paddle: the wave's front is cut there",
+           ps->crest_x0, 0.5 * length);
+    ps->arrival_time = (xw - ps->crest_x0) / c;
+  }
+  ps->end_time = ps->arrival_time + LOAD_PASSES * length / c;
+  double ratio = ps->energy_seed001 / ps->integrated.energy;
+  note(p, "seed 001's solitary energy 0.958 rho g h^3 = %.4g J/m is the energy of the highest "
+          "wave on h = %g m; the %g m wave carries %.4g J/m (integrated), %.1f times less",
+       ps->energy_seed001, p->h, H, ps->integrated.energy, ratio);
+  return WL_OK;
+}
+
+/* The 2D crater energy per metre scales as W^0.78 (eta0^2 R0 with eta0 R0 ~
+ * W^0.54 and R0 ~ W^0.3), so the charge of a given energy is closed form. */
+static enum wl_status charge_for_energy_2d(const struct wl_explosion_params *ep,
+                                           enum wl_crater_shape shape, double energy,
+                                           double *charge_kg, struct wl_error *err) {
+  struct wl_explosion_chain unit;
+  const double w_ref = WL_LB_KG; /* one pound: the formulae's own unit */
+  enum wl_status st = wl_explosion_chain_from_charge(ep, w_ref, &unit, err);
+  if (st) return st;
+  double e_ref;
+  st = wl_explosion_energy(shape, 2, ep->rho, ep->g, unit.eta0, unit.r0, &e_ref, err);
+  if (st) return st;
+  double exponent = 2.0 * WL_WHALIN_EXP - WL_VANDORN_EXP;
+  *charge_kg = w_ref * pow(energy / e_ref, 1.0 / exponent);
+  return WL_OK;
+}
+
+static enum wl_status plan_explosion(const struct wl_scenario *s, struct wl_plan *p,
+                                     struct wl_error *err) {
+  struct wl_plan_explosion *px = &p->explosion;
+  px->present = 1;
+  struct wl_explosion_params ep;
+  wl_explosion_params_default(&ep);
+  ep.rho = p->rho;
+  ep.g = p->g;
+  ep.whalin_coef = s->explosion.coefficient.q.si;
+  ep.wave_share = s->explosion.wave_fraction.q.si;
+  px->shape = sim_shape(s, p->dims);
+  px->basis = s->explosion.energy_basis.choice;
+  enum wl_status st = WL_OK;
+  if (s->explosion.charge.given) {
+    px->source = WL_SOURCE_CHARGE;
+    st = wl_explosion_chain_from_charge(&ep, s->explosion.charge.q.si, &px->chain, err);
+  } else if (s->explosion.eta0.given) {
+    px->source = WL_SOURCE_CRATER;
+    st = wl_explosion_chain_from_energy(
+        &ep, WL_PI * p->rho * p->g * pow(s->explosion.eta0.q.si * s->explosion.r0.q.si, 2) / 6.0,
+        &px->chain, err);
+  } else if (!s->explosion.energy.is_auto) {
+    px->source = WL_SOURCE_ENERGY;
+    px->matched_energy = s->explosion.energy.q.si;
+    st = wl_explosion_chain_from_energy(&ep, px->matched_energy, &px->chain, err);
+  } else {
+    px->source = WL_SOURCE_SOLITARY;
+    if (px->basis == WL_BASIS_SEED001) {
+      px->matched_energy = p->solitary.energy_seed001;
+      st = wl_explosion_chain_from_energy(&ep, px->matched_energy, &px->chain, err);
+    } else if (p->dims == 2) {
+      px->matched_energy = p->solitary.integrated.energy;
+      double w;
+      st = charge_for_energy_2d(&ep, px->shape, px->matched_energy, &w, err);
+      if (!st) st = wl_explosion_chain_from_charge(&ep, w, &px->chain, err);
+    } else {
+      px->matched_energy = p->solitary.integrated.energy * s->domain.width.q.si;
+      st = wl_explosion_chain_from_energy(&ep, px->matched_energy, &px->chain, err);
+    }
+  }
+  if (st) {
+    wl_error_prefix(err, "loads.explosion: ");
+    return st;
+  }
+  if (px->source == WL_SOURCE_CRATER) {
+    px->eta0 = s->explosion.eta0.q.si;
+    px->r0 = s->explosion.r0.q.si;
+  } else {
+    px->eta0 = px->chain.eta0;
+    px->r0 = px->chain.r0;
+  }
+  px->conserves_mass = wl_explosion_conserves_mass(px->shape, p->dims);
+  if ((st = wl_explosion_extent(px->shape, px->r0, &px->extent, err)) ||
+      (st = wl_explosion_net_volume(px->shape, p->dims, px->eta0, px->r0, &px->net_volume, err)) ||
+      (st = wl_explosion_energy(px->shape, p->dims, p->rho, p->g, px->eta0, px->r0, &px->energy,
+                                err)) ||
+      (st = wl_explosion_energy_quad(px->shape, p->dims, p->rho, p->g, px->eta0, px->r0,
+                                     &px->energy_quad, err))) {
+    wl_error_prefix(err, "loads.explosion: ");
+    return st;
+  }
+  px->x_center = s->explosion.at.q.si;
+  px->wave_fraction = ep.wave_share;
+  px->fraction_energy = ep.wave_share * px->chain.chemical_energy;
+  px->model_thrown = s->explosion.model.choice == WL_MODEL_THROWN_MASS;
+  px->thrown_parts = (int)s->explosion.thrown_parts.q.si;
+
+  double xw = s->wall.x.q.si;
+  if (px->x_center - px->extent < 0 || px->x_center + px->extent > xw)
+    return wl_error_set(err, WL_EINPUT,
+                        "%s: loads.explosion.at: the crater (centre %g m, outer radius %.3g m) "
+                        "does not fit between the paddle and the wall (%g m); expected a centre "
+                        "between %.3g m and %.3g m",
+                        s->path, px->x_center, px->extent, xw, px->extent, xw - px->extent);
+  if (px->eta0 >= p->h)
+    note(p, "the crater is deeper (eta0 = %.3g m) than the water (%g m): the bed is exposed at "
+            "the start; the empirical crater formulae do not cover this",
+         px->eta0, p->h);
+  double c_lin = sqrt(p->g * p->h);
+  px->arrival_time = (xw - px->x_center - px->extent) / c_lin;
+  /* The explosion's wave train is dispersive: shorter waves travel slower
+   * than sqrt(g h). Run until the slowest part that matters (the train
+   * behind the leading wave) has reached the wall. */
+  px->end_time = EXPLOSION_TRAIN_FACTOR * (xw - px->x_center + 2.0 * px->extent) / c_lin;
+  if (!px->conserves_mass)
+    note(p, "crater shape %s does not conserve mass in %dD (net %+.4g %s): the water level "
+            "after the waves settle differs from the scenario's depth",
+         wl_explosion_shape_name(px->shape), p->dims, px->net_volume,
+         p->dims == 2 ? "m^2 per metre" : "m^3");
+  if (px->chain.charge_kg < 1.0)
+    note(p, "charge %.3g g TNT: the Van Dorn and Whalin fits come from charges of pounds to "
+            "tons; sub-kilogram charges are an extrapolation",
+         px->chain.charge_kg * 1e3);
+  note(p, "the explosion's wave-energy share: the crater holds %.2g %% of the chemical energy; "
+          "wave_fraction %.0f %% (seed 000 eq 9) is a ceiling, %.4g J",
+       100.0 * px->chain.wave_fraction, 100.0 * px->wave_fraction, px->fraction_energy);
+  return WL_OK;
+}
+
+static void plan_resolution(const struct wl_scenario *s, struct wl_plan *p) {
+  double xw = s->wall.x.q.si;
+  /* Wetted section up to the wall, by the trapezoid rule on the bed segments
+   * (exact for a piecewise-linear bed when sampled at its corners). */
+  double area = 0.0, x_prev = 0.0, d_prev = p->h;
+  for (int i = 0; i <= s->n_bed; i++) {
+    double x = i < s->n_bed ? s->bed[i].from.q.si : xw;
+    double d = p->h - wl_scenario_bed_z(s, x);
+    area += 0.5 * (d + d_prev) * (x - x_prev);
+    x_prev = x;
+    d_prev = d;
+  }
+  p->fluid_area = area;
+  double smallest = INFINITY;
+  if (p->solitary.present) smallest = fmin(smallest, p->solitary.wave.H);
+  if (p->explosion.present) smallest = fmin(smallest, p->explosion.eta0);
+  double ppH = s->resolution.particles_per_height.q.si;
+  p->dp = s->resolution.dp.is_auto ? smallest / ppH : s->resolution.dp.q.si;
+  if (!s->resolution.dp.is_auto && smallest / p->dp < 4)
+    note(p, "dp = %g m gives only %.1f particles over the smallest wave height (%.3g m)", p->dp,
+         smallest / p->dp, smallest);
+  double coefh = s->numerics.coefh.q.si;
+  p->h_sml = coefh * sqrt((double)p->dims) * p->dp;
+  double h_max = p->h;
+  if (p->solitary.present) h_max += p->solitary.wave.H;
+  if (p->explosion.present) h_max = fmax(h_max, p->h + p->explosion.eta0);
+  p->c0 = s->numerics.coefsound.q.si * sqrt(p->g * h_max);
+  p->dt = s->numerics.cfl.q.si * p->h_sml / p->c0;
+  double width = p->dims == 3 ? s->domain.width.q.si : p->dp;
+  p->n_fluid = (long)(area * width / (p->dp * p->dp * (p->dims == 3 ? p->dp : p->dp)));
+  if (p->dims == 2) p->n_fluid = (long)(area / (p->dp * p->dp));
+  double wall_top = wl_scenario_bed_z(s, xw) + s->wall.height.q.si;
+  double perimeter = xw + p->h + wall_top + 0.5; /* bed, paddle, wall */
+  p->n_boundary = (long)(BOUNDARY_LAYERS * perimeter / p->dp *
+                         (p->dims == 3 ? s->domain.width.q.si / p->dp : 1.0));
+  long n = p->n_fluid + p->n_boundary;
+  p->memory_bytes = BYTES_PER_PARTICLE * (double)n;
+  double t_all = 0.0;
+  if (p->solitary.present) {
+    double t = s->run.end_time.is_auto ? p->solitary.end_time : s->run.end_time.q.si;
+    p->solitary.end_time = t;
+    t_all += t;
+  }
+  if (p->explosion.present) {
+    double t = s->run.end_time.is_auto ? p->explosion.end_time : s->run.end_time.q.si;
+    p->explosion.end_time = t;
+    t_all += t;
+  }
+  p->particle_steps = (double)n * t_all / p->dt;
+  p->cpu_seconds = p->particle_steps / WL_PLAN_CPU_RATE;
+}
+
+enum wl_status wl_plan_make(const struct wl_scenario *s, struct wl_plan *p,
+                            struct wl_error *err) {
+  memset(p, 0, sizeof *p);
+  p->dims = (int)s->domain.dimensions.q.si;
+  p->h = s->water.depth.q.si;
+  p->rho = s->water.density.q.si;
+  p->g = s->water.gravity.q.si;
+  enum wl_status st;
+  if (s->solitary.present && (st = plan_solitary(s, p, err))) {
+    wl_error_prefix(err, "%s: loads.solitary: ", s->path);
+    return st;
+  }
+  if (s->explosion.present && (st = plan_explosion(s, p, err))) return st;
+  plan_resolution(s, p);
+  return WL_OK;
+}
+
+void wl_plan_write(const struct wl_plan *p, FILE *out) {
+  fprintf(out, "\nDerived initial conditions\n");
+  if (p->solitary.present) {
+    const struct wl_plan_solitary *ps = &p->solitary;
+    const struct wl_wave_integrals *wi = &ps->integrated, *fo = &ps->first_order;
+    fprintf(out, "  solitary wave (%s)\n",
+            ps->wave.theory == WL_SOLITARY_GRIMSHAW ? "Grimshaw third order, seed 003 eqs 21-24"
+                                                     : "first order (Boussinesq)");
+    fprintf(out, "    %-34s %12.5g m      (H/h = %.4g)\n", "height H", ps->wave.H,
+            ps->wave.H / p->h);
+    fprintf(out, "    %-34s %12.5g m/s    (sqrt(g h) = %.4g m/s)\n", "celerity c",
+            wl_waves_solitary_celerity(&ps->wave), sqrt(p->g * p->h));
+    fprintf(out, "    %-34s %12.5g kg/m   (first order %.5g)\n", "mass (integrated)", wi->mass,
+            fo->mass);
+    fprintf(out, "    %-34s %12.5g kg/s   (first order %.5g)\n", "momentum (integrated)",
+            wi->momentum, fo->momentum);
+    fprintf(out, "    %-34s %12.5g J/m    (first order %.5g)\n", "kinetic energy", wi->kinetic,
+            fo->kinetic);
+    fprintf(out, "    %-34s %12.5g J/m    (first order %.5g)\n", "potential energy",
+            wi->potential, fo->potential);
+    fprintf(out, "    %-34s %12.5g J/m    (first order %.5g)\n", "energy (integrated)",
+            wi->energy, fo->energy);
+    fprintf(out, "    %-34s %12.5g J/m    (highest wave on h; seed 001 eq 22)\n",
+            "energy 0.958 rho g h^3", ps->energy_seed001);
+    if (ps->paddle)
+      fprintf(out, "    %-34s %12.5g m      (Goring 1978; moves for %.3g s)\n", "paddle stroke",
+              ps->goring.stroke, ps->goring.duration);
+    else
+      fprintf(out, "    %-34s %12.5g m\n", "initial crest position", ps->crest_x0);
+    fprintf(out, "    %-34s %12.5g s\n", "arrival at the wall", ps->arrival_time);
+    fprintf(out, "    %-34s %12.5g s\n", "end time", ps->end_time);
+  }
+  if (p->explosion.present) {
+    const struct wl_plan_explosion *px = &p->explosion;
+    const struct wl_explosion_chain *ch = &px->chain;
+    static const char *const src[] = {"charge weight", "crater energy", "energy of the solitary wave",
+                                      "crater size"};
+    fprintf(out, "  explosion (from the %s", src[px->source]);
+    if (px->source == WL_SOURCE_SOLITARY)
+      fprintf(out, ", %s basis: %.5g %s", px->basis == WL_BASIS_SEED001 ? "seed-001" : "per-width",
+              px->matched_energy,
+              px->basis == WL_BASIS_PER_WIDTH && p->dims == 2 ? "J/m" : "J");
+    fprintf(out, ")\n");
+    fprintf(out, "    %-34s %12.5g kg     (%.5g lb TNT)\n", "charge W", ch->charge_kg,
+            ch->charge_kg / WL_LB_KG);
+    fprintf(out, "    %-34s %12.5g m      (%.5g ft; Van Dorn R0 = 9.6 W^0.3)\n", "crater radius R0",
+            ch->r0, ch->r0 / WL_FT_M);
+    fprintf(out, "    %-34s %12.5g m^2    (Whalin/Le Mehaute C = %g)\n", "Hmax r", ch->hr,
+            ch->whalin_coef);
+    fprintf(out, "    %-34s %12.5g m      (eta0 R0 = 0.81 Hmax r)\n", "crater depth eta0", ch->eta0);
+    fprintf(out, "    %-34s %12.5g J      (pi rho g eta0^2 R0^2/6, seed 001 eq 3)\n",
+            "crater energy, 3D", ch->crater_energy);
+    fprintf(out, "    %-34s %12.5g J      (4.184 MJ/kg TNT)\n", "chemical energy",
+            ch->chemical_energy);
+    fprintf(out, "    %-34s %12.3g %%      (ceiling %.0f %%: %.4g J, seed 000 eq 9)\n",
+            "crater / chemical energy", 100 * ch->wave_fraction, 100 * px->wave_fraction,
+            px->fraction_energy);
+    fprintf(out, "    %-34s %12.5g m      (seed 000 eq 8 with the %.0f %% share)\n",
+            "cavity radius", ch->cavity_radius, 100 * px->wave_fraction);
+    fprintf(out, "    simulated: %s, eta0 = %.5g m, R0 = %.5g m, centre %.5g m, extent %.4g m\n",
+            wl_explosion_shape_name(px->shape), px->eta0, px->r0, px->x_center, px->extent);
+    fprintf(out, "    %-34s %12.5g %s (quadrature of seed 000 eq 4: %.8g)\n",
+            "crater energy as simulated", px->energy, p->dims == 2 ? "J/m " : "J   ",
+            px->energy_quad);
+    fprintf(out, "    %-34s %12s        (net %+.4g %s)\n", "conserves mass",
+            px->conserves_mass ? "yes" : "NO", px->net_volume, p->dims == 2 ? "m^2/m" : "m^3");
+    if (px->model_thrown)
+      fprintf(out, "    model: thrown mass in %d parts (seed 000)\n", px->thrown_parts);
+    fprintf(out, "    %-34s %12.5g s\n", "leading wave at the wall", px->arrival_time);
+    fprintf(out, "    %-34s %12.5g s\n", "end time", px->end_time);
+  }
+  fprintf(out, "\nResolution and cost\n");
+  fprintf(out, "  %-36s %dD\n", "dimension", p->dims);
+  fprintf(out, "  %-36s %12.5g m\n", "particle spacing dp", p->dp);
+  fprintf(out, "  %-36s %12.5g m      (h/dp = %.3g)\n", "smoothing length h", p->h_sml,
+          p->h_sml / p->dp);
+  fprintf(out, "  %-36s %12.5g m/s\n", "speed of sound c0", p->c0);
+  fprintf(out, "  %-36s %12.5g s\n", "time step (CFL estimate)", p->dt);
+  fprintf(out, "  %-36s %12ld        (+ %ld boundary)\n", "fluid particles", p->n_fluid,
+          p->n_boundary);
+  fprintf(out, "  %-36s %12.4g MiB\n", "memory (estimate)", p->memory_bytes / 1048576.0);
+  fprintf(out, "  %-36s %12.4g\n", "particle-steps, all cases", p->particle_steps);
+  fprintf(out, "  %-36s %12.4g s      (at %.2g particle-steps/s)\n", "CPU runtime (estimate)",
+          p->cpu_seconds, WL_PLAN_CPU_RATE);
+  if (p->n_notes) fprintf(out, "\nNotes\n");
+  for (int i = 0; i < p->n_notes; i++) fprintf(out, "  - %s\n", p->notes[i]);
+}
