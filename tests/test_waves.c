@@ -31,12 +31,18 @@ enum { N_TABLE = sizeof TABLE / sizeof TABLE[0] };
 /* Tolerances, each with its source. */
 /* Table entries are rounded to 6 decimals (F exact to 8): half a unit. */
 static const double TABLE_HALF_ULP6 = 5e-7, TABLE_HALF_ULP8 = 5e-9;
-/* Third-order theory: relative error of integrals O(eps^3). Allowed
- * coefficient 1.5 (observed: mass 0.27, momentum 0.4, energy 0.9). */
-static const double GRIMSHAW_EPS3_COEF = 1.5;
+/* Third-order theory: the profile is off by O(eps^4) h over a width
+ * O(eps^-1/2) h, so integrals (~eps^1/2 for M, ~eps^3/2 for E) carry a
+ * relative error O(eps^3). Allowed coefficient 1 (observed at eps 0.05-0.3:
+ * mass 0.24-0.27, momentum 0.39-0.44, potential 0.2, energy 0.45-0.55). */
+static const double GRIMSHAW_EPS3_COEF = 1.0;
 /* Exact identities satisfied by the third-order field to O(eps^3) relative:
- * allowed coefficient 1 (observed ~0.2). */
-static const double IDENTITY_EPS3_COEF = 1.0;
+ * allowed coefficient 1 for the depth-integrated flux and for continuity
+ * (observed 0.2 to 0.45), 4 for the kinematic condition, a pointwise check at
+ * the surface where the truncated (z/h)^4 terms are largest (observed 2.2 to
+ * 2.8). With seed 003's printed eps^3 term of w, continuity and kinematic
+ * errors are 2.2 to 2.5 eps^2 and fail these bounds. */
+static const double IDENTITY_EPS3_COEF = 1.0, KINEMATIC_EPS3_COEF = 4.0;
 /* Quadrature accuracy of the module (relative 1e-11 requested). */
 static const double QUAD_REL = 1e-6;
 
@@ -230,11 +236,14 @@ static void test_grimshaw_identities(void) {
     CHECK_ABS(f[i], 0.0, IDENTITY_EPS3_COEF * e3,
               "steady-wave mass flux int_0^{h+eta} u dz = C eta (z from bed), O(eps^3)");
     CHECK_ABS(c[i], 0.0, IDENTITY_EPS3_COEF * e3, "continuity du/dx + dw/dz = 0, O(eps^3)");
-    CHECK_ABS(k[i], 0.0, IDENTITY_EPS3_COEF * e3,
+    CHECK_ABS(k[i], 0.0, KINEMATIC_EPS3_COEF * e3,
               "kinematic surface condition w = (u - C) eta_x, O(eps^3)");
   }
-  /* order of convergence between eps = 0.05 and 0.1: 3 expected (> 2.5) */
+  /* observed order between eps = 0.05 and 0.1: 3 expected (> 2.5); 2 would
+   * mean a wrong eps^3 coefficient */
   CHECK_TRUE(log(f[2] / f[1]) / log(2.0) > 2.5, "mass-flux error converges at order >= 2.5");
+  CHECK_TRUE(log(c[2] / c[1]) / log(2.0) > 2.5, "continuity error converges at order >= 2.5");
+  CHECK_TRUE(log(k[2] / k[1]) / log(2.0) > 2.5, "kinematic error converges at order >= 2.5");
 }
 
 /* ---- integrals ------------------------------------------------------------ */
@@ -283,13 +292,17 @@ static void test_grimshaw_integrals_vs_exact(void) {
     wl_waves_solitary_init(&sw, WL_SOLITARY_GRIMSHAW, h, eps * h, G, &err);
     enum wl_status st = wl_waves_solitary_integrals(&sw, RHO, &wi, &err);
     CHECK_TRUE(st == WL_OK, "Grimshaw integrals: status ok");
+    /* eps^3 truncation plus the table's rounding to 6 decimals */
     double tol = GRIMSHAW_EPS3_COEF * pow(eps, 3);
-    printf("  eps %.2f: tolerance %.3g relative (1.5 eps^3)\n", eps, tol);
-    CHECK_REL(wi.mass / (RHO * h * h), r->M, tol, "REFERENCES 3.4 M/h^2 (exact wave)");
-    CHECK_REL(wi.momentum / (RHO * h * h * sqrt(G * h)), r->I, tol,
+    printf("  eps %.2f: tolerance %.3g relative (eps^3, plus 5e-7 absolute rounding)\n", eps,
+           tol);
+    CHECK_REL(wi.mass / (RHO * h * h), r->M, tol + TABLE_HALF_ULP6 / r->M,
+              "REFERENCES 3.4 M/h^2 (exact wave)");
+    CHECK_REL(wi.momentum / (RHO * h * h * sqrt(G * h)), r->I, tol + TABLE_HALF_ULP6 / r->I,
               "REFERENCES 3.4 I/(rho h^2 sqrt(gh)) (exact wave)");
-    CHECK_REL(wi.energy / (RHO * G * pow(h, 3)), r->E, tol, "REFERENCES 3.4 E/(rho g h^3) (exact wave)");
-    CHECK_REL(wi.potential / (RHO * G * pow(h, 3)), r->PE, tol,
+    CHECK_REL(wi.energy / (RHO * G * pow(h, 3)), r->E, tol + TABLE_HALF_ULP6 / r->E,
+              "REFERENCES 3.4 E/(rho g h^3) (exact wave)");
+    CHECK_REL(wi.potential / (RHO * G * pow(h, 3)), r->PE, tol + TABLE_HALF_ULP8 / r->PE,
               "REFERENCES 3.4 PE/(rho g h^3) (exact wave)");
   }
 }
@@ -363,6 +376,23 @@ static void test_lh74_and_seawall(void) {
 /* ---- inversion -------------------------------------------------------------- */
 static void test_energy_inversion(void) {
   struct wl_error err;
+  /* uniqueness of the root: Grimshaw E(eps) increasing on a grid to 0.78 */
+  double E_prev = 0;
+  int increasing = 1;
+  wl_error_clear(&err);
+  for (int i = 1; i <= 39; i++) {
+    struct wl_solitary sw;
+    struct wl_wave_integrals wi;
+    wl_waves_solitary_init(&sw, WL_SOLITARY_GRIMSHAW, 1.0, 0.02 * i, G, &err);
+    wl_waves_solitary_integrals(&sw, RHO, &wi, &err);
+    if (!(wi.energy > E_prev)) increasing = 0;
+    E_prev = wi.energy;
+  }
+  CHECK_TRUE(increasing && err.status == WL_OK,
+             "Grimshaw E(eps) increasing for eps = 0.02..0.78 (unique inversion)");
+  printf("  Grimshaw E(0.78) = %.6f rho g h^3 (REFERENCES 3.4 exact E(0.75) = 0.995633)\n",
+         E_prev / (RHO * G));
+
   const double h = 0.36, epss[] = {0.01, 0.05, 0.05 / 0.36, 0.3, 0.7};
   for (int i = 0; i < 5; i++) {
     wl_error_clear(&err);

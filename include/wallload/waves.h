@@ -26,8 +26,26 @@
  *    phi = f - z^2/2 f'' + ..., with f' = sqrt(gh) eps s^2. This is also
  *    REFERENCES 1.1's convention and the project's (bed at z = 0, gravity
  *    along -z). tests/test_waves.c checks the choice: the Grimshaw field
- *    carries the exact mass flux int_0^{h+eta} u dz = C eta to O(eps^4) and
- *    satisfies continuity, which it would not with z from the still-water level.
+ *    carries the exact steady-wave mass flux int_0^{h+eta} u dz = C eta to a
+ *    relative O(eps^3), which it would not with z from the still-water level.
+ *    CORRECTION to seed 003 eq 24: the eps^3 term of w is printed as
+ *      eps^3 {-49/640 - 17/20 s^2 - 18/5 s^4 + Z^2(-13/16 - 25/16 s^2 + 15/2 s^4)
+ *             + Z^4(-3/40 + 9/8 s^2 - 27/16 s^4)}            (Z = z/h)
+ *    but continuity du/dx + dw/dz = 0 applied to eq 24's own u (w = -int_0^z
+ *    u_X dz, by hand) gives
+ *      eps^3 {-49/640 + 17/20 s^2 + 18/5 s^4 + Z^2(13/16 + 25/16 s^2 - 15/2 s^4)
+ *             + Z^4(3/40 - 9/8 s^2 + 27/16 s^4)},
+ *    i.e. the print is -eps^3{49/640 - 17/20 s^2 ...} with the minus sign
+ *    left on the first term only (the eps and eps^2 terms check out). With
+ *    the printed signs, continuity and the kinematic surface condition
+ *    w = (u - C) eta_X fail at a relative 2.2-2.5 eps^2; with the corrected
+ *    ones both hold to O(eps^3) (tests). We implement the corrected term. The
+ *    correction changes Grimshaw's kinetic energy: E(0.3) = 0.2782 rho g h^3
+ *    (0.2757 with the printed signs; exact 0.2824).
+ *    Accuracy of the integrals against the exact wave (REFERENCES 3.4): M,
+ *    I, V, E within 0.2-0.6 eps^3 relative for eps <= 0.3 (E: -0.05 % at
+ *    0.1, -1.5 % at 0.3). Above eps ~ 0.5 Grimshaw degrades: E(0.5) = 0.574
+ *    vs 0.616 exact, E(0.78) = 0.953 vs 1.007 exact; I(0.78) = 2.20 vs 2.62.
  *
  *  - Longuet-Higgins (1974) as quoted in seed 001 (eqs 17-22): the two-
  *    exponential profile eta/h = A e^{-mu|x/h|} + B e^{-nu|x/h|} with
@@ -41,14 +59,15 @@
  *    writes them without rho and calls them the energy "of the solitary wave")
  *    are the energies of the highest wave and do NOT depend on H.
  *    Check of eq 21 (wl_waves_lh74_potential, test_waves.c): by quadrature,
- *    V = rho g/2 int eta^2 dx = 0.43131 rho g h^3 (closed form
- *    A^2/(2mu) + 2AB/(mu+nu) + B^2/(2nu) = 0.431310), so eq 21 is reproduced
- *    to its 3 digits. Its mass is 2(A/mu + B/nu) = 1.9629 h^2.
+ *    V = rho g/2 int eta^2 dx = 0.431312 rho g h^3 (closed form
+ *    A^2/(2mu) + 2AB/(mu+nu) + B^2/(2nu), same digits), so eq 21 is reproduced
+ *    to its 3 digits. Its mass is 2(A/mu + B/nu) = 1.9630 h^2.
  *    Seed 001 then uses E = 0.958 rho g h^3 as "the energy of the solitary
  *    wave" for equal-energy explosion cases. For its seawall case (h = 0.36 m,
  *    H = 0.05 m, H/h = 0.139) the integrated Grimshaw energy is
- *    E = 0.08402 rho g h^3 (exact Euler wave, wl_waves_exact_solitary:
- *    0.08405), i.e. 0.958 overestimates the wave's energy by a factor of 11.4
+ *    E = 0.08474 rho g h^3 = 38.78 J/m (exact Euler wave,
+ *    wl_waves_exact_solitary: 0.08485 rho g h^3 = 38.83 J/m), while eq 22
+ *    gives 0.958 rho g h^3 = 438.5 J/m: an overestimate by a factor of 11.3
  *    (tests/test_waves.c prints and checks this ratio). Use
  *    wl_waves_solitary_integrals, not eq 22, for a wave of given H.
  *
@@ -61,9 +80,17 @@
  *      momentum   I = rho int int u dz dx      = c M (exact for u = c eta/(h+eta))
  *      kinetic    T = rho/2 int int (u^2+w^2)  = V (1 + O(eps))  (equipartition)
  *      energy     E = T + V                    = (8/(3 sqrt 3)) rho g h^3 eps^{3/2} (1 + O(eps))
- *    M and V are exact for the sech^2 profile; T and E are leading order.
+ *    M and V are exact for the sech^2 profile; T and E are leading order. For
+ *    the first-order field T = V (1 + 2 eps/5 + O(eps^2)) (int sech^6 =
+ *    16/(15K); eps/5 from u, eps/5 from w), so E = E0 (1 + eps/5 + O(eps^2)).
+ *
+ *  - Which theory for what: Grimshaw for eps <= 0.5 (within 0.5 % of the exact
+ *    energy up to 0.2, 1.5 % at 0.3, 7 % at 0.5); the exact solver
+ *    (wl_waves_exact_solitary, ~0.1-1 s) wherever accuracy matters above that.
  *
  *  - Inversion energy -> height on the integrated Grimshaw energy (GSL Brent).
+ *    Grimshaw's E(eps) increases monotonically up to eps = 0.78 (0.953 rho g
+ *    h^3 there), so the root is unique.
  *
  *  - Goring (1978) piston wavemaker [REFERENCES 3.5]: X_p(t) from
  *      X_p = (H/(K h)) [tanh(K (c t - X_p - lambda)) + tanh(K lambda)],

@@ -220,10 +220,10 @@ static enum wl_status height_from_energy_ws(struct energy_root *er, double *H,
   if (er->E > E_hi)
     return wl_error_set(err, WL_EINPUT,
                         "solitary height from energy: E = %g J/m on h = %g m; valid: %g <= E "
-                        "<= %g J/m (%.4g rho g h^3, the Grimshaw wave of H/h = %g; no solitary "
-                        "wave of H/h <= %g carries more)",
+                        "<= %g J/m (the maximum, %.4g rho g h^3, is the energy of the Grimshaw wave "
+                        "of H/h = %g, the highest accepted)",
                         er->E, er->h, E_lo, E_hi, E_hi / (er->rho * er->g * pow(er->h, 3)),
-                        WL_WAVES_EPS_MAX, WL_WAVES_EPS_MAX);
+                        WL_WAVES_EPS_MAX);
   if (er->E < E_lo)
     return wl_error_set(err, WL_EINPUT,
                         "solitary height from energy: E = %g J/m on h = %g m; valid: %g <= E "

@@ -96,7 +96,13 @@ void wl_waves_solitary_velocity(const struct wl_solitary *sw, double X, double z
     uu = sw->c * eta / d;                 /* exact mass flux c eta, uniform in depth */
     ww = -sw->c * h * z * eta_X / (d * d); /* continuity, w = 0 at the bed */
   } else {
-    /* seed 003 eq 24, z up from the bed */
+    /* seed 003 eq 24, z up from the bed, with the sign of the eps^3 term of w
+     * corrected (see waves.h): the printed brace {-49/640 - 17/20 s^2 ...} is
+     * -{49/640 - 17/20 s^2 ...} with the minus sign kept on the first term
+     * only. Below, every coefficient of that brace except -49/640 has the
+     * opposite sign to the print; this is what continuity du/dX + dw/dz = 0
+     * gives from eq 24's u (w = -int_0^z du/dX dz', carried out by hand with
+     * d(s^2n)/dxi = -2n s^2n q, s^2 q^2 = s^2 - s^4). */
     double e = sw->eps, e2 = e * e, e3 = e2 * e;
     double Z = z / sw->h, Z2 = Z * Z, Z4 = Z2 * Z2;
     double s4 = s2 * s2, q2 = q * q;

@@ -1,0 +1,104 @@
+/* sph/defs.h: what every shared physics header needs: the host+device
+ * qualifier, the real type, and a few branch-free scalar helpers.
+ *
+ * Headers in include/wallload/sph/ are valid C11 and CUDA C++ and include no
+ * library header: the CPU backend (src/backend_cpu, OpenMP) and the CUDA
+ * backend compile the very same functions, so both compute the same thing and
+ * a change is made in one place (STYLE.md "Physics written once").
+ *
+ * Precision. Positions are double: near x = 36 m the float spacing is about
+ * 4 um, too coarse for v*dt at fine dp (a 1 m/s particle with dt = 1e-5 s
+ * moves 10 um per step, which float would round away). Every other field is
+ * wl_real (float by default): differences of positions are taken in double
+ * and then narrowed to wl_real, where they are small and exact enough, as
+ * DualSPHysics does. Build with -DWL_REAL_DOUBLE=1 to make wl_real double
+ * (slower, for convergence checks). */
+#ifndef WALLLOAD_SPH_DEFS_H
+#define WALLLOAD_SPH_DEFS_H
+
+#if defined(__CUDACC__)
+#define WL_HD __host__ __device__
+#else
+#define WL_HD
+#endif
+
+#ifndef WL_REAL_DOUBLE
+#define WL_REAL_DOUBLE 0
+#endif
+
+#if WL_REAL_DOUBLE
+typedef double wl_real;
+#define WL_R(x) (x)
+#else
+typedef float wl_real;
+#define WL_R(x) (x##f)
+#endif
+
+/* Largest dimension and number of moving bodies (paddles) a run may have. */
+#define WL_SPH_DIM_MAX 3
+#define WL_SPH_BODIES_MAX 8
+
+/* OpenMP SIMD hint for the neighbour loops. It permits the compiler to
+ * reorder the listed sums (vector lanes), which changes rounding but not the
+ * result's independence of the thread count: the order is fixed by the data
+ * layout and the binary, never by the schedule. Ignored by nvcc. */
+#if defined(_OPENMP) && !defined(__CUDA_ARCH__)
+#define WL_PRAGMA_(x) _Pragma(#x)
+#define WL_SIMD_REDUCTION(...) WL_PRAGMA_(omp simd reduction(__VA_ARGS__))
+#else
+#define WL_SIMD_REDUCTION(...)
+#endif
+
+/* Square root. On the host it is a Newton-Raphson iteration, not sqrtf:
+ * under the project's strict IEEE flags (errno-setting math, trapping math)
+ * GCC will not vectorise a loop that calls sqrtf, and the neighbour loop is
+ * where the run time goes. Seed: the bit-level estimate of 1/sqrt(x) with
+ * Lomont's constant (relative error < 1.8e-3), then two Newton steps
+ * y <- y (3 - x y^2)/2, each squaring the relative error (1.8e-3 -> 4.6e-6
+ * -> 3e-11), so only float rounding is left: within a few ulp of the
+ * correctly rounded sqrt (test_sph_kernel checks 4 ulp over [1e-12, 1e4]).
+ * x = 0 gives 0; x must be >= 0 and finite. nvcc uses sqrtf (one
+ * instruction there), so CPU and GPU agree to a few ulp in r. */
+WL_HD static inline wl_real wl_sph_sqrt(wl_real x) {
+#if defined(__CUDACC__)
+  return sqrt(x);
+#elif WL_REAL_DOUBLE
+  return __builtin_sqrt(x);
+#else
+  union {
+    float f;
+    unsigned int u;
+  } b;
+  b.f = x;
+  b.u = 0x5f375a86u - (b.u >> 1);
+  float y = b.f;
+  const float hx = 0.5f * x;
+  y = y * (1.5f - hx * y * y);
+  y = y * (1.5f - hx * y * y);
+  return x * y;
+#endif
+}
+
+/* |x| without a branch. */
+WL_HD static inline wl_real wl_sph_abs(wl_real x) {
+#if defined(__CUDACC__)
+  return x < 0 ? -x : x;
+#elif WL_REAL_DOUBLE
+  return __builtin_fabs(x);
+#else
+  return __builtin_fabsf(x);
+#endif
+}
+
+/* max(x, 0) and min(x, 0), exact and without a comparison (a comparison in
+ * the neighbour loop stops GCC vectorising it under trapping math):
+ * x + |x| is 2x or +0 exactly, and halving is exact. */
+WL_HD static inline wl_real wl_sph_pos(wl_real x) { return WL_R(0.5) * (x + wl_sph_abs(x)); }
+WL_HD static inline wl_real wl_sph_neg(wl_real x) { return WL_R(0.5) * (x - wl_sph_abs(x)); }
+
+WL_HD static inline double wl_sph_maxd(double a, double b) { return a > b ? a : b; }
+WL_HD static inline double wl_sph_mind(double a, double b) { return a < b ? a : b; }
+WL_HD static inline int wl_sph_maxi(int a, int b) { return a > b ? a : b; }
+WL_HD static inline int wl_sph_mini(int a, int b) { return a < b ? a : b; }
+
+#endif

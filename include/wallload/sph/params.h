@@ -1,0 +1,93 @@
+/* sph/params.h: the SPH run parameters (what a user or the plan chooses) and
+ * the derived constants every physics function reads (computed once on the
+ * host by wl_sph_const_make, copied as a value to the device).
+ *
+ * Conventions follow DualSPHysics (Dominguez et al. 2022, Comp. Part. Mech.
+ * 9:867) unless a comment says otherwise:
+ *  - h = coefh sqrt(dim) dp, so coefh = 1 gives h = 1.414 dp in 2D and
+ *    h = 1.732 dp in 3D; kernel support 2h.
+ *  - c0 = coefsound sqrt(g h_max), h_max the largest water depth; Tait
+ *    B = c0^2 rho0 / gamma with gamma = 7 (Monaghan 1994; seed 000 eqs 15-17).
+ *  - particle mass rho0 dp^dim for fluid and boundary particles alike. */
+#ifndef WALLLOAD_SPH_PARAMS_H
+#define WALLLOAD_SPH_PARAMS_H
+
+#include "wallload/sph/defs.h"
+
+/* Viscosity model of the momentum equation. */
+enum wl_sph_visc {
+  WL_SPH_VISC_ARTIFICIAL = 0, /* Monaghan (1992) artificial viscosity, alpha */
+  WL_SPH_VISC_LAMINAR = 1,    /* Lo & Shao (2002) laminar viscosity, nu */
+};
+
+/* Density diffusion (delta-SPH) of the continuity equation. */
+enum wl_sph_ddt {
+  WL_SPH_DDT_NONE = 0,
+  /* Molteni & Colagrossi (2009) with the Fourtakas et al. (2019) hydrostatic
+   * correction, between fluid pairs, for fluid particles that have no
+   * boundary neighbour (DualSPHysics DensityDT=2). */
+  WL_SPH_DDT_FOURTAKAS = 1,
+  /* The same term between every pair of fluid particles, including those
+   * next to a wall (DualSPHysics DensityDT=3, "DDT2Full"). Default: without
+   * it the fluid next to a wall keeps its pressure noise, and wall pressure
+   * is what wallload is for. */
+  WL_SPH_DDT_FOURTAKAS_FULL = 2,
+};
+
+/* Run parameters; wl_sph_params_default fills DualSPHysics' defaults. */
+struct wl_sph_params {
+  int dim;                  /* 2 (x, z) or 3 (x, y, z); gravity along the last axis */
+  double dp;                /* initial particle spacing [m] */
+  double coefh;             /* h = coefh sqrt(dim) dp [-]; default 1 */
+  double coefsound;         /* c0 = coefsound sqrt(g h_max) [-]; default 10 */
+  double h_max;             /* largest water depth, for c0 [m] */
+  double rho0;              /* reference density [kg/m^3]; default 1000 */
+  double g;                 /* gravity magnitude [m/s^2]; default 9.81 */
+  enum wl_sph_visc visc;    /* default artificial */
+  double alpha;             /* artificial viscosity coefficient [-]; default 0.01 */
+  double visc_bound_factor; /* alpha (or nu) multiplier for fluid-boundary pairs [-]; 1 */
+  double nu;                /* kinematic viscosity for WL_SPH_VISC_LAMINAR [m^2/s]; 1e-6 */
+  enum wl_sph_ddt ddt;      /* default WL_SPH_DDT_FOURTAKAS_FULL */
+  double delta;             /* density diffusion coefficient [-]; default 0.1 */
+  double cfl;               /* CFL number [-]; default 0.2 */
+  /* Guard (instability detection after every step; see sph/guard.h). */
+  double dt_collapse;       /* unstable when dt < dt_collapse * initial dt [-]; 1e-3 */
+  double rho_min_factor;    /* fluid density below rho_min_factor rho0 is unstable; 0.7 */
+  double rho_max_factor;    /* ... above rho_max_factor rho0 (DualSPHysics RhopOut); 1.3 */
+  double penetration;       /* fluid depth behind a wall face that counts as crossing
+                               it, in units of dp [-]; default 0.5 */
+};
+
+/* Derived constants (host computes, both backends read). Float members are
+ * what the hot loops use; the double ones serve host-side bookkeeping. */
+struct wl_sph_const {
+  int dim;
+  enum wl_sph_visc visc;
+  enum wl_sph_ddt ddt;
+  wl_real h;          /* smoothing length [m] */
+  wl_real inv_h;      /* 1/h [1/m] */
+  wl_real support2;   /* (2h)^2 [m^2] */
+  wl_real eta2;       /* 0.01 h^2 [m^2], keeps 1/(r^2 + eta2) finite */
+  wl_real kw;         /* Wendland C2 normalisation aD: 7/(4 pi h^2) or 21/(16 pi h^3) */
+  wl_real kf;         /* gradient factor -5 aD / h^2: grad_i W_ij = kf (1-q/2)^3 r_ij */
+  wl_real rho0;       /* [kg/m^3] */
+  wl_real inv_rho0;   /* [m^3/kg] */
+  wl_real B;          /* Tait coefficient c0^2 rho0 / 7 [Pa] */
+  wl_real c0;         /* [m/s] */
+  wl_real mass;       /* rho0 dp^dim, fluid and boundary [kg or kg/m in 2D] */
+  wl_real av_ff;      /* alpha c0 h: artificial viscosity, fluid-fluid [m^2/s] */
+  wl_real av_fb;      /* visc_bound_factor alpha c0 h, fluid-boundary [m^2/s] */
+  wl_real lam_ff;     /* 4 nu (Lo & Shao), fluid-fluid [m^2/s] */
+  wl_real lam_fb;     /* 4 nu visc_bound_factor, fluid-boundary [m^2/s] */
+  wl_real ddt_k;      /* delta * 2h * c0 (DualSPHysics DDTkh * Cs0) [m^2/s] */
+  wl_real ddt_g;      /* rho0 g / B [1/m] (DualSPHysics DDTgz) */
+  wl_real gravity[WL_SPH_DIM_MAX]; /* [m/s^2]; last used component -g */
+  double dp;          /* [m] */
+  double h_d;         /* h in double [m] */
+  double c0_d;        /* c0 in double [m/s] */
+  double cfl;         /* [-] */
+  double dt_collapse, rho_min, rho_max; /* guard thresholds ([-], kg/m^3, kg/m^3) */
+  double penetration; /* guard: crossing depth [m] */
+};
+
+#endif

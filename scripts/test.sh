@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# test.sh: build and run the whole test suite twice: a Release build, then a
+# build with AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/).
+# GPU tests report "skipped" where no GPU is present.
+set -eu
+cd "$(dirname "$0")/.."
+jobs=$(nproc)
+echo "== Release build and tests"
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j "$jobs"
+ctest --test-dir build --output-on-failure -j "$jobs"
+echo "== AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
+cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DWL_SANITIZE=ON >/dev/null
+cmake --build build-asan -j "$jobs"
+# The sanitized run is slower: tests that scale their work read WL_TEST_QUICK.
+ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+  WL_TEST_QUICK=1 ctest --test-dir build-asan --output-on-failure -j "$jobs"

@@ -1,0 +1,86 @@
+/* test_plan.c: the plan's equal-energy conversions and derived values, each
+ * checked by a round trip through an independent path or against the seeds'
+ * and REFERENCES' numbers. */
+#include <gsl/gsl_errno.h>
+#include <string.h>
+
+#include "testutil.h"
+#include "wallload/plan.h"
+
+static int make(const char *text, struct wl_scenario *s, struct wl_plan *p) {
+  struct wl_error err;
+  wl_error_clear(&err);
+  wl_scenario_init(s);
+  if (wl_scenario_parse("test.yaml", text, strlen(text), s, &err) != WL_OK ||
+      wl_plan_make(s, p, &err) != WL_OK) {
+    printf("FAIL: %s\n", err.msg);
+    wl_test_failures++;
+    return 0;
+  }
+  return 1;
+}
+
+int main(void) {
+  gsl_set_error_handler_off();
+  struct wl_scenario s;
+  struct wl_plan p;
+  const char *per_width = "scenario: t\nwater: {depth: 0.36 m}\ndomain: {length: 36 m}\n"
+                          "wall: {x: 19.2 m, height: 0.5 m}\n"
+                          "loads:\n  solitary: {height: 0.05 m}\n"
+                          "  explosion: {energy: same-as-solitary, at: 8 m}\n";
+  if (make(per_width, &s, &p)) {
+    /* The simulated 2D crater's energy (quadrature of seed 000 eq 4) equals
+     * the solitary wave's integrated energy: the closed-form W of the plan
+     * inverted the Van Dorn / Whalin chain correctly. */
+    CHECK_REL(p.explosion.energy_quad, p.solitary.integrated.energy, 1e-9,
+              "per-width equal energy: crater quadrature = solitary integral");
+    CHECK_TRUE(p.explosion.conserves_mass && p.explosion.shape == WL_CRATER_SHAPE_QUADRATIC_LIP_PLANE,
+               "lip_form auto in 2D is the mass-conserving plane lip (REFERENCES 5.2)");
+    /* REFERENCES 3.4 exact table: E/(rho g h^3) = 0.051041 at eps 0.10 and
+     * 0.095634 at 0.15; eps = 0.1389 lies between. */
+    double e_nd = p.solitary.integrated.energy / (1000 * 9.81 * 0.36 * 0.36 * 0.36);
+    CHECK_TRUE(e_nd > 0.051041 && e_nd < 0.095634, "solitary energy within the exact-table bracket");
+    CHECK_REL(p.solitary.energy_seed001, 438.47, 1e-3, "seed 001 Yu Yao: E = 0.44 kJ (0.958 rho g h^3)");
+    CHECK_REL(p.dp, 0.05 / 10.0, 1e-12, "dp auto = smallest wave height / particles_per_height");
+    /* The fluid section up to the wall of a flat flume is h x_wall. */
+    CHECK_REL(p.fluid_area, 0.36 * 19.2, 1e-12, "flat flume wetted area");
+  }
+  wl_scenario_clear(&s);
+
+  const char *seed = "scenario: t\nwater: {depth: 2.66 m}\ndomain: {length: 83 m}\n"
+                     "wall: {x: 70 m, height: 4.57 m}\n"
+                     "loads:\n  solitary: {height: 1.064 m}\n"
+                     "  explosion: {energy: same-as-solitary, energy_basis: seed-001, at: 30 m}\n";
+  if (make(seed, &s, &p)) {
+    /* seed 001 Table 4, Robertson: E = 177 kJ, eta0 R0 = 5.9 m^2, Hmax r = 7.25 m^2 */
+    CHECK_REL(p.explosion.matched_energy, 177e3, 0.005, "seed 001 Table 4: 177 kJ");
+    CHECK_REL(p.explosion.chain.eta0_r0, 5.9, 0.01, "seed 001 Table 4: eta0 R0 = 5.9 m^2");
+    CHECK_REL(p.explosion.chain.hr, 7.25, 0.005, "seed 001 Table 4: Hmax r = 7.25 m^2");
+  }
+  wl_scenario_clear(&s);
+
+  /* Sloped bed: area by hand. Slope 1/10 from 10 m to 13 m (rise 0.3 m),
+   * then flat to the wall at 15 m, depth 0.5 m:
+   * 0.5*10 + (0.5 + 0.2)/2*3 + 0.2*2 = 5 + 1.05 + 0.4 = 6.45 m^2. */
+  const char *slope = "scenario: t\nwater: {depth: 0.5 m}\ndomain: {length: 20 m}\n"
+                      "bathymetry: [{from: 10 m, slope: 1/10}, {from: 13 m, slope: 0}]\n"
+                      "wall: {x: 15 m, height: 0.5 m}\nloads: {solitary: {height: 0.05 m}}\n";
+  if (make(slope, &s, &p)) {
+    CHECK_REL(p.fluid_area, 6.45, 1e-12, "trapezoid area of a sloped flume by hand");
+    CHECK_REL(wl_scenario_bed_z(&s, 11.5), 0.15, 1e-12, "bed height on the slope by hand");
+    CHECK_REL(wl_scenario_bed_z(&s, 14.0), 0.3, 1e-12, "bed height on the platform by hand");
+  }
+  wl_scenario_clear(&s);
+
+  /* Charge in pounds: seed 001, 32 lb -> R0 8.28 m, eta0 2.07 m. */
+  const char *charge = "scenario: t\nwater: {depth: 16.5 ft}\ndomain: {length: 45 m}\n"
+                       "wall: {x: 40 m, height: 10 m}\n"
+                       "loads: {explosion: {charge: 32 lb, at: 15 m}}\n";
+  if (make(charge, &s, &p)) {
+    CHECK_ABS(p.explosion.r0, 8.28, 0.005, "seed 001: 32 lb gives R0 = 8.28 m");
+    CHECK_ABS(p.explosion.eta0, 2.07, 0.005, "seed 001: 32 lb gives eta0 = 2.07 m (coef 35)");
+    CHECK_REL(p.h, 16.5 * 0.3048, 1e-15, "16.5 ft depth converted exactly");
+  }
+  wl_scenario_clear(&s);
+  return TEST_RESULT();
+}
