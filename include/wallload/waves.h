@@ -123,7 +123,8 @@
  * "well suited for solitary wave of eps <= 0.5"; REFERENCES 3.4: its F is
  * within 0.2 % of the exact wave there). Accepted above, but less accurate. */
 #define WL_WAVES_EPS_GRIMSHAW_ACCURATE 0.5
-/* Smallest H/h accepted (below it, integrals underflow relative to rounding). */
+/* Smallest H/h accepted: a sanity floor (far below any SPH resolution) that
+ * also bounds the energy inversion's bracket. */
 #define WL_WAVES_EPS_MIN 1e-6
 
 /* Longuet-Higgins (1974) highest-wave profile fit and energies, seed 001
@@ -180,6 +181,9 @@ struct wl_solitary_exact {
   double potential; /* V/(rho g h^3) [-] */
   double beta;      /* far-field decay: eta ~ e^{-beta |x|/h}, tan(beta)/beta = F^2 [-] */
   double residual;  /* max |Babenko residual| at the end [-] */
+  double tail;      /* max |eta_hat(k)|/eta_hat(0) over the top quarter of |k|: a
+                       resolution indicator; ~1e-15 when n_modes resolves the
+                       wave, larger means more modes are needed [-] */
   int n_iter;       /* Petviashvili iterations used */
 };
 
@@ -297,7 +301,9 @@ double wl_waves_goring_velocity(const struct wl_goring *gp, double t);
 
 /* Exact irrotational solitary wave of amplitude eps = H/h by Petviashvili
  * iteration of the Babenko equation (Clamond & Dutykh 2013) on n_modes
- * Fourier modes (a power of two, 256..1048576; 16384 gives ~14 digits).
+ * Fourier modes (a power of two, 256..1048576). 8192 reproduces REFERENCES
+ * 3.4 to all its digits for eps <= 0.3 (~0.1 s); near eps = 0.79 use 65536
+ * (256 modes there give F wrong in the 2nd digit); out->tail tells.
  * Allocates and frees its own work arrays.
  * Returns WL_OK; WL_EINPUT if eps is outside [0.001, 0.79] or n_modes is not
  * such a power of two; WL_ENOMEM; WL_ENUMERIC if the iteration does not

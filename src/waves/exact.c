@@ -178,6 +178,9 @@ enum wl_status wl_waves_exact_solitary(double eps, int n_modes, struct wl_solita
   to_complex(w.a, w.eta, n);
   gsl_fft_complex_radix2_forward(w.a, 1, n);
   apply_C(&w);
+  double tail = 0;
+  for (int i = 3 * n / 8; i <= 5 * n / 8; i++) tail = fmax(tail, hypot(w.a[2 * i], w.a[2 * i + 1]));
+  tail /= fabs(w.a[0]);
   double M = 0, P = 0, KC = 0;
   for (int i = 0; i < n; i++) {
     M += w.eta[i] * (1.0 + w.Ceta[i]);
@@ -196,6 +199,7 @@ enum wl_status wl_waves_exact_solitary(double eps, int n_modes, struct wl_solita
   out->potential = P;
   out->beta = decay_rate(F2);
   out->residual = residual;
+  out->tail = tail;
   out->n_iter = iter;
   work_free(&w);
   return WL_OK;
