@@ -205,9 +205,14 @@ static enum wl_status fill_defaults(struct ctx *c, const struct wl_key *keys, vo
   return WL_OK;
 }
 
-static enum wl_status parse_list_of_maps(struct ctx *c, const struct wl_key *k, const char *path,
-                                         yaml_node_t *seq, void *items, size_t item_size,
-                                         int max_items, int *n_items) {
+/* One list entry: parse `item` (entry `index`, path `ipath`) into `out`. */
+typedef enum wl_status (*item_parser)(struct ctx *c, const struct wl_key *k, const char *ipath,
+                                      yaml_node_t *item, int index, void *out);
+
+/* Walk a YAML list of at most max_items entries with `parse_item`. */
+static enum wl_status parse_list(struct ctx *c, const struct wl_key *k, const char *path,
+                                 yaml_node_t *seq, int max_items, item_parser parse_item,
+                                 void *out, int *n_items) {
   if (seq->type != YAML_SEQUENCE_NODE) {
     char msg[512];
     snprintf(msg, sizeof msg, "found %s; expected a list (%s)", node_kind(seq), k->help);
@@ -215,7 +220,7 @@ static enum wl_status parse_list_of_maps(struct ctx *c, const struct wl_key *k, 
   }
   int n = 0;
   for (yaml_node_item_t *it = seq->data.sequence.items.start; it < seq->data.sequence.items.top;
-       it++) {
+       it++, n++) {
     yaml_node_t *item = yaml_document_get_node(c->doc, *it);
     char ipath[256];
     snprintf(ipath, sizeof ipath, "%s[%d]", path, n);
@@ -224,49 +229,39 @@ static enum wl_status parse_list_of_maps(struct ctx *c, const struct wl_key *k, 
       snprintf(msg, sizeof msg, "too many entries; at most %d are supported", max_items);
       return fail_at(c, item, ipath, msg, NULL);
     }
-    enum wl_status st =
-        parse_map(c, k->sub, (char *)items + (size_t)n * item_size, ipath, item, item);
+    enum wl_status st = parse_item(c, k, ipath, item, n, out);
     if (st) return st;
-    n++;
   }
   *n_items = n;
   return WL_OK;
 }
 
-static enum wl_status parse_levels(struct ctx *c, const struct wl_key *k, const char *path,
-                                   yaml_node_t *seq, struct wl_scenario *s) {
-  if (seq->type != YAML_SEQUENCE_NODE) {
-    char msg[512];
-    snprintf(msg, sizeof msg, "found %s; expected %s", node_kind(seq), k->help);
-    return fail_at(c, seq, path, msg, NULL);
+/* A list of mappings (bathymetry, gauges) into an array of structs. */
+struct map_array {
+  void *items;
+  size_t item_size;
+};
+
+static enum wl_status parse_map_item(struct ctx *c, const struct wl_key *k, const char *ipath,
+                                     yaml_node_t *item, int index, void *out) {
+  struct map_array *a = out;
+  return parse_map(c, k->sub, (char *)a->items + (size_t)index * a->item_size, ipath, item, item);
+}
+
+/* The convergence ladder: factors of dp. */
+static enum wl_status parse_level_item(struct ctx *c, const struct wl_key *k, const char *ipath,
+                                       yaml_node_t *item, int index, void *out) {
+  struct wl_scenario *s = out;
+  if (item->type != YAML_SCALAR_NODE) {
+    char msg[256];
+    snprintf(msg, sizeof msg, "found %s; expected a number (a factor of dp)", node_kind(item));
+    return fail_at(c, item, ipath, msg, NULL);
   }
-  int n = 0;
-  for (yaml_node_item_t *it = seq->data.sequence.items.start; it < seq->data.sequence.items.top;
-       it++) {
-    yaml_node_t *item = yaml_document_get_node(c->doc, *it);
-    char ipath[256];
-    snprintf(ipath, sizeof ipath, "%s[%d]", path, n);
-    if (n >= WL_SCENARIO_MAX_LEVELS) {
-      char msg[256];
-      snprintf(msg, sizeof msg, "too many levels; at most %d", WL_SCENARIO_MAX_LEVELS);
-      return fail_at(c, item, ipath, msg, NULL);
-    }
-    if (item->type != YAML_SCALAR_NODE) {
-      char msg[256];
-      snprintf(msg, sizeof msg, "found %s; expected a number (a factor of dp)", node_kind(item));
-      return fail_at(c, item, ipath, msg, NULL);
-    }
-    struct wl_key level = *k;
-    level.type = KT_QTY;
-    level.dim = WL_DIM_RATIO;
-    enum wl_status st = set_scalar(c, &level, ipath, item, (const char *)item->data.scalar.value,
-                                   &s->resolution.levels[n]);
-    if (st) return st;
-    n++;
-  }
-  s->resolution.n_levels = n;
-  s->resolution.levels_given = 1;
-  return WL_OK;
+  struct wl_key level = *k;
+  level.type = KT_QTY;
+  level.dim = WL_DIM_RATIO;
+  return set_scalar(c, &level, ipath, item, (const char *)item->data.scalar.value,
+                    &s->resolution.levels[index]);
 }
 
 /* `owner` is the node that names this map (its key), or the map itself at
@@ -322,20 +317,24 @@ static enum wl_status parse_map(struct ctx *c, const struct wl_key *keys, void *
       break;
     case KT_BED: {
       struct wl_scenario *s = base;
-      st = parse_list_of_maps(c, k, path, vn, s->bed, sizeof s->bed[0], WL_SCENARIO_MAX_BED,
-                              &s->n_bed);
+      struct map_array a = {s->bed, sizeof s->bed[0]};
+      st = parse_list(c, k, path, vn, WL_SCENARIO_MAX_BED, parse_map_item, &a, &s->n_bed);
       s->bed_given = 1;
       break;
     }
     case KT_GAUGES: {
       struct wl_scenario *s = base;
-      st = parse_list_of_maps(c, k, path, vn, s->gauges, sizeof s->gauges[0],
-                              WL_SCENARIO_MAX_GAUGES, &s->n_gauges);
+      struct map_array a = {s->gauges, sizeof s->gauges[0]};
+      st = parse_list(c, k, path, vn, WL_SCENARIO_MAX_GAUGES, parse_map_item, &a, &s->n_gauges);
       break;
     }
-    case KT_LEVELS:
-      st = parse_levels(c, k, path, vn, base);
+    case KT_LEVELS: {
+      struct wl_scenario *s = base;
+      st = parse_list(c, k, path, vn, WL_SCENARIO_MAX_LEVELS, parse_level_item, s,
+                      &s->resolution.n_levels);
+      s->resolution.levels_given = 1;
       break;
+    }
     default:
       if (vn->type != YAML_SCALAR_NODE) {
         char msg[512];
