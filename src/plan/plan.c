@@ -77,6 +77,21 @@ static enum wl_status plan_solitary(const struct wl_scenario *s, struct wl_plan 
     ps->arrival_time = (xw - ps->crest_x0) / c;
   }
   ps->end_time = ps->arrival_time + LOAD_PASSES * length / c;
+  if (ps->wave.eps > WL_WAVES_EPS_GRIMSHAW_ACCURATE) {
+    /* Beyond its accurate range, say by how much the third-order energy
+     * misses the exact solitary wave's (Clamond & Dutykh method). */
+    struct wl_solitary_exact ex;
+    struct wl_wave_integrals exi;
+    struct wl_error xerr;
+    wl_error_clear(&xerr);
+    if (wl_waves_exact_solitary(ps->wave.eps, 16384, &ex, &xerr) == WL_OK) {
+      wl_waves_exact_integrals(&ex, p->rho, p->g, p->h, &exi);
+      note(p, "H/h = %.3g is beyond Grimshaw's accurate range (0.5): its energy %.4g J/m is "
+              "%.1f %% off the exact solitary wave's %.4g J/m",
+           ps->wave.eps, ps->integrated.energy,
+           100.0 * (ps->integrated.energy - exi.energy) / exi.energy, exi.energy);
+    }
+  }
   double ratio = ps->energy_seed001 / ps->integrated.energy;
   note(p, "seed 001's solitary energy 0.958 rho g h^3 = %.4g J/m is the energy of the highest "
           "wave on h = %g m; the %g m wave carries %.4g J/m (integrated), %.1f times less",
