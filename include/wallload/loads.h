@@ -1,0 +1,69 @@
+/* loads.h: wall pressure -> force, moment, impulse, filtered series, peaks.
+ *
+ * Definitions used everywhere in wallload (README, report, summary.json):
+ *  - force F(t) [N/m]: horizontal force per metre of wall, the integral of
+ *    the face pressure over the wall's height (2D), or the wall's total /
+ *    its width (3D).
+ *  - moment M(t) [N m/m]: overturning moment about the wall's toe,
+ *    integral of p(z) (z - z_toe) dz.
+ *  - impulse I(t) [N s/m]: time integral of F from the start of the record
+ *    (trapezoid rule on the stored samples); the "dynamic impulse" is the
+ *    integral of F - F_static, F_static the hydrostatic force at rest.
+ *  - filtered series: zero-phase low-pass (second-order Butterworth run
+ *    forward and backward, so the response is fourth order with no time
+ *    shift) at cut-off f_c. WCSPH's artificial compressibility makes the
+ *    water column ring at its acoustic frequency c0/(4 d) (d the water depth
+ *    at the wall); f_c = c0/(8 d) keeps everything slower than half of it.
+ *    The cut-off is stored with every filtered series. Peaks are taken from
+ *    the filtered series and say so.
+ *  - rise time: from the last time before the peak the net force
+ *    F - F_static was below 10 % of its peak, to the peak.
+ *  - duration: the time the net force stays above 10 % of its peak, from
+ *    its first upward crossing to its last downward crossing.
+ *  - run-up: the highest water level at the wall face above still water. */
+#ifndef WALLLOAD_LOADS_H
+#define WALLLOAD_LOADS_H
+
+#include <stddef.h>
+
+#include "wallload/error.h"
+
+/* Threshold of the rise-time and duration definitions, share of the peak. */
+#define WL_LOADS_THRESHOLD 0.10
+
+/* Integrate a pressure profile p[k] [Pa] sampled at heights z[k] [m]
+ * (increasing, n >= 2) over the wall from z_toe to z_top: trapezoid rule
+ * between probes, with the pressure held at the end probes' values out to
+ * z_toe and z_top (probes sit half a spacing inside the face's ends).
+ * Gives the force per metre [N/m] and the moment about (z_toe) [N m/m]. */
+void wl_loads_profile(const double *z, const double *p, size_t n, double z_toe, double z_top,
+                      double *force, double *moment);
+
+/* Cumulative trapezoid integral out[k] = int_{t0}^{t_k} f dt (out[0] = 0).
+ * out may alias nothing. */
+void wl_loads_cumulative(const double *t, const double *f, size_t n, double *out);
+
+/* Zero-phase low-pass filter of x sampled at uniform interval dt [s] with
+ * cut-off fc [Hz] (second-order Butterworth forward and backward, edges
+ * padded by reflection). Returns WL_OK; WL_EINPUT if fc is not in
+ * (0, 0.5/dt) (the message says the valid range) or n < 4. */
+enum wl_status wl_loads_lowpass(const double *x, size_t n, double dt, double fc, double *out,
+                                struct wl_error *err);
+
+/* The cut-off of the documented filter, c0/(8 d) [Hz], capped at 0.4 of the
+ * sampling Nyquist frequency so the filter remains well defined. */
+double wl_loads_cutoff(double c0, double depth, double dt_sample);
+
+struct wl_peak {
+  double value;  /* peak value (of the series given) */
+  double time;   /* when [s] */
+  size_t index;
+  double rise_time; /* [s]; NaN if the series never drops below the threshold before the peak */
+  double duration;  /* [s] above the threshold */
+};
+
+/* Peak of (x - base) over the record and its rise time and duration with
+ * WL_LOADS_THRESHOLD; value is the peak of x itself. n >= 1. */
+void wl_loads_peak(const double *t, const double *x, size_t n, double base, struct wl_peak *pk);
+
+#endif
