@@ -41,6 +41,11 @@ enum wl_status wl_store_write_vector_f(struct wl_store *store, const char *path,
                                        size_t n, const char *unit, const char *description,
                                        struct wl_error *err);
 
+/* Write a 2D row-major float dataset [rows x cols] (particle vectors). */
+enum wl_status wl_store_write_matrix_f(struct wl_store *store, const char *path, const float *data,
+                                       size_t rows, size_t cols, const char *unit,
+                                       const char *description, struct wl_error *err);
+
 /* Write a 1D int dataset (particle kinds, ids). */
 enum wl_status wl_store_write_vector_i(struct wl_store *store, const char *path, const int *data,
                                        size_t n, const char *description, struct wl_error *err);

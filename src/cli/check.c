@@ -1,7 +1,13 @@
 /* check.c: `wallload check` and `wallload assess`. */
+#define _POSIX_C_SOURCE 200809L /* sigaction, isatty */
+#include <math.h>
+#include <signal.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
+#include "wallload/assess.h"
 #include "cli.h"
 #include "wallload/plan.h"
 #include "wallload/scenario.h"
@@ -31,18 +37,106 @@ enum wl_status wl_cli_check(int argc, char **argv, struct wl_error *err) {
   return WL_OK;
 }
 
+/* Ctrl-C sets this; the running case stops at its next output time and
+ * everything computed so far is written. (The one piece of process state:
+ * a signal handler can reach nothing else.) */
+static volatile sig_atomic_t interrupted = 0;
+
+static void on_sigint(int sig) {
+  (void)sig;
+  interrupted = 1;
+}
+
+struct progress_state {
+  int tty;
+  double last_print;
+};
+
+static void fmt_eta(double s, char *buf, size_t size) {
+  if (!isfinite(s) || s < 0)
+    snprintf(buf, size, "--");
+  else if (s < 60)
+    snprintf(buf, size, "%.0fs", s);
+  else if (s < 3600)
+    snprintf(buf, size, "%dm%02ds", (int)(s / 60), (int)fmod(s, 60));
+  else
+    snprintf(buf, size, "%dh%02dm", (int)(s / 3600), (int)fmod(s / 60, 60));
+}
+
+static void show_progress(void *user, const char *name, const struct wl_sph_progress *pr) {
+  struct progress_state *ps = user;
+  double frac = pr->t_end > 0 ? pr->t / pr->t_end : 0;
+  double eta_s = frac > 0 ? pr->wall_s * (1 - frac) / frac : NAN;
+  char eta[32];
+  fmt_eta(eta_s, eta, sizeof eta);
+  if (ps->tty) {
+    fprintf(stderr, "\r%-10s t = %7.3f / %.3f s  %6.1f %%  %8.0f steps/s  %.2e particle-steps/s  ETA %-8s",
+            name, pr->t, pr->t_end, 100 * frac, pr->steps_per_s, pr->particle_steps_per_s, eta);
+    if (pr->t >= pr->t_end) fputc('\n', stderr);
+  } else if (pr->wall_s - ps->last_print >= 30.0 || pr->t >= pr->t_end) {
+    /* not a terminal (a log file): a line every 30 s */
+    fprintf(stderr, "%s: t = %.3f / %.3f s (%.0f %%), %.0f steps/s, ETA %s\n", name, pr->t,
+            pr->t_end, 100 * frac, pr->steps_per_s, eta);
+    ps->last_print = pr->wall_s;
+  }
+}
+
+static void print_case(const struct wl_case_result *c) {
+  const struct wl_case_loads *l = &c->loads;
+  printf("\n%s case: %s", c->name,
+         c->status == WL_OK ? "complete" : c->status == WL_EUNSTABLE ? "UNSTABLE" : "stopped");
+  printf(" (t = %.3f of %.3f s, %ld steps, %d particles, %.1f s)\n", c->t_reached, c->t_end,
+         c->steps, c->n_particles, c->runtime_s);
+  if (c->status != WL_OK) printf("  stopped: %s\n", c->message);
+  if (!c->rec.n) return;
+  printf("  %-34s %12.5g kN/m  at t = %.3f s (probes, filtered %.3g Hz)\n", "peak force",
+         l->force_peak.value / 1e3, l->force_peak.time, l->cutoff);
+  printf("  %-34s %12.5g kN/m  (boundary particles, filtered)\n", "peak force",
+         l->force_bound_peak.value / 1e3);
+  printf("  %-34s %12.5g kN/m  (rho g d^2/2)\n", "static force", c->static_force / 1e3);
+  printf("  %-34s %12.5g kN s/m\n", "impulse (force - static)", l->impulse_total / 1e3);
+  printf("  %-34s %12.5g kN m/m\n", "peak overturning moment", l->moment_peak.value / 1e3);
+  printf("  %-34s %12.5g m\n", "max run-up at the wall", l->runup);
+  printf("  %-34s %12.5g s\n", "rise time", l->force_peak.rise_time);
+  printf("  %-34s %12.5g s\n", "load duration", l->force_peak.duration);
+}
+
 enum wl_status wl_cli_assess(int argc, char **argv, struct wl_error *err) {
   const char *path = NULL;
+  struct wl_assess_opts opts = {0};
+  int quiet = 0;
   for (int i = 1; i < argc; i++) {
     const char *a = argv[i];
-    if (!strcmp(a, "-o") || !strcmp(a, "--backend") || !strcmp(a, "--threads")) {
+    if (!strcmp(a, "-o") || !strcmp(a, "--backend") || !strcmp(a, "--threads") ||
+        !strcmp(a, "--end-time")) {
       if (i + 1 >= argc) return wl_error_set(err, WL_EUSAGE, "assess: %s needs a value", a);
-      i++;
-    } else if (!strcmp(a, "--quiet") || !strcmp(a, "--force")) {
+      const char *v = argv[++i];
+      if (!strcmp(a, "-o")) {
+        opts.out_dir = v;
+      } else if (!strcmp(a, "--threads")) {
+        char *end;
+        long n = strtol(v, &end, 10);
+        if (*end || n < 1 || n > 4096)
+          return wl_error_set(err, WL_EUSAGE, "assess: --threads: found '%s'; expected 1 to 4096", v);
+        opts.threads = (int)n;
+      } else if (!strcmp(a, "--end-time")) {
+        char *end;
+        double t = strtod(v, &end);
+        if (*end || !(t > 0))
+          return wl_error_set(err, WL_EUSAGE, "assess: --end-time: found '%s'; expected seconds > 0", v);
+        opts.end_time = t;
+      } else if (strcmp(v, "cpu") && strcmp(v, "auto")) {
+        return wl_error_set(err, WL_EUSAGE,
+                            "assess: --backend: found '%s'; valid: cpu, auto (cuda is not built yet)", v);
+      }
+    } else if (!strcmp(a, "--quiet")) {
+      quiet = 1;
+    } else if (!strcmp(a, "--force")) {
+      opts.force = 1;
     } else if (a[0] == '-') {
       return wl_error_set(err, WL_EUSAGE,
                           "assess: unknown option '%s'; valid: -o DIR, --backend cpu|cuda|auto, "
-                          "--threads N, --quiet, --force",
+                          "--threads N, --quiet, --force, --end-time SECONDS",
                           a);
     } else if (!path) {
       path = a;
@@ -55,13 +149,24 @@ enum wl_status wl_cli_assess(int argc, char **argv, struct wl_error *err) {
   struct wl_plan plan;
   enum wl_status st = load_and_plan(path, &s, &plan, err);
   if (st) return st;
-  fprintf(stderr,
-          "wallload: %s: scenario valid; initial conditions planned (%ld particles at dp = %g m)\n",
-          path, plan.n_fluid + plan.n_boundary, plan.dp);
+  struct progress_state ps = {isatty(2), 0.0};
+  if (!quiet) {
+    opts.progress = show_progress;
+    opts.user = &ps;
+    fprintf(stderr, "wallload: %s: dp = %g m, about %ld particles, est. %.0f s on the CPU\n",
+            path, plan.dp, plan.n_fluid + plan.n_boundary, plan.cpu_seconds);
+  }
+  opts.interrupted = &interrupted;
+  struct sigaction sa, old;
+  memset(&sa, 0, sizeof sa);
+  sa.sa_handler = on_sigint;
+  sigaction(SIGINT, &sa, &old);
+  struct wl_assess_result res;
+  st = wl_assess_run(&s, &plan, &opts, &res, err);
+  sigaction(SIGINT, &old, NULL);
+  for (int i = 0; i < res.n_cases; i++) print_case(&res.cases[i]);
+  if (res.n_cases) printf("\nresults in %s/ (results.h5, summary.json, CSV, particle snapshots)\n", res.out_dir);
+  wl_assess_result_clear(&res);
   wl_scenario_clear(&s);
-  return wl_error_set(err, WL_EUNSUPPORTED,
-                      "assess: stages done: scenario, plan. The next stage, the SPH solver, is "
-                      "not built yet, so no loads were computed ('wallload check %s' shows the "
-                      "plan)",
-                      path);
+  return st;
 }

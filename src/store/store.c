@@ -119,6 +119,13 @@ enum wl_status wl_store_write_vector_f(struct wl_store *s, const char *path, con
   return write_dataset(s, path, H5T_NATIVE_FLOAT, data, 1, dims, unit, description, err);
 }
 
+enum wl_status wl_store_write_matrix_f(struct wl_store *s, const char *path, const float *data,
+                                       size_t rows, size_t cols, const char *unit,
+                                       const char *description, struct wl_error *err) {
+  hsize_t dims[2] = {rows, cols};
+  return write_dataset(s, path, H5T_NATIVE_FLOAT, data, 2, dims, unit, description, err);
+}
+
 enum wl_status wl_store_write_vector_i(struct wl_store *s, const char *path, const int *data,
                                        size_t n, const char *description, struct wl_error *err) {
   hsize_t dims[1] = {n};

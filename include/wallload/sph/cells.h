@@ -26,7 +26,7 @@ struct wl_sph_grid {
 /* Cell coordinate along axis a of position x [m], clamped into the grid
  * (a particle outside the grid is sorted into the nearest border cell; the
  * guard reports it as having left the domain). */
-WL_HD static inline int wl_sph_cell_coord(const struct wl_sph_grid *g, int a, double x) {
+WL_HD static WL_INLINE int wl_sph_cell_coord(const struct wl_sph_grid *g, int a, double x) {
   const double s = (x - g->lo[a]) * g->inv_cell;
   if (!(s >= 0)) return 0; /* also catches NaN */
   const int c = s < (double)g->n[a] ? (int)s : g->n[a] - 1;
@@ -34,21 +34,21 @@ WL_HD static inline int wl_sph_cell_coord(const struct wl_sph_grid *g, int a, do
 }
 
 /* Cell number of a particle at pos[.][i]. */
-WL_HD static inline int wl_sph_cell_of(const int dim, const struct wl_sph_grid *g,
+WL_HD static WL_INLINE int wl_sph_cell_of(const int dim, const struct wl_sph_grid *g,
                                        double *const *pos, int i) {
   int c = 0;
   for (int a = dim - 1; a >= 0; a--) c = c * g->n[a] + wl_sph_cell_coord(g, a, pos[a][i]);
   return c;
 }
 
-/* The rows of neighbour cells around cell c: for each row, the first and
- * last cell number (first <= last, same row). Returns the number of rows
- * (<= 3 in 2D, <= 9 in 3D). */
-WL_HD static inline int wl_sph_cell_rows(const int dim, const struct wl_sph_grid *g, int c,
-                                         int first[9], int last[9]) {
+/* The rows of neighbour cells around cells c .. c + span of one row (span
+ * 0: cell c alone): for each row, the first and last cell number (first <=
+ * last, same row). Returns the number of rows (<= 3 in 2D, <= 9 in 3D). */
+WL_HD static WL_INLINE int wl_sph_cell_rows(const int dim, const struct wl_sph_grid *g, int c,
+                                            int span, int first[9], int last[9]) {
   const int ix = c % g->n[0];
   const int rest = c / g->n[0]; /* iy + ny iz (3D) or iz (2D) */
-  const int x0 = wl_sph_maxi(ix - 1, 0) - ix, x1 = wl_sph_mini(ix + 1, g->n[0] - 1) - ix;
+  const int x0 = wl_sph_maxi(ix - 1, 0) - ix, x1 = wl_sph_mini(ix + span + 1, g->n[0] - 1) - ix;
   int nr = 0;
   if (dim == 2) {
     for (int dz = -1; dz <= 1; dz++) {

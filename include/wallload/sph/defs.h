@@ -22,6 +22,18 @@
 #define WL_HD
 #endif
 
+/* Forced inlining for the neighbour-loop functions: they take the dimension
+ * and model switches as arguments that are constants at the call site, and
+ * only inlining turns those into compile-time constants (one specialised
+ * loop per instantiation) and lets the loop vectorise. */
+#if defined(__CUDACC__)
+#define WL_INLINE __forceinline__
+#elif defined(__GNUC__)
+#define WL_INLINE inline __attribute__((always_inline))
+#else
+#define WL_INLINE inline
+#endif
+
 #ifndef WL_REAL_DOUBLE
 #define WL_REAL_DOUBLE 0
 #endif
@@ -44,9 +56,9 @@ typedef float wl_real;
  * layout and the binary, never by the schedule. Ignored by nvcc. */
 #if defined(_OPENMP) && !defined(__CUDA_ARCH__)
 #define WL_PRAGMA_(x) _Pragma(#x)
-#define WL_SIMD_REDUCTION(...) WL_PRAGMA_(omp simd reduction(__VA_ARGS__))
+#define WL_SIMD(...) WL_PRAGMA_(omp simd __VA_ARGS__)
 #else
-#define WL_SIMD_REDUCTION(...)
+#define WL_SIMD(...)
 #endif
 
 /* Square root. On the host it is a Newton-Raphson iteration, not sqrtf:
@@ -59,7 +71,7 @@ typedef float wl_real;
  * correctly rounded sqrt (test_sph_kernel checks 4 ulp over [1e-12, 1e4]).
  * x = 0 gives 0; x must be >= 0 and finite. nvcc uses sqrtf (one
  * instruction there), so CPU and GPU agree to a few ulp in r. */
-WL_HD static inline wl_real wl_sph_sqrt(wl_real x) {
+WL_HD static WL_INLINE wl_real wl_sph_sqrt(wl_real x) {
 #if defined(__CUDACC__)
   return sqrt(x);
 #elif WL_REAL_DOUBLE
@@ -80,7 +92,7 @@ WL_HD static inline wl_real wl_sph_sqrt(wl_real x) {
 }
 
 /* |x| without a branch. */
-WL_HD static inline wl_real wl_sph_abs(wl_real x) {
+WL_HD static WL_INLINE wl_real wl_sph_abs(wl_real x) {
 #if defined(__CUDACC__)
   return x < 0 ? -x : x;
 #elif WL_REAL_DOUBLE
@@ -93,8 +105,41 @@ WL_HD static inline wl_real wl_sph_abs(wl_real x) {
 /* max(x, 0) and min(x, 0), exact and without a comparison (a comparison in
  * the neighbour loop stops GCC vectorising it under trapping math):
  * x + |x| is 2x or +0 exactly, and halving is exact. */
-WL_HD static inline wl_real wl_sph_pos(wl_real x) { return WL_R(0.5) * (x + wl_sph_abs(x)); }
-WL_HD static inline wl_real wl_sph_neg(wl_real x) { return WL_R(0.5) * (x - wl_sph_abs(x)); }
+WL_HD static WL_INLINE wl_real wl_sph_pos(wl_real x) { return WL_R(0.5) * (x + wl_sph_abs(x)); }
+WL_HD static WL_INLINE wl_real wl_sph_neg(wl_real x) { return WL_R(0.5) * (x - wl_sph_abs(x)); }
+
+/* 1 if x > 0, 0 if x == +0 (x >= 0 finite), by integer arithmetic on the
+ * bits: same reason as wl_sph_pos (no float comparison in the loop). */
+WL_HD static WL_INLINE wl_real wl_sph_nonzero(wl_real x) {
+#if defined(__CUDACC__) || WL_REAL_DOUBLE
+  return x > 0 ? WL_R(1.0) : WL_R(0.0);
+#else
+  union {
+    float f;
+    unsigned int u;
+  } b;
+  b.f = x;
+  return (wl_real)((b.u + 0x7fffffffu) >> 31);
+#endif
+}
+
+/* max(a, b) of two non-negative finite values, exactly: for such floats
+ * the IEEE bit patterns order like the values, so an integer max does it
+ * (vectorises where a float comparison would not, see wl_sph_pos). */
+WL_HD static WL_INLINE wl_real wl_sph_max_nonneg(wl_real a, wl_real b) {
+#if defined(__CUDACC__) || WL_REAL_DOUBLE
+  return a > b ? a : b;
+#else
+  union {
+    float f;
+    unsigned int u;
+  } x, y;
+  x.f = a;
+  y.f = b;
+  x.u = x.u > y.u ? x.u : y.u;
+  return x.f;
+#endif
+}
 
 WL_HD static inline double wl_sph_maxd(double a, double b) { return a > b ? a : b; }
 WL_HD static inline double wl_sph_mind(double a, double b) { return a < b ? a : b; }

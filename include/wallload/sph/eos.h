@@ -26,7 +26,7 @@
 #include "wallload/sph/params.h"
 
 /* Tait pressure [Pa] of density rho [kg/m^3]. */
-WL_HD static inline wl_real wl_sph_eos_p(const struct wl_sph_const *k, wl_real rho) {
+WL_HD static WL_INLINE wl_real wl_sph_eos_p(const struct wl_sph_const *k, wl_real rho) {
   const wl_real x = rho * k->inv_rho0;
   const wl_real x2 = x * x;
   const wl_real x4 = x2 * x2;
@@ -35,7 +35,7 @@ WL_HD static inline wl_real wl_sph_eos_p(const struct wl_sph_const *k, wl_real r
 
 /* Hydrostatic density difference rho_H(z_j) - rho_H(z_i) [kg/m^3] for
  * dz = z_i - z_j [m] (the deeper particle is the denser). */
-WL_HD static inline wl_real wl_sph_eos_drho_hydro(const struct wl_sph_const *k, wl_real dz) {
+WL_HD static WL_INLINE wl_real wl_sph_eos_drho_hydro(const struct wl_sph_const *k, wl_real dz) {
   const wl_real x = k->ddt_g * dz;
   const wl_real c1 = WL_R(1.0) / WL_R(7.0), c2 = WL_R(-3.0) / WL_R(49.0),
                 c3 = WL_R(13.0) / WL_R(343.0);

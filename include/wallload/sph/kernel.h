@@ -18,13 +18,13 @@
 #include "wallload/sph/params.h"
 
 /* (1 - q/2) clamped to [0, 1], from r^2 [m^2]. */
-WL_HD static inline wl_real wl_sph_kernel_wq(const struct wl_sph_const *k, wl_real r2) {
+WL_HD static WL_INLINE wl_real wl_sph_kernel_wq(const struct wl_sph_const *k, wl_real r2) {
   const wl_real q = wl_sph_sqrt(r2) * k->inv_h;
   return wl_sph_pos(WL_R(1.0) - WL_R(0.5) * q);
 }
 
 /* W(r) [1/m^dim] from r^2 [m^2]. */
-WL_HD static inline wl_real wl_sph_kernel_w(const struct wl_sph_const *k, wl_real r2) {
+WL_HD static WL_INLINE wl_real wl_sph_kernel_w(const struct wl_sph_const *k, wl_real r2) {
   const wl_real q = wl_sph_sqrt(r2) * k->inv_h;
   const wl_real wq = wl_sph_pos(WL_R(1.0) - WL_R(0.5) * q);
   const wl_real wq2 = wq * wq;
@@ -32,7 +32,7 @@ WL_HD static inline wl_real wl_sph_kernel_w(const struct wl_sph_const *k, wl_rea
 }
 
 /* F(r) [1/m^(dim+2)] such that grad_i W_ij = F r_ij, from r^2 [m^2]. */
-WL_HD static inline wl_real wl_sph_kernel_f(const struct wl_sph_const *k, wl_real r2) {
+WL_HD static WL_INLINE wl_real wl_sph_kernel_f(const struct wl_sph_const *k, wl_real r2) {
   const wl_real wq = wl_sph_kernel_wq(k, r2);
   return k->kf * wq * wq * wq;
 }

@@ -1,0 +1,121 @@
+/* assess.h: run every load case of a scenario and keep what the engineer
+ * asked for: wave gauges, wall pressure, force (from pressure probes and
+ * from the wall's boundary particles), moment, impulse, run-up, with
+ * filtered series and peaks (definitions in loads.h), written to
+ *
+ *   DIR/results.h5            per case: time series with units, metadata
+ *   DIR/summary.json          per case: peaks with units; the comparison
+ *   DIR/<case>_wall.csv       time, force, impulse, moment (raw and filtered)
+ *   DIR/<case>_gauges.csv     time, eta at each gauge
+ *   DIR/particles_<case>.h5   particle snapshots, with
+ *   DIR/particles_<case>.xmf  their XDMF index for ParaView
+ *
+ * Every file is written atomically. An unstable or interrupted case keeps
+ * its results up to the stop, and its status says where and why it stopped;
+ * the other cases still run (after an interruption, none does). */
+#ifndef WALLLOAD_ASSESS_H
+#define WALLLOAD_ASSESS_H
+
+#include <signal.h>
+
+#include "wallload/error.h"
+#include "wallload/flume.h"
+#include "wallload/loads.h"
+#include "wallload/plan.h"
+#include "wallload/scenario.h"
+#include "wallload/sph.h"
+
+/* Time series recorded at every output time of one case. */
+struct wl_record {
+  size_t n, cap;
+  int n_gauges, n_probes;
+  double *t;            /* [s] */
+  double *eta;          /* n x n_gauges, elevation above still water [m] */
+  double *pressure;     /* n x n_probes [Pa] */
+  double *force;        /* from the probes [N/m] */
+  double *moment;       /* from the probes, about the toe [N m/m] */
+  double *force_bound;  /* summed on the wall's boundary particles [N/m] */
+  double *moment_bound; /* their moment about the toe [N m/m] */
+  double *kinetic;      /* fluid kinetic energy [J/m] */
+  double *potential;    /* fluid potential energy above the floor [J/m] */
+};
+
+/* Post-processed series and peaks of one case (computed from its record). */
+struct wl_case_loads {
+  double cutoff;            /* low-pass cut-off [Hz] */
+  double *force_filtered;   /* [N/m] */
+  double *moment_filtered;  /* [N m/m] */
+  double *force_bound_filtered;
+  double *impulse;          /* int (F - F_static) dt from the probes, raw force [N s/m] */
+  double *impulse_bound;    /* the same from the boundary particles [N s/m] */
+  struct wl_peak force_peak, moment_peak, force_bound_peak; /* of the filtered series */
+  double impulse_total;     /* [N s/m] at the end of the record */
+  double runup;             /* max eta at the wall face [m] */
+  double runup_time;        /* [s] */
+};
+
+struct wl_case_result {
+  enum wl_load_case load;
+  char name[32];
+  enum wl_status status;    /* WL_OK, WL_EUNSTABLE, WL_EINTERRUPTED, or a setup error */
+  char message[WL_ERROR_MSG_MAX]; /* why it stopped, when not WL_OK */
+  double t_end;             /* planned [s] */
+  double output_dt;         /* sampling interval [s] */
+  double t_reached;         /* [s] */
+  long steps;
+  double runtime_s;         /* wall-clock [s] */
+  int n_particles, n_fluid;
+  double dp, h, c0;
+  double static_force, static_moment, depth_wall; /* at rest [N/m], [N m/m], [m] */
+  struct wl_flume flume;    /* geometry, probes, gauges */
+  struct wl_record rec;
+  struct wl_case_loads loads;
+};
+
+struct wl_assess_result {
+  int n_cases;
+  struct wl_case_result cases[2];
+  char out_dir[512];
+  char backend[32];
+  int threads;
+};
+
+typedef void (*wl_assess_progress_fn)(void *user, const char *case_name,
+                                      const struct wl_sph_progress *pr);
+
+struct wl_assess_opts {
+  const char *out_dir;       /* NULL: "<scenario name>-results" in the current directory */
+  int force;                 /* 1: write into an existing directory */
+  int threads;               /* 0: the scenario's run.threads */
+  double snapshot_interval;  /* [s]; <= 0: a twentieth of each case's end time */
+  double end_time;           /* > 0: override every case's end time [s] (tests) */
+  volatile sig_atomic_t *interrupted; /* the CLI's Ctrl-C flag; may be NULL */
+  wl_assess_progress_fn progress;     /* may be NULL */
+  void *user;
+};
+
+/* Run all load cases and write the outputs. Returns WL_OK when every case
+ * completed; WL_EUNSTABLE or WL_EINTERRUPTED when one stopped early (its
+ * files are written all the same; err says which case, where and why);
+ * WL_EINPUT when the output directory exists and force is 0, or a case
+ * cannot be built; WL_EIO, WL_ENOMEM. res holds what was computed; free it
+ * with wl_assess_result_clear. */
+enum wl_status wl_assess_run(const struct wl_scenario *s, const struct wl_plan *plan,
+                             const struct wl_assess_opts *opts, struct wl_assess_result *res,
+                             struct wl_error *err);
+
+void wl_assess_result_clear(struct wl_assess_result *res);
+
+/* Build and run one load case (WL_CASE_STILL included) without writing
+ * anything: for tests and the validation suite. `snapshots` (may be NULL)
+ * names an HDF5 file for particle snapshots. c is filled as in
+ * wl_assess_run (record and loads); free it with wl_assess_case_clear.
+ * Returns the run's status (WL_EUNSTABLE keeps the record so far). */
+enum wl_status wl_assess_case(const struct wl_scenario *s, const struct wl_plan *plan,
+                              enum wl_load_case load, const struct wl_assess_opts *opts,
+                              const char *snapshots, struct wl_case_result *c,
+                              struct wl_error *err);
+
+void wl_assess_case_clear(struct wl_case_result *c);
+
+#endif

@@ -1,0 +1,81 @@
+/* backend.h: the interface every SPH backend implements (ggml / SPH-EXA
+ * style: a small table of function pointers, each backend in its own
+ * directory and library). The driver in src/sph (wl_sph_sim_*) owns the
+ * time loop, the motion of paddles, output times and the instability
+ * report; a backend owns the particle arrays (host memory or device memory)
+ * and runs one symplectic step on them with the shared physics of
+ * include/wallload/sph/.
+ *
+ * Backends: wl_backend_cpu_ops (src/backend_cpu, OpenMP). A CUDA backend
+ * will provide wl_backend_cuda_ops with the same contract. */
+#ifndef WALLLOAD_BACKEND_H
+#define WALLLOAD_BACKEND_H
+
+#include "wallload/error.h"
+#include "wallload/sph/guard.h"
+#include "wallload/sph/params.h"
+#include "wallload/sph/particles.h"
+
+enum { WL_SPH_WALLS_MAX = 64 };
+
+/* Everything a backend needs to set up a run (copied by init). */
+struct wl_sph_config {
+  struct wl_sph_params prm;            /* physics parameters */
+  double lo[WL_SPH_DIM_MAX];           /* domain box, lower corner [m] */
+  double hi[WL_SPH_DIM_MAX];           /* domain box, upper corner [m] */
+  int n_walls;                         /* wall faces for the penetration guard */
+  struct wl_sph_wall walls[WL_SPH_WALLS_MAX];
+  int n_threads;                       /* CPU: OpenMP threads, 0 = OpenMP's default */
+};
+
+/* Input of one step. */
+struct wl_sph_step_in {
+  double t;   /* time at the step start [s] */
+  double dt;  /* step [s] */
+  long step;  /* number of this step (0 = first) */
+  /* velocity of each moving body over this step [m/s]; row 0 unused */
+  double body_vel[WL_SPH_BODIES_MAX + 1][WL_SPH_DIM_MAX];
+};
+
+/* Result of one step (or of the initial force evaluation). */
+struct wl_sph_step_out {
+  double dt_next;   /* CFL * min(dt_force, dt_cv) [s], for the next step */
+  double dt_force;  /* sqrt(h / max|a|) over fluid particles [s] */
+  double dt_cv;     /* h / (max(c0, 10 max|v|) + max h|v.r|/(r^2+eta^2)) [s] */
+  double ace_max;   /* max |a| of fluid particles, incl. gravity [m/s^2] */
+  double vel_max;   /* max |v| of fluid particles [m/s] */
+  /* first faulty particle (lowest sorted index) when fault != 0 */
+  int fault;        /* enum wl_sph_fault */
+  int fault_index;  /* sorted index */
+  unsigned int fault_id;
+  int fault_kind;
+  int fault_wall;   /* for WL_SPH_FAULT_PENETRATION */
+  double fault_pos[WL_SPH_DIM_MAX], fault_vel[WL_SPH_DIM_MAX], fault_rho;
+};
+
+struct wl_backend_ops {
+  const char *name; /* "cpu", "cuda" */
+  /* Create the backend state from the host particles (boundary first, then
+   * fluid; not modified) and evaluate the forces of the initial state, so
+   * that out->dt_next is the first step. WL_EINPUT for a configuration the
+   * backend rejects, WL_ENOMEM (message names the array), WL_EUNSUPPORTED
+   * (e.g. built without CUDA). On failure *ctx is NULL and nothing leaks. */
+  enum wl_status (*init)(void **ctx, const struct wl_sph_config *cfg, const struct wl_sph_const *k,
+                         const struct wl_particles *host, struct wl_sph_step_out *out,
+                         struct wl_error *err);
+  /* One symplectic step: rebuild the cell lists (sort), predictor, corrector,
+   * guard. No allocation. Returns WL_OK, also when the guard found a fault
+   * (out->fault says which; the driver turns it into WL_EUNSTABLE). */
+  enum wl_status (*step)(void *ctx, const struct wl_sph_step_in *in, struct wl_sph_step_out *out,
+                         struct wl_error *err);
+  /* Copy the state fields (WL_FIELD_SORT) into host, which must have been
+   * allocated for at least as many particles (wl_particles_alloc). */
+  enum wl_status (*download)(void *ctx, struct wl_particles *host, struct wl_error *err);
+  /* Free everything; NULL is accepted. */
+  void (*free)(void *ctx);
+};
+
+/* The OpenMP CPU backend (src/backend_cpu). */
+extern const struct wl_backend_ops wl_backend_cpu_ops;
+
+#endif

@@ -1,0 +1,70 @@
+/* flume.h: one load case of a scenario as particles and a run
+ * configuration: the 2D flume (bed and bathymetry, left end or piston
+ * paddle, the seawall with land at its crest behind it, an end wall), the
+ * initial condition of the case (still water, solitary wave with its
+ * velocity field, paddle motion, crater, thrown mass), the wave gauges and
+ * the pressure probes on the wall face.
+ *
+ * Geometry (x from the paddle / left end, z up from the flume floor):
+ *   - the bed is the scenario's bathymetry up to the wall's toe x_w;
+ *   - the seawall's face is x = x_w from its toe to its crest z_c; behind
+ *     it the land stays at crest level to the end of the flume, closed by an
+ *     end wall (overtopping water lands there, it is not lost);
+ *   - at x = 0: a Goring piston paddle (paddle-generated solitary wave) or a
+ *     fixed vertical wall (other cases). The plan's end time keeps the
+ *     wave reflected there from reaching the wall within the run.
+ * Wall probes sit half a particle spacing seaward of the face, at the
+ * centres of n equal strips of the face: there the interpolated pressure is
+ * the fluid's (a probe inside the wall reads nothing). */
+#ifndef WALLLOAD_FLUME_H
+#define WALLLOAD_FLUME_H
+
+#include "wallload/error.h"
+#include "wallload/plan.h"
+#include "wallload/scenario.h"
+#include "wallload/sph.h"
+
+enum wl_load_case { WL_CASE_SOLITARY, WL_CASE_EXPLOSION, WL_CASE_STILL };
+
+/* Body number tagging the seawall's boundary particles (fixed), so loads
+ * can sum the force on them; the paddle is moving body 1. */
+#define WL_FLUME_BODY_PADDLE 1
+#define WL_FLUME_BODY_WALL 2
+
+enum { WL_FLUME_MAX_PROBES = 1000, WL_FLUME_PADDLE_SAMPLES = 4001 };
+
+struct wl_flume {
+  enum wl_load_case load;
+  struct wl_sph_config cfg;        /* parameters, domain box, walls for the guard */
+  struct wl_particles particles;   /* initial state (state fields only); owned */
+  int has_paddle;
+  double paddle_t[WL_FLUME_PADDLE_SAMPLES]; /* Goring motion table [s] */
+  double paddle_x[WL_FLUME_PADDLE_SAMPLES]; /* displacement [m] */
+  int n_paddle;
+  double x_wall, z_toe, z_crest;   /* seawall face and its extent [m] */
+  double depth;                    /* still-water level above the floor [m] */
+  double depth_wall;               /* still water depth at the wall's toe [m] */
+  double static_force;             /* rho g d_w^2 / 2 at rest [N/m] */
+  double static_moment;            /* rho g d_w^3 / 6 about the toe [N m/m] */
+  int n_probes;
+  double probe_x;                  /* [m] */
+  double probe_z[WL_FLUME_MAX_PROBES];
+  int n_gauges;
+  double gauge_x[WL_SCENARIO_MAX_GAUGES + 1]; /* scenario gauges, then one at the wall face */
+  char gauge_name[WL_SCENARIO_MAX_GAUGES + 1][64];
+  double t_end;                    /* simulated time of this case [s] */
+};
+
+/* Build the flume of load case `load` from a validated scenario and its
+ * plan. Returns WL_OK; WL_EINPUT (a case the scenario does not have, a
+ * geometry the builder refuses), WL_ENOMEM. On failure *f is cleared. */
+enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan *plan,
+                              enum wl_load_case load, struct wl_flume *f, struct wl_error *err);
+
+/* Free what a flume owns; safe on a zeroed flume. */
+void wl_flume_clear(struct wl_flume *f);
+
+/* Name of a load case ("solitary", "explosion", "still"). */
+const char *wl_flume_case_name(enum wl_load_case load);
+
+#endif

@@ -1,0 +1,154 @@
+/* report.h: the design report's template (which sections, in which order,
+ * with which titles and options) as typed, validated values.
+ *
+ * A template is a YAML file in report_templates/ (design.yaml ships with
+ * wallload). A user copies it, reorders, drops or retitles sections and
+ * points a scenario's `report.template` at the copy. Parsing follows the
+ * scenario parser: an unknown section type, an unknown key, a wrong type or
+ * an out-of-range option is an error "file:line:col: key: found X; valid:
+ * a, b, c"; malformed YAML reports libyaml's line and column.
+ *
+ * The page, plot and table toolkit that renders sections is private to the
+ * report module (src/report/draw.h); only the template is public here. */
+#ifndef WALLLOAD_REPORT_H
+#define WALLLOAD_REPORT_H
+
+#include <stddef.h>
+
+#include "wallload/error.h"
+
+enum {
+  WL_REPORT_MAX_SECTIONS = 32, /* sections in one template */
+  WL_REPORT_MAX_TIMES = 12,    /* snapshot times in one section */
+  WL_REPORT_MAX_NAMES = 32,    /* gauge names in one section */
+  WL_REPORT_NAME_MAX = 32,     /* bytes of a gauge name, with the NUL */
+  WL_REPORT_LINE_MAX = 256,    /* bytes of a one-line text (titles, title block), with the NUL */
+  WL_REPORT_TEXT_MAX = 2048,   /* bytes of a paragraph (section `text`), with the NUL */
+};
+
+/* What a section shows; the order matches wl_report_section_type_name. */
+enum wl_report_section_type {
+  WL_REPORT_SECTION_TITLE,           /* title page: title, subtitle, title block */
+  WL_REPORT_SECTION_SCENE,           /* flume, bathymetry, wall, gauges to scale */
+  WL_REPORT_SECTION_SNAPSHOTS,       /* particle snapshots near the wall */
+  WL_REPORT_SECTION_GAUGES,          /* free-surface elevation at the gauges */
+  WL_REPORT_SECTION_LOADS,           /* force, impulse, moment, pressure histories */
+  WL_REPORT_SECTION_PEAKS,           /* table of peak values per load case */
+  WL_REPORT_SECTION_DESIGN_FORMULAE, /* comparison with design-code formulae */
+  WL_REPORT_SECTION_CONVERGENCE,     /* resolution ladder: error against runtime */
+  WL_REPORT_SECTION_METADATA,        /* version, backend, hardware, runtime, scenario */
+  WL_REPORT_SECTION_COUNT
+};
+
+/* snapshots: which particle field colours the snapshot. */
+enum wl_report_field_quantity {
+  WL_REPORT_FIELD_PRESSURE, /* [Pa] */
+  WL_REPORT_FIELD_VELOCITY, /* speed [m/s] */
+  WL_REPORT_FIELD_DENSITY,  /* [kg/m^3] */
+};
+
+/* loads: histories to plot (bit set). */
+enum wl_report_load_bits {
+  WL_REPORT_LOAD_FORCE = 1 << 0,    /* horizontal force per width */
+  WL_REPORT_LOAD_IMPULSE = 1 << 1,  /* impulse per width */
+  WL_REPORT_LOAD_MOMENT = 1 << 2,   /* overturning moment per width */
+  WL_REPORT_LOAD_PRESSURE = 1 << 3, /* probe pressures */
+  WL_REPORT_LOAD_RUNUP = 1 << 4,    /* run-up on the wall */
+};
+
+/* design_formulae: formulae to compare with (bit set). */
+enum wl_report_formula_bits {
+  WL_REPORT_FORMULA_HYDROSTATIC = 1 << 0,    /* hydrostatic pressure of the crest level */
+  WL_REPORT_FORMULA_GODA_TAKAHASHI = 1 << 1, /* Goda (2000) with Takahashi's impulsive term */
+  WL_REPORT_FORMULA_CROSS = 1 << 2,          /* Cross (1967) surge force */
+  WL_REPORT_FORMULA_FEMA_P646 = 1 << 3,      /* FEMA P-646 / ASCE 7 ch. 6 tsunami loads */
+};
+
+/* One section of the report, in template order. Options a section type does
+ * not accept keep their defaults (the parser refuses them in the file). */
+struct wl_report_section {
+  enum wl_report_section_type type;
+  int line, col;                  /* 1-based position of the entry in the template */
+  char title[WL_REPORT_LINE_MAX]; /* heading; the type's default when not given;
+                                     "" (given as "") means no heading */
+  char text[WL_REPORT_TEXT_MAX];  /* introductory paragraph; "" for none */
+  int page_break;                 /* 1: start the section on a new page (default 0) */
+
+  /* snapshots */
+  int n_times;                            /* 0: times chosen by the renderer ("auto") */
+  double times[WL_REPORT_MAX_TIMES];      /* snapshot times [s], increasing */
+  enum wl_report_field_quantity field;    /* colour quantity (default pressure) */
+
+  /* scene, snapshots */
+  int has_x_range;  /* 1: x_range given; 0: the renderer picks the window */
+  double x_range[2]; /* horizontal window [m], x_range[0] < x_range[1] */
+
+  /* scene */
+  double exaggeration; /* vertical scale / horizontal scale [-]; 1 = true aspect (default) */
+
+  /* gauges */
+  int n_gauges;                                       /* 0: every gauge */
+  char gauges[WL_REPORT_MAX_NAMES][WL_REPORT_NAME_MAX]; /* gauge names to plot */
+
+  /* loads */
+  unsigned loads; /* WL_REPORT_LOAD_* bits (default force, impulse, moment) */
+
+  /* design_formulae */
+  unsigned formulae; /* WL_REPORT_FORMULA_* bits (default all) */
+
+  /* peaks, design_formulae, convergence */
+  int digits; /* significant digits in tables, 2..6 (default 3) */
+
+  /* metadata */
+  int scenario_text; /* 1: list the scenario file (default 1) */
+};
+
+/* The title block printed on the title page (all optional, "" when absent). */
+struct wl_report_title_block {
+  char project[WL_REPORT_LINE_MAX];
+  char client[WL_REPORT_LINE_MAX];
+  char reference[WL_REPORT_LINE_MAX];
+  char revision[WL_REPORT_LINE_MAX];
+  char prepared_by[WL_REPORT_LINE_MAX];
+  char checked_by[WL_REPORT_LINE_MAX];
+  char date[WL_REPORT_LINE_MAX]; /* "auto": the date the report is rendered */
+};
+
+struct wl_report_template {
+  char path[512];                        /* the file, as given */
+  char company[WL_REPORT_LINE_MAX];      /* running footer, PDF author ("" for none) */
+  char title[WL_REPORT_LINE_MAX];        /* report title (default "Wave loads on a wall") */
+  char subtitle[WL_REPORT_LINE_MAX];     /* under the title ("" for none) */
+  struct wl_report_title_block block;
+  int n_sections;                        /* 1..WL_REPORT_MAX_SECTIONS once loaded */
+  struct wl_report_section *sections;    /* n_sections entries; owned */
+};
+
+/* Zero a template (safe to _clear afterwards). */
+void wl_report_template_init(struct wl_report_template *t);
+
+/* Free what a template owns and zero it. Safe on a zeroed, half-built or
+ * already cleared template; t may be NULL. */
+void wl_report_template_clear(struct wl_report_template *t);
+
+/* Parse template text `text` (len bytes, need not be NUL-terminated); `path`
+ * names it in messages. Any previous content of *t is cleared first.
+ * Returns WL_OK, WL_EINPUT (malformed YAML, unknown key or section type,
+ * wrong type, bad value: "path:line:col: key: found ...; valid: ..."), or
+ * WL_ENOMEM. On failure *t is left cleared. */
+enum wl_status wl_report_template_parse(const char *path, const char *text, size_t len,
+                                        struct wl_report_template *t, struct wl_error *err);
+
+/* Read and parse the template file `path`. Returns what
+ * wl_report_template_parse returns, or WL_EIO when the file cannot be read.
+ * On failure *t is left cleared. */
+enum wl_status wl_report_template_load(const char *path, struct wl_report_template *t,
+                                       struct wl_error *err);
+
+/* The YAML name of a section type ("title", "scene", ...); "?" out of range. */
+const char *wl_report_section_type_name(enum wl_report_section_type type);
+
+/* The heading a section of `type` gets when its template gives no title. */
+const char *wl_report_section_default_title(enum wl_report_section_type type);
+
+#endif

@@ -1,0 +1,112 @@
+/* scene.h: geometric primitives that turn a flume into particles (module
+ * scene, src/scene/): fluid blocks and fluid under a free surface over a
+ * piecewise-linear bed, boundary polylines (bed, walls, slopes) with layers
+ * of dynamic boundary particles, and a vertical piston paddle. The lead's
+ * scenario mapping (YAML -> scene) is built on these.
+ *
+ * Geometry conventions (2D uses (x, z); 3D extrudes along y over the
+ * scene's width):
+ *  - Fluid particles sit on the lattice x = x0 + (i + 1/2) dp, so a block
+ *    [x0, x1] x [z0, z1] holds exactly its area (volume) in particles and its
+ *    faces are the block's faces.
+ *  - A boundary polyline is the wall FACE: the line where the fluid ends.
+ *    Walking from its first to its last vertex the fluid is on the left;
+ *    boundary layer k (0 .. n_layers-1) lies (k + 1/2) dp to the right,
+ *    offset with mitred corners, so the first layer is dp/2 behind the face
+ *    and a dp from the nearest fluid row, as on DualSPHysics' single
+ *    lattice, and the fluid volume ends at the face. Along each layer the
+ *    particles are spaced as close to dp as the segment length allows.
+ *  - Densities are hydrostatic and Tait-consistent,
+ *      rho = rho0 (1 + rho0 g (eta - z)/B)^(1/7)  (REFERENCES.md 1.1),
+ *    so the state starts at rest without a pressure transient.
+ *
+ * The builder collects particles; wl_scene_build emits them boundary first,
+ * then fluid, with ids in that order. */
+#ifndef WALLLOAD_SCENE_H
+#define WALLLOAD_SCENE_H
+
+#include "wallload/backend.h"
+#include "wallload/error.h"
+#include "wallload/sph/params.h"
+#include "wallload/sph/particles.h"
+
+/* Particle lists under construction (caller-owned: _init / _clear). */
+struct wl_scene {
+  struct wl_sph_const k; /* constants of the run (rho0, B, g, dp) */
+  int dim;          /* 2 or 3 */
+  double dp;        /* particle spacing [m] */
+  double y0, y1;    /* 3D: width of the flume [m] (extrusion range) */
+  int n[2], cap[2]; /* [0] boundary, [1] fluid: particles and room */
+  double *pos[2];   /* dim per particle, interleaved [m] */
+  double *vel[2];   /* dim per particle [m/s] */
+  double *rho[2];   /* [kg/m^3] */
+  unsigned char *kind[2], *body[2];
+};
+
+/* Start an empty scene for the run constants k (wl_sph_const_make: dim,
+ * dp, rho0, B, g); y0 < y1 [m] is the flume width in 3D (ignored in 2D). */
+void wl_scene_init(struct wl_scene *sc, const struct wl_sph_const *k, double y0, double y1);
+
+/* Free the lists; safe on a zeroed or cleared scene. */
+void wl_scene_clear(struct wl_scene *sc);
+
+/* Fluid block lo..hi (x, z in 2D; x, y, z in 3D; [m]) at rest, hydrostatic
+ * below the free surface eta [m] (usually hi's z). WL_EINPUT for an empty or inverted block; WL_ENOMEM. */
+enum wl_status wl_scene_fluid_block(struct wl_scene *sc, const double *lo, const double *hi, double eta,
+                                    struct wl_error *err);
+
+/* Free-surface elevation eta(x) [m] for wl_scene_fluid_surface. */
+typedef double (*wl_scene_eta_fn)(double x, void *user);
+
+/* Fluid at rest for x0 < x < x1 between a piecewise-linear bed (vertices
+ * bed_x[i], bed_z[i], i < n_bed, bed_x increasing; [m]) and the free surface
+ * eta(x): lattice points with z < eta(x) whose distance above the bed is at
+ * least dp/2 (the bed is a wall face: its first boundary layer is dp/2
+ * below). Hydrostatic under the local eta(x). WL_EINPUT for bad arrays or
+ * x range; WL_ENOMEM. */
+enum wl_status wl_scene_fluid_surface(struct wl_scene *sc, double x0, double x1, const double *bed_x, const double *bed_z,
+                                      int n_bed, wl_scene_eta_fn eta, void *user,
+                                      struct wl_error *err);
+
+/* Boundary particles along the polyline (x[i], z[i]), i < n_vertices [m],
+ * fluid on the left, n_layers layers (see above). kind: WL_KIND_FIXED or
+ * WL_KIND_MOVING (then body 1..WL_SPH_BODIES_MAX). Density rho0 (use
+ * wl_scene_hydrostatic_boundary for still water). When cfg is not NULL and
+ * the kind is fixed, each segment's face is added to cfg's penetration
+ * guard (wl_sph_config_add_wall). WL_EINPUT (fewer than 2 vertices, a
+ * zero-length segment, bad layers, kind or body), WL_ENOMEM. */
+enum wl_status wl_scene_boundary_polyline(struct wl_scene *sc, const double *x, const double *z,
+                                          int n_vertices, int n_layers, int kind, int body,
+                                          struct wl_sph_config *cfg, struct wl_error *err);
+
+/* Vertical piston paddle: its face is x = x_face for z0 <= z <= z1 [m],
+ * facing the fluid at x > x_face; n_layers of moving boundary particles of
+ * body `body` behind it. Its motion is set on the simulation
+ * (wl_sph_sim_set_motion). Errors as wl_scene_boundary_polyline. */
+enum wl_status wl_scene_piston(struct wl_scene *sc, double x_face, double z0, double z1,
+                               int n_layers, int body, struct wl_error *err);
+
+/* Set the density of boundary particles below the still-water level eta
+ * [m] to the hydrostatic value (rho0 above it), so that a still tank starts
+ * in equilibrium. */
+void wl_scene_hydrostatic_boundary(struct wl_scene *sc, double eta);
+
+/* Initial fluid velocity v(x) [m/s] (e.g. a solitary wave's), written into
+ * v[0..dim-1] for the particle at x[0..dim-1] [m]. */
+typedef void (*wl_scene_vel_fn)(const double *x, double *v, void *user);
+
+/* Set the velocity of every fluid particle from fn. */
+void wl_scene_fluid_velocity(struct wl_scene *sc, wl_scene_vel_fn fn, void *user);
+
+/* Emit the particles into out (allocated here with wl_particles_alloc, state
+ * fields only; clear it with wl_particles_clear): boundary particles first,
+ * then fluid, ids 0.. in that order. WL_EINPUT when there is no particle,
+ * WL_ENOMEM; on failure out is cleared. */
+enum wl_status wl_scene_build(const struct wl_scene *sc, struct wl_particles *out,
+                              struct wl_error *err);
+
+/* Hydrostatic Tait density [kg/m^3] at depth d = eta - z [m] (rho0 for
+ * d <= 0). */
+double wl_scene_rho_hydro(const struct wl_sph_const *k, double depth);
+
+#endif

@@ -1,0 +1,177 @@
+/* sph/gather.h: one force evaluation for particle i, in gather form (SPH-
+ * EXA, SWIFT): particle i walks the 3 (2D) or 9 (3D) rows of cells around
+ * its own, each row one contiguous index range per group (sph/cells.h),
+ * sums the pair terms of sph/interact.h and writes only its own outputs.
+ * No atomics; the result does not depend on how particles are spread over
+ * threads (CPU) or blocks (GPU).
+ *
+ * One body, two shapes. wl_sph_gather_block handles `lanes` particles of
+ * one cell at once: for each neighbour j it updates every lane, so the lane
+ * loop (a compile-time count) is what the CPU compiler vectorises, and each
+ * particle still sums its neighbours in exactly the order of a lone
+ * particle: rows in order, j increasing, fluid then boundary. Results are
+ * therefore bit-identical whatever the lane count or the vector ISA (no
+ * reassociated sums); lanes = 1 is the per-particle form (one CUDA thread
+ * per particle).
+ *
+ * Pairs (as DualSPHysics with the dynamic boundary condition, Crespo et al.
+ * 2007, CMC 5:173): fluid i sums fluid and boundary neighbours; boundary i
+ * sums fluid neighbours only, and only the continuity equation (its density
+ * then gives the pressure that keeps fluid out). Boundary-boundary pairs are
+ * never visited. Density diffusion acts between fluid pairs only. */
+#ifndef WALLLOAD_SPH_GATHER_H
+#define WALLLOAD_SPH_GATHER_H
+
+#include "wallload/sph/cells.h"
+#include "wallload/sph/interact.h"
+#include "wallload/sph/particles.h"
+
+/* Most particles one wl_sph_gather_block call handles. */
+#define WL_SPH_LANES 8
+
+/* The arrays one force evaluation reads and writes. Inputs are the state at
+ * which forces are evaluated (the step start or the predictor's half step). */
+struct wl_sph_eval {
+  const double *pos[WL_SPH_DIM_MAX];
+  const wl_real *vel[WL_SPH_DIM_MAX];
+  const wl_real *rho;
+  const wl_real *press;          /* EOS of rho, filled before the loop */
+  const unsigned int *key;       /* sorted keys: group * n_cells + cell */
+  const int *begin;              /* 2 n_cells + 1 range starts, by key */
+  wl_real *ace[WL_SPH_DIM_MAX];  /* out: acceleration incl. gravity [m/s^2] */
+  wl_real *ar;                   /* out: drho/dt [kg/m^3/s] */
+  wl_real *visc;                 /* out: h max_j |v_ij.r_ij|/(r^2+eta^2) [m/s] */
+};
+
+/* Running sums of the lanes (one particle each). */
+struct wl_sph_acc {
+  wl_real a[WL_SPH_DIM_MAX][WL_SPH_LANES];
+  wl_real cont[WL_SPH_LANES], ddt[WL_SPH_LANES], wsum[WL_SPH_LANES], visc[WL_SPH_LANES];
+};
+
+/* The particles of the lanes. */
+struct wl_sph_lanes {
+  double x[WL_SPH_DIM_MAX][WL_SPH_LANES];
+  wl_real v[WL_SPH_DIM_MAX][WL_SPH_LANES];
+  wl_real rho[WL_SPH_LANES], inv_rho[WL_SPH_LANES], p[WL_SPH_LANES];
+};
+
+/* Add the pairs of every lane with neighbours j in [j0, j1). dim, laminar,
+ * want_ace, with_ddt, lanes: compile-time constants. av, lam: see
+ * wl_sph_pair_eval. */
+WL_HD static WL_INLINE void wl_sph_gather_range(const int dim, const int laminar,
+                                                const int want_ace, const int with_ddt,
+                                                const int lanes, const struct wl_sph_const *k,
+                                                const struct wl_sph_eval *e,
+                                                const struct wl_sph_lanes *in, int j0, int j1,
+                                                wl_real av, wl_real lam, struct wl_sph_acc *acc) {
+  const int az = dim - 1; /* vertical axis */
+  for (int j = j0; j < j1; j++) {
+    const double xj = e->pos[0][j], yj = dim == 3 ? e->pos[1][j] : 0.0, zj = e->pos[az][j];
+    const wl_real uxj = e->vel[0][j], uyj = dim == 3 ? e->vel[1][j] : WL_R(0.0),
+                  uzj = e->vel[az][j];
+    const wl_real rho_j = e->rho[j], p_j = e->press[j];
+    wl_real inv_rho_j, vol_j;
+    wl_sph_pair_j(k, rho_j, &inv_rho_j, &vol_j);
+    for (int l = 0; l < lanes; l++) {
+      /* position differences in double, narrowed (sph/defs.h) */
+      const wl_real dx = (wl_real)(in->x[0][l] - xj);
+      const wl_real dy = dim == 3 ? (wl_real)(in->x[1][l] - yj) : WL_R(0.0);
+      const wl_real dz = (wl_real)(in->x[az][l] - zj);
+      const wl_real ux = in->v[0][l] - uxj;
+      const wl_real uy = dim == 3 ? in->v[1][l] - uyj : WL_R(0.0);
+      const wl_real uz = in->v[az][l] - uzj;
+      const wl_real r2 = dx * dx + dy * dy + dz * dz;
+      const wl_real rv = dx * ux + dy * uy + dz * uz;
+      const struct wl_sph_pair o =
+          wl_sph_pair_eval(laminar, with_ddt, k, r2, rv, dz, in->rho[l], in->inv_rho[l], in->p[l],
+                           rho_j, inv_rho_j, vol_j, p_j, av, lam);
+      if (want_ace) {
+        acc->a[0][l] += o.c_r * dx + (laminar ? o.c_v * ux : WL_R(0.0));
+        if (dim == 3) acc->a[1][l] += o.c_r * dy + (laminar ? o.c_v * uy : WL_R(0.0));
+        acc->a[2][l] += o.c_r * dz + (laminar ? o.c_v * uz : WL_R(0.0));
+      }
+      acc->cont[l] += o.cont;
+      acc->ddt[l] += o.ddt;
+      acc->wsum[l] += o.wq;
+      acc->visc[l] = wl_sph_max_nonneg(acc->visc[l], o.visc);
+    }
+  }
+}
+
+/* Forces on particles i0 .. i0 + m - 1 (sorted indices, 1 <= m <= lanes) of
+ * one group, in cells `span` + 1 consecutive cells of one row (span 0: one
+ * cell); writes e->ace, e->ar, e->visc of each. Lanes beyond m repeat the
+ * last particle and are discarded. The rows then reach one cell further
+ * than a particle needs; those particles are at least 2h away and add exact
+ * zeros, so the result does not depend on how particles are grouped into
+ * blocks. dim, laminar, lanes: compile-time constants. */
+WL_HD static WL_INLINE void wl_sph_gather_block(const int dim, const int laminar, const int lanes,
+                                                const struct wl_sph_const *k,
+                                                const struct wl_sph_grid *g,
+                                                const struct wl_sph_eval *e, int n_bound, int i0,
+                                                int m, int span) {
+  const int nc = g->n_cells;
+  const int fluid = i0 >= n_bound;
+  const int cell = (int)e->key[i0] - (fluid ? nc : 0);
+  int first[9], last[9];
+  const int nr = wl_sph_cell_rows(dim, g, cell, span, first, last);
+  const int *const bf = e->begin + nc; /* fluid group */
+  const int *const bb = e->begin;      /* boundary group */
+  struct wl_sph_lanes in;
+  for (int l = 0; l < lanes; l++) {
+    const int i = i0 + (l < m ? l : m - 1);
+    for (int a = 0; a < dim; a++) {
+      in.x[a][l] = e->pos[a][i];
+      in.v[a][l] = e->vel[a][i];
+    }
+    in.rho[l] = e->rho[i];
+    in.inv_rho[l] = WL_R(1.0) / e->rho[i];
+    in.p[l] = e->press[i];
+  }
+  struct wl_sph_acc f; /* fluid neighbours */
+  for (int l = 0; l < lanes; l++) {
+    for (int a = 0; a < WL_SPH_DIM_MAX; a++) f.a[a][l] = 0;
+    f.cont[l] = f.ddt[l] = f.wsum[l] = f.visc[l] = 0;
+  }
+  if (fluid) {
+    struct wl_sph_acc b = f; /* boundary neighbours */
+    for (int r = 0; r < nr; r++)
+      wl_sph_gather_range(dim, laminar, 1, 1, lanes, k, e, &in, bf[first[r]], bf[last[r] + 1],
+                          k->av_ff, k->lam_ff, &f);
+    for (int r = 0; r < nr; r++)
+      wl_sph_gather_range(dim, laminar, 1, 0, lanes, k, e, &in, bb[first[r]], bb[last[r] + 1],
+                          k->av_fb, k->lam_fb, &b);
+    for (int l = 0; l < m; l++) {
+      const int i = i0 + l;
+      /* DDT2 (not Full): no diffusion for a fluid particle next to a wall */
+      const wl_real ddt = (k->ddt == WL_SPH_DDT_FOURTAKAS && b.wsum[l] > 0) ? WL_R(0.0) : f.ddt[l];
+      e->ace[0][i] = f.a[0][l] + b.a[0][l] + k->gravity[0];
+      if (dim == 3) e->ace[1][i] = f.a[1][l] + b.a[1][l] + k->gravity[1];
+      e->ace[dim - 1][i] = f.a[2][l] + b.a[2][l] + k->gravity[dim - 1];
+      e->ar[i] = in.rho[l] * (f.cont[l] + b.cont[l]) + ddt;
+      e->visc[i] = k->h * wl_sph_max_nonneg(f.visc[l], b.visc[l]);
+    }
+  } else {
+    for (int r = 0; r < nr; r++)
+      wl_sph_gather_range(dim, laminar, 0, 0, lanes, k, e, &in, bf[first[r]], bf[last[r] + 1],
+                          k->av_fb, k->lam_fb, &f);
+    for (int l = 0; l < m; l++) {
+      const int i = i0 + l;
+      for (int a = 0; a < dim; a++) e->ace[a][i] = 0;
+      e->ar[i] = in.rho[l] * f.cont[l];
+      e->visc[i] = k->h * f.visc[l];
+    }
+  }
+}
+
+/* Forces on the single particle i (the per-particle form, one CUDA thread
+ * each); the same results as wl_sph_gather_block, bit for bit. */
+WL_HD static WL_INLINE void wl_sph_gather(const int dim, const int laminar,
+                                          const struct wl_sph_const *k,
+                                          const struct wl_sph_grid *g,
+                                          const struct wl_sph_eval *e, int n_bound, int i) {
+  wl_sph_gather_block(dim, laminar, 1, k, g, e, n_bound, i, 1, 0);
+}
+
+#endif

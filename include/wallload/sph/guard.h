@@ -1,0 +1,95 @@
+/* sph/guard.h: the instability guard, checked for every particle after
+ * every step (host and device). A run that fails it stops with
+ * WL_EUNSTABLE and a message naming the particle, what, where and when.
+ *
+ * Faults, in the order checked:
+ *  - non-finite position, velocity or density (any particle);
+ *  - a particle outside the domain box (the cell grid);
+ *  - fluid density outside [rho_min, rho_max] (DualSPHysics RhopOutMin/Max,
+ *    700 and 1300 kg/m^3 for water by default): compressibility has failed;
+ *  - a fluid particle inside a wall: walls are segments of the wall FACE in
+ *    the (x, z) plane (the line where the fluid ends and the boundary
+ *    layers begin; scene.h puts the first layer dp/2 behind it), with the
+ *    fluid on the left of a -> b. A fluid particle whose projection falls
+ *    on the segment and that lies more than `penetration` (default dp/2)
+ *    behind the face, but not beyond the back of the boundary layers
+ *    (thickness), has crossed the wall. Water that went over a wall and
+ *    lands behind it is beyond the layers and is not a fault. In 3D the
+ *    segments are extruded along y.
+ * The dt collapse (dt < dt_collapse * initial dt) is checked by the driver. */
+#ifndef WALLLOAD_SPH_GUARD_H
+#define WALLLOAD_SPH_GUARD_H
+
+#include "wallload/sph/particles.h"
+#include "wallload/sph/params.h"
+
+enum wl_sph_fault {
+  WL_SPH_FAULT_NONE = 0,
+  WL_SPH_FAULT_NONFINITE = 1,
+  WL_SPH_FAULT_OUTSIDE = 2,
+  WL_SPH_FAULT_DENSITY = 3,
+  WL_SPH_FAULT_PENETRATION = 4,
+  WL_SPH_FAULT_DT = 5, /* driver: dt collapsed */
+};
+
+/* A wall face segment for the penetration check. */
+struct wl_sph_wall {
+  double a[2];      /* start point (x, z) [m] */
+  double t[2];      /* unit tangent a -> b; the fluid is on its left */
+  double len;       /* |b - a| [m] */
+  double thickness; /* depth of the boundary layers behind the face [m] */
+};
+
+/* The wall from a = (ax, az) to b = (bx, bz) [m], fluid on the left of
+ * a -> b, boundary layers `thickness` [m] deep. a == b gives a wall that
+ * never reports. */
+WL_HD static inline struct wl_sph_wall wl_sph_wall_make(double ax, double az, double bx, double bz,
+                                                        double thickness) {
+  struct wl_sph_wall w;
+  const double tx = bx - ax, tz = bz - az, len2 = tx * tx + tz * tz;
+  double len = len2; /* sqrt by Newton: no libm in shared headers */
+  if (len2 > 0) {
+    len = len2 > 1 ? len2 : 1;
+    for (int it = 0; it < 200; it++) len = 0.5 * (len + len2 / len);
+  }
+  w.a[0] = ax;
+  w.a[1] = az;
+  w.len = len;
+  w.t[0] = len > 0 ? tx / len : 0;
+  w.t[1] = len > 0 ? tz / len : 0;
+  w.thickness = thickness;
+  return w;
+}
+
+WL_HD static inline int wl_sph_finite(double x) { return x - x == 0.0; }
+
+/* Fault of particle i (WL_SPH_FAULT_NONE if none); *wall gets the index of
+ * the crossed wall for WL_SPH_FAULT_PENETRATION. lo, hi: domain box [m]. */
+WL_HD static inline int wl_sph_guard(const int dim, const struct wl_sph_const *k,
+                                     const struct wl_particles *p, const double *lo,
+                                     const double *hi, const struct wl_sph_wall *walls,
+                                     int n_walls, int i, int *wall) {
+  int finite = wl_sph_finite((double)p->rho[i]);
+  for (int a = 0; a < dim; a++)
+    finite = finite && wl_sph_finite(p->pos[a][i]) && wl_sph_finite((double)p->vel[a][i]);
+  if (!finite) return WL_SPH_FAULT_NONFINITE;
+  for (int a = 0; a < dim; a++)
+    if (p->pos[a][i] < lo[a] || p->pos[a][i] > hi[a]) return WL_SPH_FAULT_OUTSIDE;
+  if (p->kind[i] != WL_KIND_FLUID) return WL_SPH_FAULT_NONE;
+  if (p->rho[i] < k->rho_min || p->rho[i] > k->rho_max) return WL_SPH_FAULT_DENSITY;
+  const double x = p->pos[0][i], z = p->pos[dim - 1][i];
+  for (int w = 0; w < n_walls; w++) {
+    const double tx = walls[w].t[0], tz = walls[w].t[1];
+    const double rx = x - walls[w].a[0], rz = z - walls[w].a[1];
+    const double s = rx * tx + rz * tz;
+    if (s < 0 || s > walls[w].len) continue;
+    const double d = tx * rz - tz * rx; /* signed distance, > 0 on the fluid side */
+    if (d < -k->penetration && d > -(walls[w].thickness + k->penetration)) {
+      *wall = w;
+      return WL_SPH_FAULT_PENETRATION;
+    }
+  }
+  return WL_SPH_FAULT_NONE;
+}
+
+#endif

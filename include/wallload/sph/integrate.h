@@ -1,0 +1,68 @@
+/* sph/integrate.h: the symplectic position-Verlet step of DualSPHysics
+ * (Monaghan 2005, Rep. Prog. Phys. 68:1703; Dominguez et al. 2022 eqs.
+ * 18-20), per particle, for host and device.
+ *
+ * predictor (to t + dt/2, forces F^n at the step start):
+ *   rho^{n+1/2} = rho^n + dt/2 drho^n/dt,  v^{n+1/2} = v^n + dt/2 a^n,
+ *   r^{n+1/2} = r^n + dt/2 v^n
+ * corrector (forces F^{n+1/2} at the half step):
+ *   v^{n+1} = v^n + dt a^{n+1/2},  r^{n+1} = r^{n+1/2} + dt/2 v^{n+1},
+ *   rho^{n+1} = rho^n (2 - eps)/(2 + eps),  eps = -(drho/dt)^{n+1/2} dt / rho^{n+1/2}
+ *
+ * Boundary particles (dynamic boundary condition) integrate density the same
+ * way, clamped to rho >= rho0 as DualSPHysics does (a wall never sucks fluid
+ * in). Fixed ones never move; moving ones (paddle) move with the velocity
+ * of their body over the step, v_body = (X(t + dt) - X(t))/dt, which lands
+ * them exactly on the prescribed trajectory X(t). */
+#ifndef WALLLOAD_SPH_INTEGRATE_H
+#define WALLLOAD_SPH_INTEGRATE_H
+
+#include "wallload/sph/particles.h"
+#include "wallload/sph/params.h"
+
+/* Predictor for particle i: reads the state and the forces at the step start,
+ * writes the half-step arrays. body_vel[b][a]: velocity of moving body b
+ * [m/s] (row 0 unused); it is also stored as the particle's velocity. */
+WL_HD static WL_INLINE void wl_sph_predict(const int dim, const struct wl_sph_const *k,
+                                        const struct wl_particles *p, double dt,
+                                        const double (*body_vel)[WL_SPH_DIM_MAX], int i) {
+  const wl_real hdt = (wl_real)(0.5 * dt);
+  const int kind = p->kind[i];
+  if (kind == WL_KIND_FLUID) {
+    p->rho_h[i] = p->rho[i] + hdt * p->ar[i];
+    for (int a = 0; a < dim; a++) {
+      p->vel_h[a][i] = p->vel[a][i] + hdt * p->ace[a][i];
+      p->pos_h[a][i] = p->pos[a][i] + 0.5 * dt * (double)p->vel[a][i];
+    }
+  } else {
+    const wl_real rho = p->rho[i] + hdt * p->ar[i];
+    p->rho_h[i] = rho > k->rho0 ? rho : k->rho0;
+    for (int a = 0; a < dim; a++) {
+      const double v = kind == WL_KIND_MOVING ? body_vel[p->body[i]][a] : 0.0;
+      p->vel[a][i] = (wl_real)v;
+      p->vel_h[a][i] = (wl_real)v;
+      p->pos_h[a][i] = p->pos[a][i] + 0.5 * dt * v;
+    }
+  }
+}
+
+/* Corrector for particle i: reads the step-start state, the half-step
+ * arrays and the half-step forces; writes the new state. */
+WL_HD static WL_INLINE void wl_sph_correct(const int dim, const struct wl_sph_const *k,
+                                        const struct wl_particles *p, double dt, int i) {
+  const wl_real eps = -(p->ar[i] / p->rho_h[i]) * (wl_real)dt;
+  const wl_real rho = p->rho[i] * (WL_R(2.0) - eps) / (WL_R(2.0) + eps);
+  if (p->kind[i] == WL_KIND_FLUID) {
+    p->rho[i] = rho;
+    for (int a = 0; a < dim; a++) {
+      const wl_real v = p->vel[a][i] + (wl_real)dt * p->ace[a][i];
+      p->vel[a][i] = v;
+      p->pos[a][i] = p->pos_h[a][i] + 0.5 * dt * (double)v;
+    }
+  } else {
+    p->rho[i] = rho > k->rho0 ? rho : k->rho0;
+    for (int a = 0; a < dim; a++) p->pos[a][i] = p->pos_h[a][i] + 0.5 * dt * (double)p->vel[a][i];
+  }
+}
+
+#endif

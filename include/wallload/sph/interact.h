@@ -1,0 +1,83 @@
+/* sph/interact.h: one particle pair i-j of the weakly-compressible SPH
+ * equations, the body of every neighbour loop (gather form: only particle
+ * i's sums change). Forms and constants as DualSPHysics 5 (Dominguez et al.
+ * 2022, Comp. Part. Mech. 9:867, eqs. 4-13), with r_ij = r_i - r_j,
+ * v_ij = v_i - v_j, grad_i W_ij = F r_ij (sph/kernel.h):
+ *
+ * momentum (symmetric pressure term, seed 000 eq. 13 in DualSPHysics form):
+ *   dv_i/dt = -sum_j m_j ((p_i + p_j)/(rho_i rho_j) + Pi_ij) grad_i W_ij + g
+ * artificial viscosity (Monaghan 1992; seed 000 eq. 14):
+ *   Pi_ij = -alpha c0 mu_ij / rho_ij-bar for v_ij.r_ij < 0, else 0;
+ *   mu_ij = h v_ij.r_ij / (r^2 + eta^2), eta^2 = 0.01 h^2, rho-bar = mean density
+ * laminar viscosity (Lo & Shao 2002), instead of Pi_ij:
+ *   + sum_j m_j 4 nu r_ij.grad_i W_ij / ((rho_i + rho_j)(r^2 + eta^2)) v_ij
+ * continuity (DualSPHysics 5 volume form):
+ *   drho_i/dt = rho_i sum_j (m_j/rho_j) v_ij.grad_i W_ij + D_i
+ * density diffusion (Molteni & Colagrossi 2009 with the hydrostatic
+ * correction of Fourtakas et al. 2019, eq. 22; DualSPHysics DDT2):
+ *   D_i = -delta 2h c0 sum_j ((rho_j - rho_i) - rho_H_ji) r_ij.grad_i W_ij / (r^2 + eta^2) m_j/rho_j
+ *   (r_ij.grad W < 0, so a denser neighbour raises rho_i); rho_H_ji in sph/eos.h.
+ * time-step input (DualSPHysics ViscDtMax, taken over pairs in the support):
+ *   max_j |v_ij.r_ij| / (r^2 + eta^2)
+ *
+ * Everything is branch-free so that the CPU loop vectorises; particle i may
+ * meet itself (r = 0: every term is 0). */
+#ifndef WALLLOAD_SPH_INTERACT_H
+#define WALLLOAD_SPH_INTERACT_H
+
+#include "wallload/sph/eos.h"
+#include "wallload/sph/kernel.h"
+
+/* What one pair adds to particle i. */
+struct wl_sph_pair {
+  wl_real c_r;  /* acceleration += c_r r_ij [1/s^2] */
+  wl_real c_v;  /* acceleration += c_v v_ij [1/s] (laminar viscosity only) */
+  wl_real cont; /* (m_j/rho_j) v_ij.grad_i W_ij [1/s] (times rho_i later) */
+  wl_real ddt;  /* density diffusion term [kg/m^3/s] */
+  wl_real wq;   /* (1 - q/2) clamped, > 0 iff j is inside the support */
+  wl_real visc; /* |v_ij.r_ij| / (r^2 + eta^2), 0 outside the support [1/s] */
+};
+
+/* One pair. r2 = |r_ij|^2 [m^2], rv = r_ij.v_ij [m^2/s], dz = z_i - z_j [m];
+ * densities [kg/m^3], pressures [Pa]; inv_rho_i = 1/rho_i, inv_rho_j =
+ * 1/rho_j and vol_j = m_j/rho_j (wl_sph_pair_j: computed once per j). av: alpha c0 h of
+ * this pair kind (0 with laminar viscosity); lam: 4 nu (0 without);
+ * with_ddt: density diffusion for this pair (fluid-fluid). `laminar` and
+ * `with_ddt` must be compile-time constants at the call site. */
+WL_HD static WL_INLINE struct wl_sph_pair
+wl_sph_pair_eval(const int laminar, const int with_ddt, const struct wl_sph_const *k, wl_real r2,
+                 wl_real rv, wl_real dz, wl_real rho_i, wl_real inv_rho_i, wl_real p_i,
+                 wl_real rho_j, wl_real inv_rho_j, wl_real vol_j, wl_real p_j, wl_real av,
+                 wl_real lam) {
+  struct wl_sph_pair o;
+  const wl_real wq = wl_sph_kernel_wq(k, r2);
+  const wl_real F = k->kf * wq * wq * wq;
+  const wl_real inv_r2e = WL_R(1.0) / (r2 + k->eta2);
+  const wl_real inv_rho_sum = WL_R(1.0) / (rho_i + rho_j);
+  const wl_real prs = (p_i + p_j) * inv_rho_i * inv_rho_j;
+  if (laminar) {
+    o.c_r = -k->mass * prs * F;
+    o.c_v = k->mass * lam * F * r2 * inv_r2e * inv_rho_sum;
+  } else {
+    /* m_j Pi_ij = -m_j av (rv)^- / ((r^2 + eta^2) rho-bar), rho-bar = (rho_i + rho_j)/2 */
+    const wl_real m_pi = -k->mass * av * wl_sph_neg(rv) * inv_r2e * WL_R(2.0) * inv_rho_sum;
+    o.c_r = -(k->mass * prs + m_pi) * F;
+    o.c_v = 0;
+  }
+  o.cont = vol_j * F * rv;
+  o.ddt = with_ddt ? -k->ddt_k * ((rho_j - rho_i) - wl_sph_eos_drho_hydro(k, dz)) * F * r2 *
+                         inv_r2e * vol_j
+                   : WL_R(0.0);
+  o.wq = wq;
+  o.visc = wl_sph_abs(rv) * inv_r2e * wl_sph_nonzero(wq);
+  return o;
+}
+
+/* 1/rho_j and m_j/rho_j, once per neighbour j. */
+WL_HD static WL_INLINE void wl_sph_pair_j(const struct wl_sph_const *k, wl_real rho_j,
+                                          wl_real *inv_rho_j, wl_real *vol_j) {
+  *inv_rho_j = WL_R(1.0) / rho_j;
+  *vol_j = k->mass * *inv_rho_j;
+}
+
+#endif

@@ -1,0 +1,56 @@
+/* sph/probe.h: kernel interpolation at an arbitrary point from the fluid
+ * particles (host now, device later), for gauges and probes.
+ *
+ *   S(x) = sum_j V_j W(x - x_j),  V_j = m_j / rho_j   (Shepard sum, ~1 inside)
+ *   f(x) = sum_j V_j f_j W(x - x_j) / S(x)           (Shepard-normalised field)
+ *
+ * Free surface (DualSPHysics gauges "SWL" and AWAS): along a vertical line
+ * the surface is where m0 S(x), which DualSPHysics calls the interpolated
+ * mass, falls below coefmasslimit * m0, m0 = rho0 dp^dim the particle mass;
+ * coefmasslimit = 0.4 in 2D and 0.5 in 3D (REFERENCES.md section 6:
+ * "0.4 dp^2 rho0 in 2D, 0.5 dp^3 rho0 in 3D"). So the criterion is
+ * S(x) < 0.4 (2D) or 0.5 (3D): a flat, settled surface gives S = 0.5 at
+ * about the height where the fluid's volume ends. */
+#ifndef WALLLOAD_SPH_PROBE_H
+#define WALLLOAD_SPH_PROBE_H
+
+#include "wallload/sph/cells.h"
+#include "wallload/sph/kernel.h"
+
+struct wl_sph_point_sums {
+  double s;                 /* sum V_j W [-] */
+  double v[WL_SPH_DIM_MAX]; /* sum V_j W v_j [m/s] */
+  double p;                 /* sum V_j W p_j [Pa] */
+};
+
+/* Sums at point x [m] over the fluid particles, using the sorted cell
+ * ranges begin (2 n_cells + 1; the fluid group starts at n_cells). press
+ * may be NULL (then p is 0). The cell of x is clamped into the grid. */
+WL_HD static inline struct wl_sph_point_sums
+wl_sph_point_sum(const int dim, const struct wl_sph_const *k, const struct wl_sph_grid *g,
+                 const int *begin, double *const *pos, wl_real *const *vel, const wl_real *rho,
+                 const wl_real *press, const double *x) {
+  struct wl_sph_point_sums o = {0, {0, 0, 0}, 0};
+  int c = 0;
+  for (int a = dim - 1; a >= 0; a--) c = c * g->n[a] + wl_sph_cell_coord(g, a, x[a]);
+  int first[9], last[9];
+  const int nr = wl_sph_cell_rows(dim, g, c, 0, first, last);
+  const int *const bf = begin + g->n_cells;
+  for (int r = 0; r < nr; r++) {
+    for (int j = bf[first[r]]; j < bf[last[r] + 1]; j++) {
+      wl_real r2 = 0;
+      for (int a = 0; a < dim; a++) {
+        const wl_real d = (wl_real)(x[a] - pos[a][j]);
+        r2 += d * d;
+      }
+      if (!(r2 < k->support2)) continue;
+      const double vw = (double)(k->mass / rho[j] * wl_sph_kernel_w(k, r2));
+      o.s += vw;
+      for (int a = 0; a < dim; a++) o.v[a] += vw * vel[a][j];
+      if (press) o.p += vw * press[j];
+    }
+  }
+  return o;
+}
+
+#endif

@@ -1,0 +1,410 @@
+/* assess.c: run the load cases of a scenario: build each flume, step the
+ * SPH solver, sample gauges, wall probes and the wall's boundary force at
+ * every output time, then post-process and write (output.c). */
+#define _POSIX_C_SOURCE 200809L /* mkdir, stat */
+#include <errno.h>
+#include <math.h>
+#include <omp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+
+#include "assess_private.h"
+#include "wallload/backend.h"
+#include "wallload/config.h"
+#include "wallload/sph/interact.h"
+#include "wallload/store.h"
+
+extern const struct wl_backend_ops wl_backend_cpu_ops;
+
+/* State of one running case, seen by the output callback. */
+struct run_ctx {
+  struct wl_case_result *c;
+  const struct wl_assess_opts *opts;
+  struct wl_sph_probe *probe;
+  struct wl_store *snaps;          /* particle snapshots file */
+  struct wl_snapshot_ref *refs;
+  size_t n_refs, cap_refs;
+  double next_snapshot, snapshot_interval;
+  int *near;                       /* fluid indices near the wall (scratch) */
+  double prof_z[WL_FLUME_MAX_PROBES + 2], prof_p[WL_FLUME_MAX_PROBES + 2]; /* wet profile */
+  size_t near_cap;
+};
+
+static double now_s(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* Horizontal force [N/m] of the fluid on the seawall's boundary particles:
+ * minus the momentum-equation force of the wall particles on each fluid
+ * particle (the solver's own pair term, sph/interact.h), summed. */
+static enum wl_status boundary_force(struct run_ctx *rc, const struct wl_particles *p,
+                                     const struct wl_sph_const *k, double *force, double *moment,
+                                     struct wl_error *err) {
+  const struct wl_flume *f = &rc->c->flume;
+  const double reach = 2.0 * k->h_d;
+  size_t n_near = 0;
+  for (int i = p->n_bound; i < p->n; i++) {
+    double x = p->pos[0][i], z = p->pos[1][i];
+    if (x > f->x_wall - reach && z > f->z_toe - reach) {
+      if (n_near == rc->near_cap) {
+        size_t cap = rc->near_cap ? 2 * rc->near_cap : 4096;
+        int *b = realloc(rc->near, cap * sizeof *b);
+        if (!b) return wl_error_set(err, WL_ENOMEM, "wall force: no memory");
+        rc->near = b;
+        rc->near_cap = cap;
+      }
+      rc->near[n_near++] = i;
+    }
+  }
+  const int laminar = k->visc == WL_SPH_VISC_LAMINAR;
+  double fx = 0.0, my = 0.0;
+  for (int j = 0; j < p->n_bound; j++) {
+    if (p->body[j] != WL_FLUME_BODY_WALL) continue;
+    wl_real rho_j = p->rho[j], p_j = wl_sph_eos_p(k, rho_j);
+    for (size_t a = 0; a < n_near; a++) {
+      int i = rc->near[a];
+      wl_real dx = (wl_real)(p->pos[0][i] - p->pos[0][j]);
+      wl_real dz = (wl_real)(p->pos[1][i] - p->pos[1][j]);
+      wl_real r2 = dx * dx + dz * dz;
+      if (r2 >= k->support2) continue;
+      wl_real vx = p->vel[0][i] - p->vel[0][j], vz = p->vel[1][i] - p->vel[1][j];
+      wl_real rho_i = p->rho[i], p_i = wl_sph_eos_p(k, rho_i), rv = dx * vx + dz * vz;
+      wl_real inv_rho_j, vol_j;
+      wl_sph_pair_j(k, rho_j, &inv_rho_j, &vol_j);
+      /* the solver's own fluid-boundary pair term (no density diffusion) */
+      struct wl_sph_pair pr =
+          laminar ? wl_sph_pair_eval(1, 0, k, r2, rv, dz, rho_i, 1 / rho_i, p_i, rho_j, inv_rho_j,
+                                     vol_j, p_j, 0, k->lam_fb)
+                  : wl_sph_pair_eval(0, 0, k, r2, rv, dz, rho_i, 1 / rho_i, p_i, rho_j, inv_rho_j,
+                                     vol_j, p_j, k->av_fb, 0);
+      double ax = (double)pr.c_r * dx + (double)pr.c_v * vx;
+      double fij = -(double)k->mass * ax;
+      fx += fij;
+      /* the pair force acts between the two particles */
+      my += fij * (0.5 * (p->pos[1][i] + p->pos[1][j]) - f->z_toe);
+    }
+  }
+  *force = fx;
+  *moment = my;
+  return WL_OK;
+}
+
+static enum wl_status write_snapshot(struct run_ctx *rc, const struct wl_particles *p,
+                                    const struct wl_sph_const *k, double t, struct wl_error *err) {
+  if (rc->n_refs == rc->cap_refs) {
+    size_t cap = rc->cap_refs ? 2 * rc->cap_refs : 32;
+    struct wl_snapshot_ref *b = realloc(rc->refs, cap * sizeof *b);
+    if (!b) return wl_error_set(err, WL_ENOMEM, "snapshots: no memory");
+    rc->refs = b;
+    rc->cap_refs = cap;
+  }
+  struct wl_snapshot_ref *r = &rc->refs[rc->n_refs];
+  r->time = t;
+  r->n = (size_t)p->n;
+  snprintf(r->group, sizeof r->group, "snapshots/%04zu", rc->n_refs);
+  size_t n = (size_t)p->n;
+  double *pos = malloc(3 * n * sizeof *pos);
+  float *vel = malloc(3 * n * sizeof *vel), *rho = malloc(n * sizeof *rho),
+        *prs = malloc(n * sizeof *prs);
+  int *kind = malloc(n * sizeof *kind);
+  enum wl_status st = WL_OK;
+  if (!pos || !vel || !rho || !prs || !kind) {
+    st = wl_error_set(err, WL_ENOMEM, "snapshots: no memory for %zu particles", n);
+  } else {
+    for (size_t i = 0; i < n; i++) {
+      /* 2D (x, z) is written as (x, 0, z) for ParaView */
+      pos[3 * i] = p->pos[0][i], pos[3 * i + 1] = 0.0, pos[3 * i + 2] = p->pos[1][i];
+      vel[3 * i] = (float)p->vel[0][i], vel[3 * i + 1] = 0.0f, vel[3 * i + 2] = (float)p->vel[1][i];
+      rho[i] = (float)p->rho[i];
+      prs[i] = (float)wl_sph_eos_p(k, p->rho[i]);
+      kind[i] = p->kind[i];
+    }
+    char path[160];
+    snprintf(path, sizeof path, "%s/position", r->group);
+    st = wl_store_write_matrix(rc->snaps, path, pos, n, 3, "m", "particle position (x, y, z)", err);
+    if (!st) {
+      snprintf(path, sizeof path, "%s/velocity", r->group);
+      st = wl_store_write_matrix_f(rc->snaps, path, vel, n, 3, "m/s", "particle velocity (u, v, w)",
+                                   err);
+    }
+    if (!st) {
+      snprintf(path, sizeof path, "%s/rho", r->group);
+      st = wl_store_write_vector_f(rc->snaps, path, rho, n, "kg/m^3", "density", err);
+    }
+    if (!st) {
+      snprintf(path, sizeof path, "%s/p", r->group);
+      st = wl_store_write_vector_f(rc->snaps, path, prs, n, "Pa", "pressure (Tait EOS)", err);
+    }
+    if (!st) {
+      snprintf(path, sizeof path, "%s/kind", r->group);
+      st = wl_store_write_vector_i(rc->snaps, path, kind, n, "0 fluid, 1 fixed, 2 moving", err);
+    }
+    if (!st) {
+      snprintf(path, sizeof path, "%s", r->group);
+      st = wl_store_attr_double(rc->snaps, path, "time", t, "s", err);
+    }
+  }
+  free(pos), free(vel), free(rho), free(prs), free(kind);
+  if (!st) rc->n_refs++;
+  return st;
+}
+
+static enum wl_status on_output(void *user, struct wl_sph_sim *sim, double t,
+                                struct wl_error *err) {
+  struct run_ctx *rc = user;
+  struct wl_case_result *c = rc->c;
+  if (rc->opts->interrupted && *rc->opts->interrupted)
+    return wl_error_set(err, WL_EINTERRUPTED, "interrupted by the user at t = %.4f s", t);
+  const struct wl_particles *p = wl_sph_sim_particles(sim, err);
+  if (!p) return err->status ? err->status : WL_EIO;
+  enum wl_status st = wl_sph_probe_index(rc->probe, p, err);
+  if (st) return st;
+  struct wl_record *r = &c->rec;
+  if ((st = record_push(r, err))) return st;
+  size_t row = r->n - 1;
+  const struct wl_flume *f = &c->flume;
+  const struct wl_sph_config *cfg = wl_sph_sim_config(sim);
+  r->t[row] = t;
+  for (int g = 0; g < f->n_gauges; g++) {
+    double x = f->gauge_x[g];
+    double z = wl_sph_probe_elevation(rc->probe, x, 0.0, cfg->lo[1], cfg->hi[1], 0.0);
+    r->eta[row * (size_t)r->n_gauges + (size_t)g] = z - f->depth;
+  }
+  /* Wall probes read the fluid below the free surface at the wall (the
+   * last gauge); above it the face is dry and the pressure 0. Shepard
+   * interpolation just above the surface would otherwise report the
+   * pressure of the water below. The profile ends at (surface, 0). */
+  double *pr = &r->pressure[row * (size_t)r->n_probes];
+  double z_surface = f->depth + r->eta[row * (size_t)r->n_gauges + (size_t)(f->n_gauges - 1)];
+  int n_wet = 0;
+  for (int k = 0; k < f->n_probes; k++) {
+    double x[2] = {f->probe_x, f->probe_z[k]}, pk = 0.0;
+    if (f->probe_z[k] >= z_surface || !wl_sph_probe_interp(rc->probe, x, NULL, &pk)) pk = 0.0;
+    pr[k] = pk;
+    if (f->probe_z[k] < z_surface) {
+      rc->prof_z[n_wet] = f->probe_z[k];
+      rc->prof_p[n_wet++] = pk;
+    }
+  }
+  if (z_surface <= f->z_toe || n_wet == 0) {
+    r->force[row] = r->moment[row] = 0.0;
+  } else {
+    double top = fmin(z_surface, f->z_crest);
+    if (top > rc->prof_z[n_wet - 1]) {
+      rc->prof_z[n_wet] = top;
+      rc->prof_p[n_wet++] = 0.0;
+    }
+    if (n_wet == 1) { /* one probe under a thin layer: a triangle */
+      rc->prof_z[1] = rc->prof_z[0];
+      rc->prof_p[1] = rc->prof_p[0];
+      n_wet = 2;
+    }
+    wl_loads_profile(rc->prof_z, rc->prof_p, (size_t)n_wet, f->z_toe, top, &r->force[row],
+                     &r->moment[row]);
+  }
+  const struct wl_sph_const *k = wl_sph_sim_const(sim);
+  if ((st = boundary_force(rc, p, k, &r->force_bound[row], &r->moment_bound[row], err)))
+    return st;
+  double kin = 0.0, pot = 0.0;
+  for (int i = p->n_bound; i < p->n; i++) {
+    double v2 = (double)p->vel[0][i] * p->vel[0][i] + (double)p->vel[1][i] * p->vel[1][i];
+    kin += 0.5 * (double)k->mass * v2;
+    pot += (double)k->mass * (-k->gravity[1]) * p->pos[1][i];
+  }
+  r->kinetic[row] = kin;
+  r->potential[row] = pot;
+  if (rc->snaps && t >= rc->next_snapshot - 1e-12) {
+    if ((st = write_snapshot(rc, p, k, t, err))) return st;
+    rc->next_snapshot += rc->snapshot_interval;
+  }
+  return WL_OK;
+}
+
+static void on_progress(void *user, const struct wl_sph_progress *pr) {
+  struct run_ctx *rc = user;
+  if (rc->opts->progress) rc->opts->progress(rc->opts->user, rc->c->name, pr);
+}
+
+/* Run one case into c (its flume already built). Returns the run's status;
+ * the record holds what was sampled before any stop. */
+static enum wl_status run_case(const struct wl_assess_opts *opts, const char *snap_path,
+                               struct wl_case_result *c, struct wl_error *err) {
+  struct run_ctx rc;
+  memset(&rc, 0, sizeof rc);
+  rc.c = c;
+  rc.opts = opts;
+  struct wl_sph_sim *sim = NULL;
+  double start = now_s();
+  enum wl_status st = wl_sph_sim_alloc(&sim, &wl_backend_cpu_ops, &c->flume.cfg,
+                                       &c->flume.particles, err);
+  if (!st && c->flume.has_paddle) {
+    struct wl_sph_motion m = {0};
+    m.type = WL_SPH_MOTION_TABLE;
+    m.n = c->flume.n_paddle;
+    m.t = c->flume.paddle_t;
+    m.x = c->flume.paddle_x;
+    st = wl_sph_sim_set_motion(sim, WL_FLUME_BODY_PADDLE, &m, err);
+  }
+  if (!st) st = wl_sph_probe_alloc(&rc.probe, &c->flume.cfg, err);
+  if (!st && snap_path) st = wl_store_open(snap_path, &rc.snaps, err);
+  if (!st) {
+    const struct wl_sph_const *k = wl_sph_sim_const(sim);
+    c->h = k->h_d;
+    c->c0 = k->c0_d;
+    rc.snapshot_interval =
+        opts->snapshot_interval > 0 ? opts->snapshot_interval : c->t_end / 20.0;
+    struct wl_sph_run_opts ro = {0};
+    ro.t_end = c->t_end;
+    ro.output_dt = c->flume.cfg.prm.dp > 0 ? c->output_dt : 0.01;
+    ro.output = on_output;
+    ro.progress = on_progress;
+    ro.progress_wall_s = 0.5;
+    ro.user = &rc;
+    st = wl_sph_sim_run(sim, &ro, err);
+  }
+  if (sim) {
+    c->t_reached = wl_sph_sim_time(sim);
+    c->steps = wl_sph_sim_steps(sim);
+  }
+  c->runtime_s = now_s() - start;
+  if (rc.snaps) {
+    struct wl_error serr;
+    wl_error_clear(&serr);
+    enum wl_status s2 = wl_store_close(rc.snaps, 1, &serr);
+    if (!s2 && rc.n_refs) {
+      char xmf[1100];
+      snprintf(xmf, sizeof xmf, "%.*s.xmf", (int)(strlen(snap_path) - 3), snap_path);
+      const char *base = strrchr(snap_path, '/');
+      s2 = wl_store_write_xdmf(xmf, base ? base + 1 : snap_path, rc.refs, rc.n_refs, &serr);
+    }
+    if (s2 && !st) {
+      *err = serr;
+      st = s2;
+    }
+  }
+  wl_sph_probe_free(rc.probe);
+  wl_sph_sim_free(sim);
+  free(rc.refs);
+  free(rc.near);
+  return st;
+}
+
+void wl_assess_case_clear(struct wl_case_result *c) {
+  if (!c) return;
+  record_clear(&c->rec);
+  case_loads_clear(&c->loads);
+  wl_flume_clear(&c->flume);
+  memset(c, 0, sizeof *c);
+}
+
+void wl_assess_result_clear(struct wl_assess_result *res) {
+  if (!res) return;
+  for (int i = 0; i < res->n_cases; i++) wl_assess_case_clear(&res->cases[i]);
+  memset(res, 0, sizeof *res);
+}
+
+enum wl_status wl_assess_case(const struct wl_scenario *s, const struct wl_plan *plan,
+                              enum wl_load_case load, const struct wl_assess_opts *opts,
+                              const char *snapshots, struct wl_case_result *c,
+                              struct wl_error *err) {
+  memset(c, 0, sizeof *c);
+  c->load = load;
+  snprintf(c->name, sizeof c->name, "%s", wl_flume_case_name(load));
+  enum wl_status st = wl_flume_build(s, plan, load, &c->flume, err);
+  if (st) return st;
+  if (opts->threads > 0) c->flume.cfg.n_threads = opts->threads;
+  c->t_end = opts->end_time > 0 ? opts->end_time : c->flume.t_end;
+  c->output_dt = s->run.output_interval.q.si;
+  c->dp = plan->dp;
+  c->n_particles = c->flume.particles.n;
+  c->n_fluid = c->flume.particles.n - c->flume.particles.n_bound;
+  c->static_force = c->flume.static_force;
+  c->static_moment = c->flume.static_moment;
+  c->depth_wall = c->flume.depth_wall;
+  c->rec.n_gauges = c->flume.n_gauges;
+  c->rec.n_probes = c->flume.n_probes;
+  c->status = run_case(opts, snapshots, c, err);
+  if (c->status != WL_OK) snprintf(c->message, sizeof c->message, "%s", err->msg);
+  struct wl_error lerr;
+  wl_error_clear(&lerr);
+  if ((st = case_loads_compute(c, &lerr))) {
+    if (c->status == WL_OK) *err = lerr;
+    return c->status ? c->status : st;
+  }
+  return c->status;
+}
+
+static enum wl_status prepare_dir(const char *dir, int force, struct wl_error *err) {
+  struct stat sb;
+  if (stat(dir, &sb) == 0) {
+    if (!S_ISDIR(sb.st_mode))
+      return wl_error_set(err, WL_EINPUT, "%s: exists and is not a directory; choose another with -o",
+                          dir);
+    if (!force)
+      return wl_error_set(err, WL_EINPUT,
+                          "%s: the output directory exists; use --force to write into it, or -o "
+                          "to choose another",
+                          dir);
+    return WL_OK;
+  }
+  if (mkdir(dir, 0777) != 0)
+    return wl_error_set(err, WL_EIO, "%s: cannot create the output directory (%s)", dir,
+                        strerror(errno));
+  return WL_OK;
+}
+
+enum wl_status wl_assess_run(const struct wl_scenario *s, const struct wl_plan *plan,
+                             const struct wl_assess_opts *opts, struct wl_assess_result *res,
+                             struct wl_error *err) {
+  memset(res, 0, sizeof *res);
+  if (opts->out_dir)
+    snprintf(res->out_dir, sizeof res->out_dir, "%s", opts->out_dir);
+  else
+    snprintf(res->out_dir, sizeof res->out_dir, "%s-results", s->name.text);
+  enum wl_status st = prepare_dir(res->out_dir, opts->force, err);
+  if (st) return st;
+  snprintf(res->backend, sizeof res->backend, "cpu");
+  if (s->run.backend.choice == WL_BACKEND_CUDA)
+    return wl_error_set(err, WL_EUNSUPPORTED,
+                        "%s: run.backend: cuda is not available yet; use cpu or auto", s->path);
+
+  enum wl_load_case todo[2];
+  int n = 0;
+  if (plan->solitary.present) todo[n++] = WL_CASE_SOLITARY;
+  if (plan->explosion.present) todo[n++] = WL_CASE_EXPLOSION;
+  enum wl_status overall = WL_OK;
+  struct wl_error first;
+  wl_error_clear(&first);
+  for (int i = 0; i < n; i++) {
+    struct wl_case_result *c = &res->cases[res->n_cases++];
+    char snap[1100];
+    snprintf(snap, sizeof snap, "%s/particles_%s.h5", res->out_dir, wl_flume_case_name(todo[i]));
+    struct wl_error cerr;
+    wl_error_clear(&cerr);
+    enum wl_status cst = wl_assess_case(s, plan, todo[i], opts, snap, c, &cerr);
+    res->threads = c->flume.cfg.n_threads > 0 ? c->flume.cfg.n_threads : omp_get_max_threads();
+    if (cst != WL_OK && cst != WL_EUNSTABLE && cst != WL_EINTERRUPTED && c->rec.n == 0) {
+      *err = cerr; /* the case could not even start */
+      return cst;
+    }
+    if (cst != WL_OK && overall == WL_OK) {
+      overall = cst;
+      wl_error_set(&first, cst, "case %s stopped at t = %.4g s of %.4g s: %s", c->name,
+                   c->t_reached, c->t_end, cerr.msg);
+    }
+    /* Write after every case, so a later failure keeps this one. */
+    if ((st = write_results(s, plan, res, err))) return st;
+    if (c->status == WL_EINTERRUPTED) break;
+    if (c->status != WL_OK && c->status != WL_EUNSTABLE) break;
+  }
+  if (overall != WL_OK) {
+    *err = first;
+    return overall;
+  }
+  return WL_OK;
+}

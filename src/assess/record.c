@@ -1,0 +1,103 @@
+/* record.c: growable time-series record of one case, and its
+ * post-processing into loads (definitions in loads.h). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "assess_private.h"
+
+void record_clear(struct wl_record *r) {
+  free(r->t);
+  free(r->eta);
+  free(r->pressure);
+  free(r->force);
+  free(r->moment);
+  free(r->force_bound);
+  free(r->moment_bound);
+  free(r->kinetic);
+  free(r->potential);
+  memset(r, 0, sizeof *r);
+}
+
+static int grow(double **a, size_t cap, size_t width) {
+  double *b = realloc(*a, cap * width * sizeof *b);
+  if (!b) return 0;
+  *a = b;
+  return 1;
+}
+
+enum wl_status record_push(struct wl_record *r, struct wl_error *err) {
+  if (r->n == r->cap) {
+    size_t cap = r->cap ? 2 * r->cap : 1024;
+    int ok = grow(&r->t, cap, 1) && grow(&r->eta, cap, (size_t)(r->n_gauges ? r->n_gauges : 1)) &&
+             grow(&r->pressure, cap, (size_t)(r->n_probes ? r->n_probes : 1)) &&
+             grow(&r->force, cap, 1) && grow(&r->moment, cap, 1) &&
+             grow(&r->force_bound, cap, 1) && grow(&r->moment_bound, cap, 1) &&
+             grow(&r->kinetic, cap, 1) &&
+             grow(&r->potential, cap, 1);
+    if (!ok)
+      return wl_error_set(err, WL_ENOMEM, "record: no memory for %zu output samples", cap);
+    r->cap = cap;
+  }
+  r->n++;
+  return WL_OK;
+}
+
+void case_loads_clear(struct wl_case_loads *l) {
+  free(l->force_filtered);
+  free(l->moment_filtered);
+  free(l->force_bound_filtered);
+  free(l->impulse);
+  free(l->impulse_bound);
+  memset(l, 0, sizeof *l);
+}
+
+/* Filter a series, or copy it where it is too short to filter. */
+static enum wl_status filtered(const double *x, size_t n, double dt, double fc, double **out,
+                               struct wl_error *err) {
+  *out = malloc((n ? n : 1) * sizeof **out);
+  if (!*out) return wl_error_set(err, WL_ENOMEM, "loads: no memory for %zu samples", n);
+  if (n < 8 || !(fc > 0 && fc < 0.5 / dt)) {
+    memcpy(*out, x, n * sizeof *x);
+    return WL_OK;
+  }
+  return wl_loads_lowpass(x, n, dt, fc, *out, err);
+}
+
+enum wl_status case_loads_compute(struct wl_case_result *c, struct wl_error *err) {
+  const struct wl_record *r = &c->rec;
+  struct wl_case_loads *l = &c->loads;
+  size_t n = r->n;
+  if (n == 0) return WL_OK;
+  double dt = n > 1 ? (r->t[n - 1] - r->t[0]) / (double)(n - 1) : 1.0;
+  l->cutoff = wl_loads_cutoff(c->c0, c->depth_wall > 0 ? c->depth_wall : c->h, dt);
+  enum wl_status st;
+  if ((st = filtered(r->force, n, dt, l->cutoff, &l->force_filtered, err)) ||
+      (st = filtered(r->moment, n, dt, l->cutoff, &l->moment_filtered, err)) ||
+      (st = filtered(r->force_bound, n, dt, l->cutoff, &l->force_bound_filtered, err)))
+    return st;
+  l->impulse = malloc(n * sizeof *l->impulse);
+  l->impulse_bound = malloc(n * sizeof *l->impulse_bound);
+  double *net = malloc(n * sizeof *net);
+  if (!l->impulse || !l->impulse_bound || !net) {
+    free(net);
+    return wl_error_set(err, WL_ENOMEM, "loads: no memory for %zu samples", n);
+  }
+  for (size_t k = 0; k < n; k++) net[k] = r->force[k] - c->static_force;
+  wl_loads_cumulative(r->t, net, n, l->impulse);
+  for (size_t k = 0; k < n; k++) net[k] = r->force_bound[k] - c->static_force;
+  wl_loads_cumulative(r->t, net, n, l->impulse_bound);
+  free(net);
+  l->impulse_total = l->impulse[n - 1];
+  wl_loads_peak(r->t, l->force_filtered, n, c->static_force, &l->force_peak);
+  wl_loads_peak(r->t, l->moment_filtered, n, c->static_moment, &l->moment_peak);
+  wl_loads_peak(r->t, l->force_bound_filtered, n, c->static_force, &l->force_bound_peak);
+  /* run-up: the last gauge is the one at the wall face */
+  int gw = r->n_gauges - 1;
+  l->runup = -INFINITY;
+  for (size_t k = 0; k < n; k++) {
+    double e = r->eta[k * (size_t)r->n_gauges + (size_t)gw];
+    if (e > l->runup) l->runup = e, l->runup_time = r->t[k];
+  }
+  return WL_OK;
+}

@@ -1,0 +1,424 @@
+/* cpu.c: the OpenMP CPU backend (backend.h): particle arrays in host
+ * memory, one symplectic step = cell rebuild by counting sort, two force
+ * evaluations (step start and half step) with the shared gather physics of
+ * include/wallload/sph/, predictor, corrector and guard. Every parallel
+ * loop writes only to its own particle's outputs and every reduction is a
+ * max or min, so the results do not depend on the thread count. */
+#include <math.h>
+#include <omp.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "wallload/backend.h"
+#include "wallload/sph.h"
+#include "wallload/sph/cells.h"
+#include "wallload/sph/gather.h"
+#include "wallload/sph/guard.h"
+#include "wallload/sph/integrate.h"
+
+struct cpu;
+struct eval_stats;
+typedef void (*block_fn)(const struct cpu *, const struct wl_sph_eval *, int, int,
+                         struct eval_stats *);
+
+struct cpu {
+  struct wl_sph_config cfg;
+  struct wl_sph_const k;
+  struct wl_sph_grid grid;
+  struct wl_particles p;   /* state + work arrays, sorted by cell */
+  struct wl_particles alt; /* second copy of the state fields: target of the sort */
+  int *begin;              /* 2 n_cells + 1: first sorted index of each key */
+  int *cursor;             /* 2 n_cells: scatter positions of the counting sort */
+  unsigned int *key_tmp;   /* keys in sorted order */
+  block_fn block;          /* force loop for this dimension, viscosity and CPU */
+  const char *isa;         /* which build of it */
+  int n_threads;
+};
+
+/* Maxima of one force evaluation. */
+struct eval_stats {
+  double ace2_max, vel2_max, visc_max;
+};
+
+static int threads(const struct cpu *c) { return c->n_threads > 0 ? c->n_threads : omp_get_max_threads(); }
+
+/* ---- cell rebuild ------------------------------------------------------------ */
+
+/* d[i] = s[perm[i]] for elements of es bytes. */
+static void permute(const struct cpu *c, void *d, const void *s, size_t es, const unsigned *perm,
+                    int n) {
+  if (es == 8) {
+    const double *src = s;
+    double *dst = d;
+#pragma omp parallel for schedule(static) num_threads(threads(c))
+    for (int i = 0; i < n; i++) dst[i] = src[perm[i]];
+  } else if (es == 4) {
+    const unsigned int *src = s;
+    unsigned int *dst = d;
+#pragma omp parallel for schedule(static) num_threads(threads(c))
+    for (int i = 0; i < n; i++) dst[i] = src[perm[i]];
+  } else {
+    const unsigned char *src = s;
+    unsigned char *dst = d;
+    for (int i = 0; i < n; i++) dst[i] = src[perm[i]];
+  }
+}
+
+/* Counting sort of all particles by key = group * n_cells + cell (boundary
+ * group 0 first, so boundary particles stay in [0, n_bound)). The sort is
+ * stable, so the order within a cell is the previous order: deterministic. */
+static void rebuild(struct cpu *c) {
+  struct wl_particles *p = &c->p;
+  const int n = p->n, nc = c->grid.n_cells, nk = 2 * nc, dim = p->dim;
+  const struct wl_sph_grid *g = &c->grid;
+#pragma omp parallel for schedule(static) num_threads(threads(c))
+  for (int i = 0; i < n; i++) {
+    const unsigned group = p->kind[i] == WL_KIND_FLUID ? 1u : 0u;
+    p->key[i] = group * (unsigned)nc + (unsigned)wl_sph_cell_of(dim, g, p->pos, i);
+  }
+  int *begin = c->begin, *cursor = c->cursor;
+  memset(begin, 0, sizeof(int) * (size_t)(nk + 1));
+  for (int i = 0; i < n; i++) begin[p->key[i] + 1]++;
+  for (int b = 0; b < nk; b++) begin[b + 1] += begin[b];
+  memcpy(cursor, begin, sizeof(int) * (size_t)nk);
+  for (int i = 0; i < n; i++) p->perm[cursor[p->key[i]]++] = (unsigned)i;
+
+  /* permute every state field (field table) into alt, then swap the arrays */
+  int nf;
+  const struct wl_field_desc *fd = wl_particles_fields(&nf);
+  const unsigned *perm = p->perm;
+  for (int f = 0; f < nf; f++) {
+    if (!(fd[f].flags & WL_FIELD_SORT)) continue;
+    for (int comp = 0; comp < wl_field_components(&fd[f], dim); comp++) {
+      void **src = (void **)((char *)p + fd[f].offset) + comp;
+      void **dst = (void **)((char *)&c->alt + fd[f].offset) + comp;
+      permute(c, *dst, *src, wl_field_type_size(fd[f].type), perm, n);
+      void *tmp = *src;
+      *src = *dst;
+      *dst = tmp;
+    }
+  }
+#pragma omp parallel for schedule(static) num_threads(threads(c))
+  for (int i = 0; i < n; i++) c->key_tmp[i] = p->key[perm[i]];
+  unsigned int *tmp = p->key;
+  p->key = c->key_tmp;
+  c->key_tmp = tmp;
+}
+
+/* ---- force evaluation ------------------------------------------------------ */
+
+/* Forces on the particles of cells (keys) [c0, c1), WL_SPH_LANES at a time,
+ * and the maxima the time step needs; dim and laminar are compile-time
+ * constants in each instantiation below. Out of line (not inside the
+ * OpenMP region), which is where GCC vectorises the lane loops; cloned for
+ * AVX2 and AVX-512 (chosen at run time). The lanes do not reassociate any
+ * sum, so every clone gives the same bits (ISO C mode: no FMA contraction). */
+static WL_INLINE void block_generic(const int dim, const int laminar, const struct cpu *c,
+                                    const struct wl_sph_eval *e, int c0, int c1,
+                                    struct eval_stats *st) {
+  const struct wl_particles *p = &c->p;
+  const int nb = p->n_bound;
+  double ace2 = st->ace2_max, vel2 = st->vel2_max, visc = st->visc_max;
+  const int nc = c->grid.n_cells, nx = c->grid.n[0];
+  const int i_stop = e->begin[c1];
+  for (int i0 = e->begin[c0]; i0 < i_stop;) {
+    /* a block: up to WL_SPH_LANES consecutive particles in at most two
+     * neighbouring cells of one row and group (keys never straddle groups:
+     * the boundary keys end at nc) */
+    const int key0 = (int)e->key[i0];
+    const int cell0 = key0 % nc;
+    const int key_max =
+        (cell0 % nx) + 1 < nx && key0 + 1 < c1 && key0 + 1 != nc ? key0 + 1 : key0;
+    int m = 1;
+    while (m < WL_SPH_LANES && i0 + m < i_stop && (int)e->key[i0 + m] <= key_max) m++;
+    const int span = (int)e->key[i0 + m - 1] - key0;
+    wl_sph_gather_block(dim, laminar, WL_SPH_LANES, &c->k, &c->grid, e, nb, i0, m, span);
+    for (int i = i0; i < i0 + m; i++) {
+      visc = visc > e->visc[i] ? visc : e->visc[i];
+      if (i >= nb) {
+        double a2 = 0, v2 = 0;
+        for (int a = 0; a < dim; a++) {
+          a2 += (double)e->ace[a][i] * e->ace[a][i];
+          v2 += (double)e->vel[a][i] * e->vel[a][i];
+        }
+        ace2 = ace2 > a2 ? ace2 : a2;
+        vel2 = vel2 > v2 ? vel2 : v2;
+      }
+    }
+    i0 += m;
+  }
+  st->ace2_max = ace2;
+  st->vel2_max = vel2;
+  st->visc_max = visc;
+}
+
+/* Each instantiation in three builds on x86-64 (AVX-512 with VL, AVX2,
+ * baseline SSE2), picked at run time by select_block; elsewhere one. The
+ * AVX-512 build needs VL: with AVX-512F alone GCC keeps the 8 lanes in
+ * masked 512-bit registers and runs at half speed (measured). */
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
+#define HAVE_ISA_BUILDS 1
+#define BLOCK(name, dim, laminar)                                                                 \
+  static __attribute__((noinline, target("avx2,avx512f,avx512vl,avx512bw,avx512dq"))) void       \
+      name##_v4(const struct cpu *c, const struct wl_sph_eval *e, int c0, int c1,                \
+                struct eval_stats *st) {                                                         \
+    block_generic(dim, laminar, c, e, c0, c1, st);                                                \
+  }                                                                                               \
+  static __attribute__((noinline, target("avx2"))) void name##_v3(                               \
+      const struct cpu *c, const struct wl_sph_eval *e, int c0, int c1, struct eval_stats *st) { \
+    block_generic(dim, laminar, c, e, c0, c1, st);                                                \
+  }                                                                                               \
+  static __attribute__((noinline)) void name##_v1(const struct cpu *c,                           \
+                                                  const struct wl_sph_eval *e, int c0, int c1,   \
+                                                  struct eval_stats *st) {                       \
+    block_generic(dim, laminar, c, e, c0, c1, st);                                                \
+  }
+#else
+#define HAVE_ISA_BUILDS 0
+#define BLOCK(name, dim, laminar)                                                                 \
+  static void name##_v1(const struct cpu *c, const struct wl_sph_eval *e, int c0, int c1,        \
+                        struct eval_stats *st) {                                                 \
+    block_generic(dim, laminar, c, e, c0, c1, st);                                                \
+  }
+#endif
+BLOCK(block_2a, 2, 0)
+BLOCK(block_2l, 2, 1)
+BLOCK(block_3a, 3, 0)
+BLOCK(block_3l, 3, 1)
+#undef BLOCK
+
+/* The force loop for this run's dimension and viscosity on this CPU. */
+static block_fn select_block(int dim, int laminar, const char **isa) {
+  const int v = dim * 2 + laminar; /* 4, 5, 6, 7 */
+#if HAVE_ISA_BUILDS
+  __builtin_cpu_init();
+  if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+      __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512dq")) {
+    *isa = "avx512";
+    return v == 4 ? block_2a_v4 : v == 5 ? block_2l_v4 : v == 6 ? block_3a_v4 : block_3l_v4;
+  }
+  if (__builtin_cpu_supports("avx2")) {
+    *isa = "avx2";
+    return v == 4 ? block_2a_v3 : v == 5 ? block_2l_v3 : v == 6 ? block_3a_v3 : block_3l_v3;
+  }
+#endif
+  *isa = "baseline";
+  return v == 4 ? block_2a_v1 : v == 5 ? block_2l_v1 : v == 6 ? block_3a_v1 : block_3l_v1;
+}
+
+/* Cells per OpenMP work chunk. */
+enum { CELLS_PER_CHUNK = 32 };
+
+/* One force evaluation at state (pos, vel, rho): pressures, then the gather
+ * over all cells in chunks; the maxima go into st. */
+static void evaluate(struct cpu *c, double *const *pos, wl_real *const *vel, wl_real *rho,
+                     struct eval_stats *st) {
+  struct wl_particles *p = &c->p;
+  const struct wl_sph_const *k = &c->k;
+  const int n = p->n, dim = p->dim;
+  struct wl_sph_eval e;
+  for (int a = 0; a < WL_SPH_DIM_MAX; a++) {
+    e.pos[a] = a < dim ? pos[a] : NULL;
+    e.vel[a] = a < dim ? vel[a] : NULL;
+    e.ace[a] = a < dim ? p->ace[a] : NULL;
+  }
+  e.rho = rho;
+  e.press = p->press;
+  e.key = p->key;
+  e.begin = c->begin;
+  e.ar = p->ar;
+  e.visc = p->visc;
+  const block_fn block = c->block;
+  wl_real *press = p->press;
+  const int n_keys = 2 * c->grid.n_cells;
+  const int n_chunks = (n_keys + CELLS_PER_CHUNK - 1) / CELLS_PER_CHUNK;
+#pragma omp parallel num_threads(threads(c))
+  {
+#pragma omp for schedule(static)
+    for (int i = 0; i < n; i++) press[i] = wl_sph_eos_p(k, rho[i]);
+    struct eval_stats mine = {0, 0, 0};
+#pragma omp for schedule(dynamic, 1)
+    for (int b = 0; b < n_chunks; b++) {
+      const int c0 = b * CELLS_PER_CHUNK;
+      block(c, &e, c0, c0 + CELLS_PER_CHUNK < n_keys ? c0 + CELLS_PER_CHUNK : n_keys, &mine);
+    }
+#pragma omp critical
+    {
+      st->ace2_max = st->ace2_max > mine.ace2_max ? st->ace2_max : mine.ace2_max;
+      st->vel2_max = st->vel2_max > mine.vel2_max ? st->vel2_max : mine.vel2_max;
+      st->visc_max = st->visc_max > mine.visc_max ? st->visc_max : mine.visc_max;
+    }
+  }
+}
+
+/* dt from the maxima of the evaluations of a step (DualSPHysics DtVariable):
+ * CFL min(sqrt(h/|a|max), h/(max(c0, 10|v|max) + max h|v.r|/(r^2+eta^2))). */
+static void fill_dt(const struct cpu *c, const struct eval_stats *st, struct wl_sph_step_out *out) {
+  const double h = c->k.h_d, c0 = c->k.c0_d;
+  const double amax = sqrt(st->ace2_max), vmax = sqrt(st->vel2_max);
+  out->ace_max = amax;
+  out->vel_max = vmax;
+  out->dt_force = amax > 0 ? sqrt(h / amax) : INFINITY;
+  out->dt_cv = h / ((c0 > 10 * vmax ? c0 : 10 * vmax) + st->visc_max);
+  out->dt_next = c->k.cfl * (out->dt_force < out->dt_cv ? out->dt_force : out->dt_cv);
+}
+
+/* ---- guard ------------------------------------------------------------------- */
+
+static void guard(struct cpu *c, struct wl_sph_step_out *out) {
+  const struct wl_particles *p = &c->p;
+  const int n = p->n, dim = p->dim;
+  int first = n;
+#pragma omp parallel for schedule(static) num_threads(threads(c)) reduction(min : first)
+  for (int i = 0; i < n; i++) {
+    int w = -1;
+    if (wl_sph_guard(dim, &c->k, p, c->cfg.lo, c->cfg.hi, c->cfg.walls, c->cfg.n_walls, i, &w) &&
+        i < first)
+      first = i;
+  }
+  out->fault = WL_SPH_FAULT_NONE;
+  if (first == n) return;
+  int w = -1;
+  out->fault = wl_sph_guard(dim, &c->k, p, c->cfg.lo, c->cfg.hi, c->cfg.walls, c->cfg.n_walls,
+                            first, &w);
+  out->fault_index = first;
+  out->fault_id = p->id[first];
+  out->fault_kind = p->kind[first];
+  out->fault_wall = w;
+  for (int a = 0; a < WL_SPH_DIM_MAX; a++) {
+    out->fault_pos[a] = a < dim ? p->pos[a][first] : 0;
+    out->fault_vel[a] = a < dim ? p->vel[a][first] : 0;
+  }
+  out->fault_rho = p->rho[first];
+}
+
+/* ---- the backend operations ------------------------------------------------- */
+
+static void cpu_free(void *ctx) {
+  struct cpu *c = ctx;
+  if (!c) return;
+  wl_particles_clear(&c->p);
+  wl_particles_clear(&c->alt);
+  free(c->begin);
+  free(c->cursor);
+  free(c->key_tmp);
+  free(c);
+}
+
+static enum wl_status cpu_step(void *ctx, const struct wl_sph_step_in *in,
+                               struct wl_sph_step_out *out, struct wl_error *err) {
+  struct cpu *c = ctx;
+  struct wl_particles *p = &c->p;
+  const int n = p->n, dim = p->dim;
+  const double dt = in->dt;
+  (void)err;
+  memset(out, 0, sizeof *out);
+  struct eval_stats st = {0, 0, 0};
+
+  rebuild(c);
+  evaluate(c, p->pos, p->vel, p->rho, &st);
+#pragma omp parallel for schedule(static) num_threads(threads(c))
+  for (int i = 0; i < n; i++) wl_sph_predict(dim, &c->k, p, dt, (const double(*)[WL_SPH_DIM_MAX])in->body_vel, i);
+  evaluate(c, p->pos_h, p->vel_h, p->rho_h, &st);
+#pragma omp parallel for schedule(static) num_threads(threads(c))
+  for (int i = 0; i < n; i++) wl_sph_correct(dim, &c->k, p, dt, i);
+  fill_dt(c, &st, out);
+  guard(c, out);
+  return WL_OK;
+}
+
+static enum wl_status cpu_download(void *ctx, struct wl_particles *host, struct wl_error *err) {
+  struct cpu *c = ctx;
+  return wl_particles_copy_state(host, &c->p, err);
+}
+
+static enum wl_status cpu_init(void **ctx, const struct wl_sph_config *cfg,
+                               const struct wl_sph_const *k, const struct wl_particles *host,
+                               struct wl_sph_step_out *out, struct wl_error *err) {
+  *ctx = NULL;
+  const int dim = cfg->prm.dim;
+  if (host->dim != dim)
+    return wl_error_set(err, WL_EINPUT, "cpu backend: particles are %dD, configuration %dD",
+                        host->dim, dim);
+  for (int i = 0; i < host->n; i++) {
+    const int bound = host->kind[i] != WL_KIND_FLUID;
+    if (bound != (i < host->n_bound))
+      return wl_error_set(err, WL_EINPUT,
+                          "cpu backend: particle %d (id %u) is %s but the first %d particles must "
+                          "be the boundary ones and the rest fluid",
+                          i, host->id[i], bound ? "boundary" : "fluid", host->n_bound);
+    if (host->kind[i] > WL_KIND_MOVING)
+      return wl_error_set(err, WL_EINPUT, "cpu backend: particle %d has kind %d; valid 0, 1, 2", i,
+                          host->kind[i]);
+    if (host->kind[i] == WL_KIND_MOVING && (host->body[i] < 1 || host->body[i] > WL_SPH_BODIES_MAX))
+      return wl_error_set(err, WL_EINPUT, "cpu backend: moving particle %d has body %d; valid 1..%d",
+                          i, host->body[i], WL_SPH_BODIES_MAX);
+  }
+  struct cpu *c = calloc(1, sizeof *c);
+  if (!c) return wl_error_set(err, WL_ENOMEM, "cpu backend: out of memory");
+  c->cfg = *cfg;
+  c->k = *k;
+  c->n_threads = cfg->n_threads;
+  c->block = select_block(dim, k->visc == WL_SPH_VISC_LAMINAR, &c->isa);
+  /* the grid: cells of side 2h over the domain box */
+  struct wl_sph_grid *g = &c->grid;
+  g->cell = 2.0 * k->h_d;
+  g->inv_cell = 1.0 / g->cell;
+  double cells = 1;
+  for (int a = 0; a < WL_SPH_DIM_MAX; a++) {
+    g->lo[a] = a < dim ? cfg->lo[a] : 0;
+    g->n[a] = 1;
+    if (a < dim) {
+      const double len = cfg->hi[a] - cfg->lo[a];
+      if (!(len > 0) || !isfinite(len)) {
+        cpu_free(c);
+        return wl_error_set(err, WL_EINPUT, "cpu backend: domain box axis %d is [%g, %g]; need lo < hi",
+                            a, cfg->lo[a], cfg->hi[a]);
+      }
+      g->n[a] = (int)ceil(len * g->inv_cell);
+      if (g->n[a] < 1) g->n[a] = 1;
+      cells *= g->n[a];
+    }
+  }
+  if (cells > 2e8) {
+    const double side = g->cell;
+    cpu_free(c);
+    return wl_error_set(err, WL_EINPUT, "cpu backend: the domain box needs %.3g cells of %g m; at "
+                        "most 2e8 (shrink the box)", cells, side);
+  }
+  g->n_cells = (int)cells;
+  enum wl_status st = wl_particles_alloc(&c->p, dim, host->n, 1, err);
+  if (st == WL_OK) st = wl_particles_alloc(&c->alt, dim, host->n, 0, err);
+  if (st == WL_OK) st = wl_particles_copy_state(&c->p, host, err);
+  if (st != WL_OK) {
+    cpu_free(c);
+    return st;
+  }
+  c->begin = malloc(sizeof(int) * (size_t)(2 * g->n_cells + 1));
+  c->cursor = malloc(sizeof(int) * (size_t)(2 * g->n_cells));
+  c->key_tmp = malloc(sizeof(unsigned int) * (size_t)(host->n > 0 ? host->n : 1));
+  if (!c->begin || !c->cursor || !c->key_tmp) {
+    const double mb = (2.0 * g->n_cells + 1) * sizeof(int) / 1048576.0, side = g->cell;
+    const int nc = g->n_cells;
+    cpu_free(c);
+    return wl_error_set(err, WL_ENOMEM, "cpu backend: cannot allocate the cell index: 2 x %.1f MiB "
+                        "(%d cells of %g m)", mb, nc, side);
+  }
+  /* forces of the initial state give the first dt */
+  memset(out, 0, sizeof *out);
+  struct eval_stats es = {0, 0, 0};
+  rebuild(c);
+  evaluate(c, c->p.pos, c->p.vel, c->p.rho, &es);
+  fill_dt(c, &es, out);
+  guard(c, out);
+  *ctx = c;
+  return WL_OK;
+}
+
+const struct wl_backend_ops wl_backend_cpu_ops = {
+    .name = "cpu",
+    .init = cpu_init,
+    .step = cpu_step,
+    .download = cpu_download,
+    .free = cpu_free,
+};

@@ -1,0 +1,252 @@
+/* flume.c: scenario + plan -> particles and run configuration of one load
+ * case (geometry in flume.h). */
+#include "wallload/flume.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "wallload/explosion.h"
+#include "wallload/scene.h"
+#include "wallload/units.h"
+#include "wallload/waves.h"
+
+/* Free surface of the initial condition, z = depth + eta(x). */
+struct surface {
+  enum wl_load_case load;
+  double depth;
+  const struct wl_solitary *wave; /* solitary initial condition */
+  double crest_x;
+  enum wl_crater_shape shape; /* explosion */
+  double eta0, r0, xc;
+};
+
+static double surface_z(double x, void *user) {
+  const struct surface *s = user;
+  double eta = 0.0;
+  if (s->wave) {
+    eta = wl_waves_solitary_eta(s->wave, x - s->crest_x);
+  } else if (s->load == WL_CASE_EXPLOSION) {
+    struct wl_error ignore;
+    wl_error_clear(&ignore);
+    wl_explosion_eta(s->shape, s->eta0, s->r0, fabs(x - s->xc), &eta, &ignore);
+  }
+  return s->depth + eta;
+}
+
+/* Velocity of the solitary wave's field; z measured up from the flume
+ * floor, which is the wave's bed where it is placed (over the flat part). */
+static void solitary_velocity(const double *x, double *v, void *user) {
+  const struct surface *s = user;
+  double u, w;
+  wl_waves_solitary_velocity(s->wave, x[0] - s->crest_x, x[1], &u, &w);
+  v[0] = u;
+  v[1] = w;
+}
+
+const char *wl_flume_case_name(enum wl_load_case load) {
+  switch (load) {
+  case WL_CASE_SOLITARY: return "solitary";
+  case WL_CASE_EXPLOSION: return "explosion";
+  case WL_CASE_STILL: return "still";
+  }
+  return "?";
+}
+
+void wl_flume_clear(struct wl_flume *f) {
+  if (!f) return;
+  wl_particles_clear(&f->particles);
+  memset(f, 0, sizeof *f);
+}
+
+static void set_params(const struct wl_scenario *s, const struct wl_plan *plan, double h_max,
+                       struct wl_sph_config *cfg) {
+  wl_sph_config_default(cfg, plan->dims, plan->dp, h_max);
+  struct wl_sph_params *prm = &cfg->prm;
+  prm->coefh = s->numerics.coefh.q.si;
+  prm->coefsound = s->numerics.coefsound.q.si;
+  prm->cfl = s->numerics.cfl.q.si;
+  prm->alpha = s->numerics.alpha.q.si;
+  prm->visc = s->numerics.viscosity.choice == WL_VISCOSITY_LAMINAR ? WL_SPH_VISC_LAMINAR
+                                                                    : WL_SPH_VISC_ARTIFICIAL;
+  prm->nu = s->numerics.nu.q.si;
+  prm->delta = s->numerics.density_diffusion.q.si;
+  if (prm->delta == 0.0) prm->ddt = WL_SPH_DDT_NONE;
+  prm->rho0 = plan->rho;
+  prm->g = plan->g;
+  if (!s->run.threads.is_auto) cfg->n_threads = (int)s->run.threads.q.si;
+}
+
+enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan *plan,
+                              enum wl_load_case load, struct wl_flume *f, struct wl_error *err) {
+  memset(f, 0, sizeof *f);
+  f->load = load;
+  if (plan->dims != 2)
+    return wl_error_set(err, WL_EUNSUPPORTED,
+                        "%s: domain.dimensions: 3D flumes are not built yet; use 2", s->path);
+  if (s->numerics.shifting.choice != 0)
+    return wl_error_set(err, WL_EUNSUPPORTED,
+                        "%s: numerics.shifting: on is not implemented yet; use off", s->path);
+  if (load == WL_CASE_SOLITARY && !plan->solitary.present)
+    return wl_error_set(err, WL_EINPUT, "%s: the scenario has no solitary load case", s->path);
+  if (load == WL_CASE_EXPLOSION && !plan->explosion.present)
+    return wl_error_set(err, WL_EINPUT, "%s: the scenario has no explosion load case", s->path);
+
+  const double dp = plan->dp, depth = plan->h;
+  const double xw = s->wall.x.q.si, L = s->domain.length.q.si;
+  f->depth = depth;
+  f->x_wall = xw;
+  f->z_toe = wl_scenario_bed_z(s, xw);
+  f->z_crest = f->z_toe + s->wall.height.q.si;
+  f->depth_wall = depth - f->z_toe;
+  f->static_force = 0.5 * plan->rho * plan->g * f->depth_wall * f->depth_wall;
+  f->static_moment = plan->rho * plan->g * pow(f->depth_wall, 3) / 6.0;
+
+  /* What rises above still water decides c0 and the top of the domain. */
+  double rise = 0.0, thrown_top = 0.0;
+  struct surface surf = {load, depth, NULL, 0, 0, 0, 0, 0};
+  const struct wl_plan_solitary *ps = &plan->solitary;
+  const struct wl_plan_explosion *px = &plan->explosion;
+  if (load == WL_CASE_SOLITARY) {
+    rise = ps->wave.H;
+    f->has_paddle = ps->paddle;
+    if (!ps->paddle) {
+      surf.wave = &ps->wave;
+      surf.crest_x = ps->crest_x0;
+    }
+    f->t_end = ps->end_time;
+  } else if (load == WL_CASE_EXPLOSION) {
+    surf.shape = px->model_thrown ? WL_CRATER_SHAPE_QUADRATIC : px->shape;
+    surf.eta0 = px->eta0;
+    surf.r0 = px->r0;
+    surf.xc = px->x_center;
+    rise = 2.0 * px->eta0; /* a lip of up to 2 eta0 (plane lip) */
+    f->t_end = px->end_time;
+  } else {
+    f->t_end = s->run.end_time.is_auto ? 10.0 : s->run.end_time.q.si;
+  }
+
+  struct wl_explosion_part parts[WL_EXPLOSION_PARTS_MAX];
+  int n_parts = 0;
+  if (load == WL_CASE_EXPLOSION && px->model_thrown) {
+    double mass, rc;
+    enum wl_status st = wl_explosion_thrown_mass(WL_CRATER_SHAPE_QUADRATIC, 2, plan->rho, px->eta0,
+                                                 px->r0, 0.0, &mass, err);
+    if (!st) st = wl_explosion_inner_radius(WL_CRATER_SHAPE_QUADRATIC, px->r0, &rc, err);
+    if (!st)
+      st = wl_explosion_thrown_split(2, plan->rho, rc, mass, px->energy, px->thrown_parts, 0.0,
+                                     parts, err);
+    if (st) {
+      wl_error_prefix(err, "%s: loads.explosion (thrown mass): ", s->path);
+      return st;
+    }
+    n_parts = px->thrown_parts;
+    for (int i = 0; i < n_parts; i++) {
+      double top = parts[i].z + 0.5 * parts[i].height + parts[i].w * parts[i].w / (2 * plan->g);
+      if (top > thrown_top) thrown_top = top;
+    }
+  }
+
+  set_params(s, plan, depth + rise, &f->cfg);
+  struct wl_sph_const k;
+  enum wl_status st = wl_sph_const_make(&f->cfg.prm, &k, err);
+  if (st) return st;
+  int layers = (int)ceil(2.0 * (double)k.h / dp);
+  double thick = layers * dp;
+
+  double z_top = fmax(f->z_crest, depth) + fmax(3.0 * rise, 0.5 * depth) + thrown_top;
+  f->cfg.lo[0] = -thick - 2 * dp;
+  f->cfg.hi[0] = L + thick + 2 * dp;
+  f->cfg.lo[1] = -thick - 2 * dp;
+  f->cfg.hi[1] = z_top + thick + 2 * dp;
+
+  struct wl_scene sc;
+  wl_scene_init(&sc, &k, 0.0, 0.0);
+
+  /* Fixed boundary: (left wall,) bed with its bathymetry, wall face, land
+   * at crest level, end wall; one polyline so its corners are mitred. */
+  enum { MAXV = WL_SCENARIO_MAX_BED + 8 };
+  double vx[MAXV], vz[MAXV];
+  int nv = 0;
+  if (!f->has_paddle) {
+    vx[nv] = 0.0, vz[nv++] = z_top;
+    vx[nv] = 0.0, vz[nv++] = 0.0;
+  } else {
+    vx[nv] = -thick - dp, vz[nv++] = 0.0; /* under the piston's layers */
+  }
+  for (int i = 0; i < s->n_bed; i++) {
+    double xb = s->bed[i].from.q.si;
+    if (xb <= vx[nv - 1]) continue;
+    vx[nv] = xb, vz[nv++] = wl_scenario_bed_z(s, xb);
+  }
+  vx[nv] = xw, vz[nv++] = f->z_toe;
+  vx[nv] = xw, vz[nv++] = f->z_crest;
+  vx[nv] = L, vz[nv++] = f->z_crest;
+  vx[nv] = L, vz[nv++] = z_top;
+  st = wl_scene_boundary_polyline(&sc, vx, vz, nv, layers, WL_KIND_FIXED, 0, &f->cfg, err);
+  if (!st && f->has_paddle)
+    st = wl_scene_piston(&sc, 0.0, 0.0, z_top, layers, WL_FLUME_BODY_PADDLE, err);
+
+  /* Fluid between the left end and the wall, under the initial surface. */
+  double bx[WL_SCENARIO_MAX_BED + 2], bz[WL_SCENARIO_MAX_BED + 2];
+  int nb = 0;
+  bx[nb] = 0.0, bz[nb++] = 0.0;
+  for (int i = 0; i < s->n_bed; i++) {
+    double xb = s->bed[i].from.q.si;
+    if (xb <= 0.0) continue;
+    bx[nb] = xb, bz[nb++] = wl_scenario_bed_z(s, xb);
+  }
+  bx[nb] = xw, bz[nb++] = f->z_toe;
+  if (!st) st = wl_scene_fluid_surface(&sc, 0.0, xw, bx, bz, nb, surface_z, &surf, err);
+  if (!st && surf.wave) wl_scene_fluid_velocity(&sc, solitary_velocity, &surf);
+  for (int i = 0; !st && i < n_parts; i++) {
+    const struct wl_explosion_part *pt = &parts[i];
+    double lo[2] = {px->x_center + pt->s_in, depth + pt->z - 0.5 * pt->height};
+    double hi[2] = {px->x_center + pt->s_out, depth + pt->z + 0.5 * pt->height};
+    int before = sc.n[1];
+    st = wl_scene_fluid_block(&sc, lo, hi, hi[1], err);
+    for (int j = before; !st && j < sc.n[1]; j++) {
+      sc.vel[1][2 * j] = pt->u;
+      sc.vel[1][2 * j + 1] = pt->w;
+    }
+  }
+  if (!st) wl_scene_hydrostatic_boundary(&sc, depth);
+  /* The structure: every fixed boundary particle behind the face plane,
+   * including the bed layers under the toe, since fluid at the toe corner
+   * pushes on those too (leaving them out loses a few % of the force). */
+  for (int j = 0; !st && j < sc.n[0]; j++) {
+    double x = sc.pos[0][2 * j];
+    if (sc.kind[0][j] == WL_KIND_FIXED && x > xw) sc.body[0][j] = WL_FLUME_BODY_WALL;
+  }
+  if (!st) st = wl_scene_build(&sc, &f->particles, err);
+  wl_scene_clear(&sc);
+  if (st) {
+    wl_error_prefix(err, "%s: building the %s case: ", s->path, wl_flume_case_name(load));
+    wl_flume_clear(f);
+    return st;
+  }
+
+  if (f->has_paddle) {
+    const struct wl_goring *g = &ps->goring;
+    f->n_paddle = WL_FLUME_PADDLE_SAMPLES;
+    for (int i = 0; i < f->n_paddle; i++) {
+      double t = g->duration * i / (f->n_paddle - 1);
+      f->paddle_t[i] = t;
+      f->paddle_x[i] = wl_waves_goring_position(g, t);
+    }
+  }
+
+  int n_probes = (int)s->wall.probes.q.si;
+  if (n_probes > WL_FLUME_MAX_PROBES) n_probes = WL_FLUME_MAX_PROBES;
+  f->n_probes = n_probes;
+  f->probe_x = xw - 0.5 * dp;
+  for (int i = 0; i < n_probes; i++)
+    f->probe_z[i] = f->z_toe + (i + 0.5) * (f->z_crest - f->z_toe) / n_probes;
+  for (int i = 0; i < s->n_gauges; i++) {
+    f->gauge_x[i] = s->gauges[i].x.q.si;
+    snprintf(f->gauge_name[i], sizeof f->gauge_name[i], "%s", s->gauges[i].name.text);
+  }
+  f->n_gauges = s->n_gauges + 1;
+  f->gauge_x[s->n_gauges] = f->probe_x;
+  snprintf(f->gauge_name[s->n_gauges], sizeof f->gauge_name[0], "wall");
+  return WL_OK;
+}

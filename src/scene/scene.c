@@ -1,0 +1,309 @@
+/* scene.c: particle generation for flumes (scene.h): fluid blocks, fluid
+ * under a free surface over a piecewise-linear bed, boundary polylines with
+ * mitred layers, the piston paddle, hydrostatic densities. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "wallload/scene.h"
+#include "wallload/sph.h"
+
+/* Tolerance of lattice tests, relative to dp: points exactly on a face are
+ * decided the same way whatever the rounding of their coordinates. */
+#define LATTICE_TOL 1e-9
+
+void wl_scene_init(struct wl_scene *sc, const struct wl_sph_const *k, double y0, double y1) {
+  memset(sc, 0, sizeof *sc);
+  sc->k = *k;
+  sc->dim = k->dim;
+  sc->dp = k->dp;
+  sc->y0 = y0;
+  sc->y1 = y1;
+}
+
+void wl_scene_clear(struct wl_scene *sc) {
+  if (!sc) return;
+  for (int g = 0; g < 2; g++) {
+    free(sc->pos[g]);
+    free(sc->vel[g]);
+    free(sc->rho[g]);
+    free(sc->kind[g]);
+    free(sc->body[g]);
+  }
+  memset(sc, 0, sizeof *sc);
+}
+
+double wl_scene_rho_hydro(const struct wl_sph_const *k, double depth) {
+  if (!(depth > 0)) return k->rho0;
+  const double rho0 = k->rho0, B = k->B;
+  const double g = -(double)k->gravity[k->dim - 1];
+  return rho0 * pow(1.0 + rho0 * g * depth / B, 1.0 / 7.0);
+}
+
+/* Append one particle to group g (0 boundary, 1 fluid). */
+static enum wl_status push(struct wl_scene *sc, int g, const double *x, double rho, int kind,
+                           int body, struct wl_error *err) {
+  const int dim = sc->dim;
+  if (sc->n[g] == sc->cap[g]) {
+    const int cap = sc->cap[g] ? 2 * sc->cap[g] : 1024;
+    if (cap <= sc->cap[g] || cap > 1 << 30)
+      return wl_error_set(err, WL_ENOMEM, "scene: more than 2^30 particles");
+    double *p = realloc(sc->pos[g], sizeof(double) * (size_t)dim * (size_t)cap);
+    if (p) sc->pos[g] = p;
+    double *v = p ? realloc(sc->vel[g], sizeof(double) * (size_t)dim * (size_t)cap) : NULL;
+    if (v) sc->vel[g] = v;
+    double *r = v ? realloc(sc->rho[g], sizeof(double) * (size_t)cap) : NULL;
+    if (r) sc->rho[g] = r;
+    unsigned char *kd = r ? realloc(sc->kind[g], (size_t)cap) : NULL;
+    if (kd) sc->kind[g] = kd;
+    unsigned char *bd = kd ? realloc(sc->body[g], (size_t)cap) : NULL;
+    if (bd) sc->body[g] = bd;
+    if (!bd)
+      return wl_error_set(err, WL_ENOMEM, "scene: out of memory for %d %s particles (%.1f MiB)", cap,
+                          g ? "fluid" : "boundary", (double)cap * (16.0 * dim + 10) / 1048576.0);
+    sc->cap[g] = cap;
+  }
+  const int i = sc->n[g]++;
+  for (int a = 0; a < dim; a++) {
+    sc->pos[g][(size_t)i * dim + a] = x[a];
+    sc->vel[g][(size_t)i * dim + a] = 0;
+  }
+  sc->rho[g][i] = rho;
+  sc->kind[g][i] = (unsigned char)kind;
+  sc->body[g][i] = (unsigned char)body;
+  return WL_OK;
+}
+
+/* Lattice count of (i + 1/2) dp points in [a, b] and the first point. */
+static int lattice(double a, double b, double dp, double *first) {
+  const long n = (long)floor((b - a) / dp + LATTICE_TOL);
+  *first = a + 0.5 * dp;
+  return n > 0 ? (int)n : 0;
+}
+
+enum wl_status wl_scene_fluid_block(struct wl_scene *sc, const double *lo, const double *hi,
+                                    double eta, struct wl_error *err) {
+  const struct wl_sph_const *k = &sc->k;
+  const int dim = sc->dim;
+  const double dp = sc->dp;
+  int n[3] = {1, 1, 1};
+  double x0[3] = {0, 0, 0};
+  for (int a = 0; a < dim; a++) {
+    if (!(hi[a] > lo[a]))
+      return wl_error_set(err, WL_EINPUT, "scene fluid block: axis %d is [%g, %g] m; need lo < hi", a,
+                          lo[a], hi[a]);
+    n[a] = lattice(lo[a], hi[a], dp, &x0[a]);
+    if (n[a] == 0)
+      return wl_error_set(err, WL_EINPUT, "scene fluid block: axis %d is %g m long, less than dp = "
+                          "%g m", a, hi[a] - lo[a], dp);
+  }
+  double x[3];
+  for (int iz = 0; iz < n[dim - 1]; iz++)
+    for (int iy = 0; iy < (dim == 3 ? n[1] : 1); iy++)
+      for (int ix = 0; ix < n[0]; ix++) {
+        x[0] = x0[0] + ix * dp;
+        if (dim == 3) x[1] = x0[1] + iy * dp;
+        x[dim - 1] = x0[dim - 1] + iz * dp;
+        enum wl_status st =
+            push(sc, 1, x, wl_scene_rho_hydro(k, eta - x[dim - 1]), WL_KIND_FLUID, 0, err);
+        if (st != WL_OK) return st;
+      }
+  return WL_OK;
+}
+
+/* Bed height at x by linear interpolation (held beyond the ends). */
+static double bed_at(const double *bx, const double *bz, int n, double x) {
+  if (x <= bx[0]) return bz[0];
+  if (x >= bx[n - 1]) return bz[n - 1];
+  int i = 0;
+  while (i < n - 2 && x > bx[i + 1]) i++;
+  const double s = (x - bx[i]) / (bx[i + 1] - bx[i]);
+  return bz[i] + s * (bz[i + 1] - bz[i]);
+}
+
+/* Distance from (x, z) to the polyline. */
+static double polyline_dist(const double *bx, const double *bz, int n, double x, double z) {
+  double best = INFINITY;
+  for (int i = 0; i + 1 < n; i++) {
+    const double tx = bx[i + 1] - bx[i], tz = bz[i + 1] - bz[i];
+    const double len2 = tx * tx + tz * tz;
+    double s = len2 > 0 ? ((x - bx[i]) * tx + (z - bz[i]) * tz) / len2 : 0;
+    s = s < 0 ? 0 : s > 1 ? 1 : s;
+    const double dx = x - (bx[i] + s * tx), dz = z - (bz[i] + s * tz);
+    const double d = sqrt(dx * dx + dz * dz);
+    if (d < best) best = d;
+  }
+  return best;
+}
+
+enum wl_status wl_scene_fluid_surface(struct wl_scene *sc, double x0, double x1,
+                                      const double *bed_x, const double *bed_z, int n_bed,
+                                      wl_scene_eta_fn eta, void *user, struct wl_error *err) {
+  const struct wl_sph_const *k = &sc->k;
+  const int dim = sc->dim;
+  const double dp = sc->dp;
+  if (n_bed < 1 || !bed_x || !bed_z || !eta)
+    return wl_error_set(err, WL_EINPUT, "scene fluid surface: need a bed (>= 1 vertex) and eta(x)");
+  for (int i = 1; i < n_bed; i++)
+    if (!(bed_x[i] > bed_x[i - 1]))
+      return wl_error_set(err, WL_EINPUT, "scene fluid surface: bed x not increasing at vertex %d "
+                          "(%g after %g m)", i, bed_x[i], bed_x[i - 1]);
+  if (!(x1 > x0))
+    return wl_error_set(err, WL_EINPUT, "scene fluid surface: x range [%g, %g] m; need x0 < x1", x0, x1);
+  double zmin = bed_z[0];
+  for (int i = 1; i < n_bed; i++) zmin = bed_z[i] < zmin ? bed_z[i] : zmin;
+  double xs, ys = 0;
+  const int nx = lattice(x0, x1, dp, &xs);
+  int ny = 1;
+  if (dim == 3) ny = lattice(sc->y0, sc->y1, dp, &ys);
+  double x[3];
+  for (int ix = 0; ix < nx; ix++) {
+    const double px = xs + ix * dp;
+    const double e = eta(px, user);
+    const double zb = bed_at(bed_x, bed_z, n_bed, px);
+    /* lattice z = zmin + (j + 1/2) dp below eta */
+    for (long j = 0; zmin + (j + 0.5) * dp < e; j++) {
+      const double pz = zmin + (j + 0.5) * dp;
+      if (pz <= zb) continue;
+      if (n_bed > 1 && polyline_dist(bed_x, bed_z, n_bed, px, pz) < 0.5 * dp * (1 - LATTICE_TOL))
+        continue;
+      if (n_bed == 1 && pz - zb < 0.5 * dp * (1 - LATTICE_TOL)) continue;
+      for (int iy = 0; iy < ny; iy++) {
+        x[0] = px;
+        if (dim == 3) x[1] = ys + iy * dp;
+        x[dim - 1] = pz;
+        enum wl_status st = push(sc, 1, x, wl_scene_rho_hydro(k, e - pz), WL_KIND_FLUID, 0, err);
+        if (st != WL_OK) return st;
+      }
+    }
+  }
+  return WL_OK;
+}
+
+enum wl_status wl_scene_boundary_polyline(struct wl_scene *sc, const double *x, const double *z,
+                                          int nv, int n_layers, int kind, int body,
+                                          struct wl_sph_config *cfg, struct wl_error *err) {
+  const int dim = sc->dim;
+  const double dp = sc->dp;
+  if (nv < 2 || !x || !z)
+    return wl_error_set(err, WL_EINPUT, "scene boundary: a polyline needs >= 2 vertices (got %d)", nv);
+  if (n_layers < 1 || n_layers > 16)
+    return wl_error_set(err, WL_EINPUT, "scene boundary: %d layers; valid 1..16", n_layers);
+  if (kind != WL_KIND_FIXED && kind != WL_KIND_MOVING)
+    return wl_error_set(err, WL_EINPUT, "scene boundary: kind %d; valid %d (fixed) or %d (moving)",
+                        kind, WL_KIND_FIXED, WL_KIND_MOVING);
+  if (kind == WL_KIND_MOVING && (body < 1 || body > WL_SPH_BODIES_MAX))
+    return wl_error_set(err, WL_EINPUT, "scene boundary: moving body %d; valid 1..%d", body,
+                        WL_SPH_BODIES_MAX);
+  if (kind == WL_KIND_FIXED) body = 0;
+  /* unit directions and right-hand normals (away from the fluid) */
+  double *nx = malloc(sizeof(double) * (size_t)(nv - 1) * 2);
+  if (!nx) return wl_error_set(err, WL_ENOMEM, "scene boundary: out of memory");
+  double *nz = nx + (nv - 1);
+  for (int i = 0; i + 1 < nv; i++) {
+    const double tx = x[i + 1] - x[i], tz = z[i + 1] - z[i], len = sqrt(tx * tx + tz * tz);
+    if (!(len > 1e-12 * dp)) {
+      free(nx);
+      return wl_error_set(err, WL_EINPUT, "scene boundary: segment %d from (%g, %g) to (%g, %g) m "
+                          "has zero length", i, x[i], z[i], x[i + 1], z[i + 1]);
+    }
+    nx[i] = tz / len; /* right of (tx, tz) is (tz, -tx) */
+    nz[i] = -tx / len;
+  }
+  double ys = 0;
+  int ny = 1;
+  if (dim == 3) {
+    const double w = sc->y1 - sc->y0;
+    ny = (int)floor(w / dp + 0.5) + 1;
+    if (ny < 1) ny = 1;
+    ys = sc->y0;
+  }
+  const double dy = dim == 3 && ny > 1 ? (sc->y1 - sc->y0) / (ny - 1) : 0;
+  enum wl_status st = WL_OK;
+  for (int layer = 0; layer < n_layers && st == WL_OK; layer++) {
+    const double off = (layer + 0.5) * dp;
+    for (int i = 0; i + 1 < nv && st == WL_OK; i++) {
+      /* offset end points with mitred joins */
+      double p0[2], p1[2];
+      for (int end = 0; end < 2; end++) {
+        const int v = i + end;
+        double mx, mz;
+        if (v == 0 || v == nv - 1) {
+          const int s = v == 0 ? 0 : nv - 2;
+          mx = nx[s];
+          mz = nz[s];
+        } else {
+          const double c = 1 + nx[v - 1] * nx[v] + nz[v - 1] * nz[v];
+          mx = c > 1e-6 ? (nx[v - 1] + nx[v]) / c : nx[v];
+          mz = c > 1e-6 ? (nz[v - 1] + nz[v]) / c : nz[v];
+        }
+        double *p = end ? p1 : p0;
+        p[0] = x[v] + off * mx;
+        p[1] = z[v] + off * mz;
+      }
+      const double len = sqrt((p1[0] - p0[0]) * (p1[0] - p0[0]) + (p1[1] - p0[1]) * (p1[1] - p0[1]));
+      int m = (int)floor(len / dp + 0.5);
+      if (m < 1) m = 1;
+      const int last = i + 2 == nv; /* the last segment also places its end point */
+      for (int j = 0; j < m + last && st == WL_OK; j++) {
+        const double s = (double)j / m;
+        double q[3];
+        q[0] = p0[0] + s * (p1[0] - p0[0]);
+        q[dim - 1] = p0[1] + s * (p1[1] - p0[1]);
+        for (int iy = 0; iy < ny && st == WL_OK; iy++) {
+          if (dim == 3) q[1] = ys + iy * dy;
+          st = push(sc, 0, q, sc->k.rho0, kind, body, err);
+        }
+      }
+    }
+  }
+  free(nx);
+  if (st != WL_OK) return st;
+  if (cfg && kind == WL_KIND_FIXED)
+    for (int i = 0; i + 1 < nv && st == WL_OK; i++)
+      st = wl_sph_config_add_wall(cfg, x[i], z[i], x[i + 1], z[i + 1], n_layers * dp, err);
+  return st;
+}
+
+enum wl_status wl_scene_piston(struct wl_scene *sc, double x_face, double z0, double z1,
+                               int n_layers, int body, struct wl_error *err) {
+  if (!(z1 > z0))
+    return wl_error_set(err, WL_EINPUT, "scene piston: z range [%g, %g] m; need z0 < z1", z0, z1);
+  /* walking down the face has the fluid (x > x_face) on its left */
+  const double x[2] = {x_face, x_face}, z[2] = {z1, z0};
+  return wl_scene_boundary_polyline(sc, x, z, 2, n_layers, WL_KIND_MOVING, body, NULL, err);
+}
+
+void wl_scene_hydrostatic_boundary(struct wl_scene *sc, double eta) {
+  for (int i = 0; i < sc->n[0]; i++)
+    sc->rho[0][i] = wl_scene_rho_hydro(&sc->k, eta - sc->pos[0][(size_t)i * sc->dim + sc->dim - 1]);
+}
+
+void wl_scene_fluid_velocity(struct wl_scene *sc, wl_scene_vel_fn fn, void *user) {
+  for (int i = 0; i < sc->n[1]; i++)
+    fn(&sc->pos[1][(size_t)i * sc->dim], &sc->vel[1][(size_t)i * sc->dim], user);
+}
+
+enum wl_status wl_scene_build(const struct wl_scene *sc, struct wl_particles *out,
+                              struct wl_error *err) {
+  const int dim = sc->dim, n = sc->n[0] + sc->n[1];
+  memset(out, 0, sizeof *out);
+  if (sc->n[1] == 0) return wl_error_set(err, WL_EINPUT, "scene: no fluid particles");
+  enum wl_status st = wl_particles_alloc(out, dim, n, 0, err);
+  if (st != WL_OK) return st;
+  int i = 0;
+  for (int g = 0; g < 2; g++)
+    for (int s = 0; s < sc->n[g]; s++, i++) {
+      for (int a = 0; a < dim; a++) {
+        out->pos[a][i] = sc->pos[g][(size_t)s * dim + a];
+        out->vel[a][i] = (wl_real)sc->vel[g][(size_t)s * dim + a];
+      }
+      out->rho[i] = (wl_real)sc->rho[g][s];
+      out->id[i] = (unsigned)i;
+      out->kind[i] = sc->kind[g][s];
+      out->body[i] = sc->body[g][s];
+    }
+  out->n = n;
+  out->n_bound = sc->n[0];
+  return WL_OK;
+}

@@ -1,0 +1,120 @@
+/* params.c: SPH parameter defaults, validation and the derived constants
+ * (sph/params.h), and the run configuration helpers. */
+#include <math.h>
+#include <string.h>
+
+#include "wallload/sph.h"
+
+void wl_sph_params_default(struct wl_sph_params *prm, int dim, double dp, double h_max) {
+  memset(prm, 0, sizeof *prm);
+  prm->dim = dim;
+  prm->dp = dp;
+  prm->coefh = 1.0;     /* DualSPHysics examples: h = sqrt(dim) dp */
+  prm->coefsound = 10;  /* DualSPHysics default; dam breaks may want 20 (see BENCHMARKS.md) */
+  prm->h_max = h_max;
+  prm->rho0 = 1000;
+  prm->g = 9.81;
+  prm->visc = WL_SPH_VISC_ARTIFICIAL;
+  prm->alpha = 0.01;    /* DualSPHysics examples, and the seeds' lower bound */
+  prm->visc_bound_factor = 1;
+  prm->nu = 1e-6;
+  prm->ddt = WL_SPH_DDT_FOURTAKAS_FULL;
+  prm->delta = 0.1;     /* DualSPHysics DensityDTvalue */
+  prm->cfl = 0.2;       /* DualSPHysics CFLnumber */
+  prm->dt_collapse = 1e-3;
+  prm->rho_min_factor = 0.7; /* DualSPHysics RhopOutMin 700 for rho0 1000 */
+  prm->rho_max_factor = 1.3; /* RhopOutMax 1300 */
+  prm->penetration = 0.5;
+}
+
+static enum wl_status bad(struct wl_error *err, const char *name, double v, const char *valid) {
+  return wl_error_set(err, WL_EINPUT, "sph parameter %s: %g; %s", name, v, valid);
+}
+
+enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_const *k,
+                                 struct wl_error *err) {
+  if (prm->dim != 2 && prm->dim != 3) return bad(err, "dim", prm->dim, "must be 2 or 3");
+  if (!(prm->dp > 0) || !isfinite(prm->dp)) return bad(err, "dp", prm->dp, "must be > 0 m");
+  if (!(prm->coefh > 0.5 && prm->coefh < 4))
+    return bad(err, "coefh", prm->coefh, "must be in (0.5, 4)");
+  if (!(prm->coefsound >= 1 && prm->coefsound <= 1000))
+    return bad(err, "coefsound", prm->coefsound, "must be in [1, 1000]");
+  if (!(prm->h_max > 0) || !isfinite(prm->h_max))
+    return bad(err, "h_max", prm->h_max, "must be > 0 m (the largest water depth)");
+  if (!(prm->rho0 > 0)) return bad(err, "rho0", prm->rho0, "must be > 0 kg/m^3");
+  if (!(prm->g > 0)) return bad(err, "g", prm->g, "must be > 0 m/s^2");
+  if (prm->visc != WL_SPH_VISC_ARTIFICIAL && prm->visc != WL_SPH_VISC_LAMINAR)
+    return bad(err, "visc", prm->visc, "must be 0 (artificial) or 1 (laminar)");
+  if (!(prm->alpha >= 0 && prm->alpha <= 10)) return bad(err, "alpha", prm->alpha, "must be in [0, 10]");
+  if (!(prm->visc_bound_factor >= 0))
+    return bad(err, "visc_bound_factor", prm->visc_bound_factor, "must be >= 0");
+  if (!(prm->nu >= 0)) return bad(err, "nu", prm->nu, "must be >= 0 m^2/s");
+  if (prm->ddt != WL_SPH_DDT_NONE && prm->ddt != WL_SPH_DDT_FOURTAKAS &&
+      prm->ddt != WL_SPH_DDT_FOURTAKAS_FULL)
+    return bad(err, "ddt", prm->ddt, "must be 0 (none), 1 (Fourtakas) or 2 (Fourtakas, full)");
+  if (!(prm->delta >= 0 && prm->delta <= 1)) return bad(err, "delta", prm->delta, "must be in [0, 1]");
+  if (!(prm->cfl > 0 && prm->cfl <= 1)) return bad(err, "cfl", prm->cfl, "must be in (0, 1]");
+  if (!(prm->dt_collapse >= 0 && prm->dt_collapse < 1))
+    return bad(err, "dt_collapse", prm->dt_collapse, "must be in [0, 1)");
+  if (!(prm->rho_min_factor >= 0 && prm->rho_min_factor < 1))
+    return bad(err, "rho_min_factor", prm->rho_min_factor, "must be in [0, 1)");
+  if (!(prm->rho_max_factor > 1)) return bad(err, "rho_max_factor", prm->rho_max_factor, "must be > 1");
+  if (!(prm->penetration > 0)) return bad(err, "penetration", prm->penetration, "must be > 0 (units of dp)");
+
+  memset(k, 0, sizeof *k);
+  const int dim = prm->dim;
+  const double gamma = 7.0;
+  const double h = prm->coefh * sqrt((double)dim) * prm->dp;
+  const double c0 = prm->coefsound * sqrt(prm->g * prm->h_max);
+  const double B = c0 * c0 * prm->rho0 / gamma;
+  const double aD = wl_sph_kernel_norm(dim, h);
+  k->dim = dim;
+  k->visc = prm->visc;
+  k->ddt = prm->ddt;
+  k->h = (wl_real)h;
+  k->inv_h = (wl_real)(1.0 / h);
+  k->support2 = (wl_real)(4.0 * h * h);
+  k->eta2 = (wl_real)(0.01 * h * h);
+  k->kw = (wl_real)aD;
+  k->kf = (wl_real)(-5.0 * aD / (h * h));
+  k->rho0 = (wl_real)prm->rho0;
+  k->inv_rho0 = (wl_real)(1.0 / prm->rho0);
+  k->B = (wl_real)B;
+  k->c0 = (wl_real)c0;
+  k->mass = (wl_real)(prm->rho0 * pow(prm->dp, dim));
+  const int art = prm->visc == WL_SPH_VISC_ARTIFICIAL;
+  k->av_ff = (wl_real)(art ? prm->alpha * c0 * h : 0.0);
+  k->av_fb = (wl_real)(art ? prm->alpha * prm->visc_bound_factor * c0 * h : 0.0);
+  k->lam_ff = (wl_real)(art ? 0.0 : 4.0 * prm->nu);
+  k->lam_fb = (wl_real)(art ? 0.0 : 4.0 * prm->nu * prm->visc_bound_factor);
+  k->ddt_k = (wl_real)(prm->ddt == WL_SPH_DDT_NONE ? 0.0 : prm->delta * 2.0 * h * c0);
+  k->ddt_g = (wl_real)(prm->rho0 * prm->g / B);
+  for (int a = 0; a < WL_SPH_DIM_MAX; a++) k->gravity[a] = 0;
+  k->gravity[dim - 1] = (wl_real)(-prm->g);
+  k->dp = prm->dp;
+  k->h_d = h;
+  k->c0_d = c0;
+  k->cfl = prm->cfl;
+  k->dt_collapse = prm->dt_collapse;
+  k->rho_min = prm->rho_min_factor * prm->rho0;
+  k->rho_max = prm->rho_max_factor * prm->rho0;
+  k->penetration = prm->penetration * prm->dp;
+  return WL_OK;
+}
+
+void wl_sph_config_default(struct wl_sph_config *cfg, int dim, double dp, double h_max) {
+  memset(cfg, 0, sizeof *cfg);
+  wl_sph_params_default(&cfg->prm, dim, dp, h_max);
+}
+
+enum wl_status wl_sph_config_add_wall(struct wl_sph_config *cfg, double ax, double az, double bx,
+                                      double bz, double thickness, struct wl_error *err) {
+  if (cfg->n_walls >= WL_SPH_WALLS_MAX)
+    return wl_error_set(err, WL_EINPUT, "too many wall faces for the penetration guard (at most %d)",
+                        (int)WL_SPH_WALLS_MAX);
+  if (!(thickness >= 0) || !isfinite(ax + az + bx + bz))
+    return wl_error_set(err, WL_EINPUT, "wall face (%g, %g)-(%g, %g), thickness %g: not finite or "
+                        "negative thickness", ax, az, bx, bz, thickness);
+  cfg->walls[cfg->n_walls++] = wl_sph_wall_make(ax, az, bx, bz, thickness);
+  return WL_OK;
+}

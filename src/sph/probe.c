@@ -1,0 +1,175 @@
+/* probe.c: kernel interpolation at points on the host (sph.h probes): a
+ * cell index over a particle snapshot (counting sort of indices, the data
+ * stay where they are) and the gauges built on sph/probe.h. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "wallload/sph.h"
+#include "wallload/sph/probe.h"
+
+struct wl_sph_probe {
+  struct wl_sph_const k;
+  struct wl_sph_grid grid;
+  int *begin;        /* 2 n_cells + 1 */
+  int capacity;      /* particles the arrays below hold */
+  int *order;        /* sorted position -> particle index */
+  double *pos[WL_SPH_DIM_MAX]; /* gathered copies in cell order */
+  wl_real *vel[WL_SPH_DIM_MAX];
+  wl_real *rho, *press;
+  int dim;
+};
+
+static void arrays_free(struct wl_sph_probe *pr) {
+  free(pr->order);
+  pr->order = NULL;
+  for (int a = 0; a < WL_SPH_DIM_MAX; a++) {
+    free(pr->pos[a]);
+    free(pr->vel[a]);
+    pr->pos[a] = NULL;
+    pr->vel[a] = NULL;
+  }
+  free(pr->rho);
+  free(pr->press);
+  pr->rho = pr->press = NULL;
+  pr->capacity = 0;
+}
+
+void wl_sph_probe_free(struct wl_sph_probe *pr) {
+  if (!pr) return;
+  arrays_free(pr);
+  free(pr->begin);
+  free(pr);
+}
+
+enum wl_status wl_sph_probe_alloc(struct wl_sph_probe **out, const struct wl_sph_config *cfg,
+                                  struct wl_error *err) {
+  *out = NULL;
+  struct wl_sph_probe *pr = calloc(1, sizeof *pr);
+  if (!pr) return wl_error_set(err, WL_ENOMEM, "probe: out of memory");
+  enum wl_status st = wl_sph_const_make(&cfg->prm, &pr->k, err);
+  if (st != WL_OK) {
+    wl_sph_probe_free(pr);
+    return st;
+  }
+  pr->dim = cfg->prm.dim;
+  struct wl_sph_grid *g = &pr->grid;
+  g->cell = 2.0 * pr->k.h_d;
+  g->inv_cell = 1.0 / g->cell;
+  double cells = 1;
+  for (int a = 0; a < WL_SPH_DIM_MAX; a++) {
+    g->lo[a] = a < pr->dim ? cfg->lo[a] : 0;
+    g->n[a] = 1;
+    if (a < pr->dim) {
+      const double len = cfg->hi[a] - cfg->lo[a];
+      if (!(len > 0)) {
+        wl_sph_probe_free(pr);
+        return wl_error_set(err, WL_EINPUT, "probe: domain box axis %d is [%g, %g]; need lo < hi", a,
+                            cfg->lo[a], cfg->hi[a]);
+      }
+      g->n[a] = (int)ceil(len * g->inv_cell);
+      if (g->n[a] < 1) g->n[a] = 1;
+      cells *= g->n[a];
+    }
+  }
+  if (cells > 2e8) {
+    wl_sph_probe_free(pr);
+    return wl_error_set(err, WL_EINPUT, "probe: the domain box needs %.3g cells; at most 2e8", cells);
+  }
+  g->n_cells = (int)cells;
+  pr->begin = calloc((size_t)(2 * g->n_cells + 1), sizeof(int));
+  if (!pr->begin) {
+    const int nc = g->n_cells;
+    wl_sph_probe_free(pr);
+    return wl_error_set(err, WL_ENOMEM, "probe: cannot allocate the cell index (%d cells)", nc);
+  }
+  *out = pr;
+  return WL_OK;
+}
+
+enum wl_status wl_sph_probe_index(struct wl_sph_probe *pr, const struct wl_particles *p,
+                                  struct wl_error *err) {
+  const int n = p->n, dim = pr->dim, nc = pr->grid.n_cells;
+  if (p->dim != dim)
+    return wl_error_set(err, WL_EINPUT, "probe: particles are %dD, probe %dD", p->dim, dim);
+  if (n > pr->capacity) {
+    arrays_free(pr);
+    const size_t m = (size_t)n;
+    int ok = (pr->order = malloc(m * sizeof(int))) != NULL;
+    for (int a = 0; a < dim; a++) {
+      ok = ok && (pr->pos[a] = malloc(m * sizeof(double))) != NULL;
+      ok = ok && (pr->vel[a] = malloc(m * sizeof(wl_real))) != NULL;
+    }
+    ok = ok && (pr->rho = malloc(m * sizeof(wl_real))) != NULL;
+    ok = ok && (pr->press = malloc(m * sizeof(wl_real))) != NULL;
+    if (!ok) {
+      arrays_free(pr);
+      return wl_error_set(err, WL_ENOMEM, "probe: cannot allocate the index of %d particles", n);
+    }
+    pr->capacity = n;
+  }
+  /* counting sort of the particle indices; only the fluid group is filled,
+   * the boundary group stays empty (probes interpolate the fluid) */
+  int *begin = pr->begin;
+  memset(begin, 0, sizeof(int) * (size_t)(2 * nc + 1));
+  for (int i = 0; i < n; i++)
+    if (p->kind[i] == WL_KIND_FLUID) begin[nc + wl_sph_cell_of(dim, &pr->grid, p->pos, i) + 1]++;
+  for (int b = 0; b < 2 * nc; b++) begin[b + 1] += begin[b];
+  int *cursor = malloc(sizeof(int) * (size_t)nc);
+  if (!cursor) return wl_error_set(err, WL_ENOMEM, "probe: out of memory (%d cells)", nc);
+  memcpy(cursor, begin + nc, sizeof(int) * (size_t)nc);
+  for (int i = 0; i < n; i++)
+    if (p->kind[i] == WL_KIND_FLUID) pr->order[cursor[wl_sph_cell_of(dim, &pr->grid, p->pos, i)]++] = i;
+  free(cursor);
+  const int nf = begin[2 * nc];
+  for (int s = 0; s < nf; s++) {
+    const int i = pr->order[s];
+    for (int a = 0; a < dim; a++) {
+      pr->pos[a][s] = p->pos[a][i];
+      pr->vel[a][s] = p->vel[a][i];
+    }
+    pr->rho[s] = p->rho[i];
+    pr->press[s] = wl_sph_eos_p(&pr->k, p->rho[i]);
+  }
+  return WL_OK;
+}
+
+static struct wl_sph_point_sums sums(const struct wl_sph_probe *pr, const double *x) {
+  return wl_sph_point_sum(pr->dim, &pr->k, &pr->grid, pr->begin, (double *const *)pr->pos,
+                          (wl_real *const *)pr->vel, pr->rho, pr->press, x);
+}
+
+double wl_sph_probe_shepard(const struct wl_sph_probe *pr, const double *x) { return sums(pr, x).s; }
+
+int wl_sph_probe_interp(const struct wl_sph_probe *pr, const double *x, double *v, double *p) {
+  const struct wl_sph_point_sums s = sums(pr, x);
+  const int ok = s.s > 0;
+  for (int a = 0; v && a < pr->dim; a++) v[a] = ok ? s.v[a] / s.s : 0;
+  if (p) *p = ok ? s.p / s.s : 0;
+  return ok;
+}
+
+double wl_sph_probe_elevation(const struct wl_sph_probe *pr, double x, double y, double z_lo,
+                              double z_hi, double dz) {
+  const int dim = pr->dim;
+  const double limit = dim == 2 ? 0.4 : 0.5; /* DualSPHysics coefmasslimit */
+  if (!(dz > 0)) dz = 0.1 * pr->k.dp;
+  double pt[WL_SPH_DIM_MAX] = {x, y, 0};
+  const int az = dim - 1;
+  int wet = 0;
+  double z_prev = z_lo, s_prev = 0;
+  const long n_pts = (long)ceil((z_hi - z_lo) / dz);
+  for (long i = 0; i <= n_pts; i++) {
+    const double z = i < n_pts ? z_lo + (double)i * dz : z_hi;
+    pt[az] = z;
+    const double s = wl_sph_probe_shepard(pr, pt);
+    if (s >= limit) {
+      wet = 1;
+    } else if (wet) {
+      return z_prev + (z - z_prev) * (s_prev - limit) / (s_prev - s);
+    }
+    z_prev = z;
+    s_prev = s;
+  }
+  return wet ? z_hi : z_lo;
+}

@@ -1,0 +1,300 @@
+/* sim.c: the time-stepping driver (sph.h): owns time, step count, the
+ * prescribed motion of moving bodies, output times and the instability
+ * report; the backend (backend.h) owns the particles and does the step. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "wallload/sph.h"
+
+struct body_motion {
+  enum wl_sph_motion_type type;
+  int n;
+  double *t, *x; /* owned copies of the table */
+  double (*x_of_t)(double t, void *user);
+  void *user;
+};
+
+struct wl_sph_sim {
+  const struct wl_backend_ops *ops;
+  void *ctx;
+  struct wl_sph_config cfg;
+  struct wl_sph_const k;
+  struct wl_particles host; /* download target */
+  int host_valid;           /* host holds the current state */
+  double t;
+  long steps;
+  double dt_next;           /* from the last force evaluations [s] */
+  double dt_initial;        /* the first CFL step, reference for the dt-collapse guard */
+  struct wl_sph_step_out last;
+  struct body_motion motion[WL_SPH_BODIES_MAX + 1];
+};
+
+static void motion_clear(struct body_motion *m) {
+  free(m->t);
+  free(m->x);
+  memset(m, 0, sizeof *m);
+}
+
+void wl_sph_sim_free(struct wl_sph_sim *sim) {
+  if (!sim) return;
+  if (sim->ops && sim->ctx) sim->ops->free(sim->ctx);
+  wl_particles_clear(&sim->host);
+  for (int b = 0; b <= WL_SPH_BODIES_MAX; b++) motion_clear(&sim->motion[b]);
+  free(sim);
+}
+
+static const char *fault_name(int fault) {
+  switch (fault) {
+  case WL_SPH_FAULT_NONFINITE: return "non-finite position, velocity or density";
+  case WL_SPH_FAULT_OUTSIDE: return "left the domain box";
+  case WL_SPH_FAULT_DENSITY: return "density out of range";
+  case WL_SPH_FAULT_PENETRATION: return "fluid particle crossed a wall";
+  case WL_SPH_FAULT_DT: return "time step collapsed";
+  }
+  return "no fault";
+}
+
+static const char *kind_name(int kind) {
+  return kind == WL_KIND_FLUID ? "fluid" : kind == WL_KIND_FIXED ? "fixed boundary" : "moving boundary";
+}
+
+/* Turn a guard fault into WL_EUNSTABLE with what, where and when. */
+static enum wl_status report_fault(const struct wl_sph_sim *sim, const struct wl_sph_step_out *o,
+                                   struct wl_error *err) {
+  const int dim = sim->cfg.prm.dim;
+  char where[256];
+  if (dim == 2)
+    snprintf(where, sizeof where, "at (x, z) = (%.6g, %.6g) m, velocity (%.4g, %.4g) m/s, density "
+             "%.6g kg/m^3", o->fault_pos[0], o->fault_pos[1], o->fault_vel[0], o->fault_vel[1],
+             o->fault_rho);
+  else
+    snprintf(where, sizeof where, "at (%.6g, %.6g, %.6g) m, velocity (%.4g, %.4g, %.4g) m/s, "
+             "density %.6g kg/m^3", o->fault_pos[0], o->fault_pos[1], o->fault_pos[2],
+             o->fault_vel[0], o->fault_vel[1], o->fault_vel[2], o->fault_rho);
+  char detail[256] = "";
+  if (o->fault == WL_SPH_FAULT_OUTSIDE) {
+    if (dim == 2)
+      snprintf(detail, sizeof detail, " (box x [%g, %g], z [%g, %g] m)", sim->cfg.lo[0],
+               sim->cfg.hi[0], sim->cfg.lo[1], sim->cfg.hi[1]);
+    else
+      snprintf(detail, sizeof detail, " (box [%g, %g] x [%g, %g] x [%g, %g] m)", sim->cfg.lo[0],
+               sim->cfg.hi[0], sim->cfg.lo[1], sim->cfg.hi[1], sim->cfg.lo[2], sim->cfg.hi[2]);
+  } else if (o->fault == WL_SPH_FAULT_DENSITY) {
+    snprintf(detail, sizeof detail, " (valid [%g, %g] kg/m^3)", sim->k.rho_min, sim->k.rho_max);
+  } else if (o->fault == WL_SPH_FAULT_PENETRATION && o->fault_wall >= 0) {
+    const struct wl_sph_wall *w = &sim->cfg.walls[o->fault_wall];
+    snprintf(detail, sizeof detail, " (wall %d from (%g, %g) to (%g, %g) m, more than %g m behind "
+             "its face)", o->fault_wall, w->a[0], w->a[1], w->a[0] + w->len * w->t[0],
+             w->a[1] + w->len * w->t[1], sim->k.penetration);
+  }
+  return wl_error_set(err, WL_EUNSTABLE,
+                      "unstable at t = %.6g s, step %ld: %s particle %d (id %u) %s%s; %s",
+                      sim->t, sim->steps, kind_name(o->fault_kind), o->fault_index, o->fault_id,
+                      fault_name(o->fault), detail, where);
+}
+
+enum wl_status wl_sph_sim_alloc(struct wl_sph_sim **out, const struct wl_backend_ops *ops,
+                                const struct wl_sph_config *cfg, const struct wl_particles *initial,
+                                struct wl_error *err) {
+  *out = NULL;
+  struct wl_sph_sim *sim = calloc(1, sizeof *sim);
+  if (!sim) return wl_error_set(err, WL_ENOMEM, "sph: out of memory for the simulation");
+  sim->ops = ops;
+  sim->cfg = *cfg;
+  enum wl_status st = wl_sph_const_make(&cfg->prm, &sim->k, err);
+  if (st == WL_OK && cfg->n_walls > WL_SPH_WALLS_MAX)
+    st = wl_error_set(err, WL_EINPUT, "sph: %d walls; at most %d", cfg->n_walls, WL_SPH_WALLS_MAX);
+  if (st == WL_OK && initial->dim != cfg->prm.dim)
+    st = wl_error_set(err, WL_EINPUT, "sph: particles are %dD but the parameters say %dD",
+                      initial->dim, cfg->prm.dim);
+  if (st == WL_OK && (initial->n <= initial->n_bound))
+    st = wl_error_set(err, WL_EINPUT, "sph: no fluid particles (%d particles, %d boundary)",
+                      initial->n, initial->n_bound);
+  if (st == WL_OK) st = wl_particles_alloc(&sim->host, cfg->prm.dim, initial->n, 0, err);
+  if (st == WL_OK) st = ops->init(&sim->ctx, cfg, &sim->k, initial, &sim->last, err);
+  if (st != WL_OK) {
+    wl_error_prefix(err, "%s backend: ", ops->name);
+    wl_sph_sim_free(sim);
+    return st;
+  }
+  if (sim->last.fault) {
+    st = report_fault(sim, &sim->last, err);
+    wl_error_prefix(err, "initial state: ");
+    wl_sph_sim_free(sim);
+    return st;
+  }
+  sim->dt_next = sim->dt_initial = sim->last.dt_next;
+  *out = sim;
+  return WL_OK;
+}
+
+enum wl_status wl_sph_sim_set_motion(struct wl_sph_sim *sim, int body,
+                                     const struct wl_sph_motion *m, struct wl_error *err) {
+  if (body < 1 || body > WL_SPH_BODIES_MAX)
+    return wl_error_set(err, WL_EINPUT, "sph motion: body %d; valid 1..%d", body, WL_SPH_BODIES_MAX);
+  struct body_motion nm = {0};
+  nm.type = m->type;
+  if (m->type == WL_SPH_MOTION_TABLE) {
+    if (m->n < 1 || !m->t || !m->x)
+      return wl_error_set(err, WL_EINPUT, "sph motion of body %d: table with %d samples; need >= 1",
+                          body, m->n);
+    for (int i = 1; i < m->n; i++)
+      if (!(m->t[i] > m->t[i - 1]))
+        return wl_error_set(err, WL_EINPUT, "sph motion of body %d: times not increasing at sample "
+                            "%d (%g after %g s)", body, i, m->t[i], m->t[i - 1]);
+    nm.n = m->n;
+    nm.t = malloc(sizeof(double) * (size_t)m->n);
+    nm.x = malloc(sizeof(double) * (size_t)m->n);
+    if (!nm.t || !nm.x) {
+      motion_clear(&nm);
+      return wl_error_set(err, WL_ENOMEM, "sph motion of body %d: out of memory for %d samples",
+                          body, m->n);
+    }
+    memcpy(nm.t, m->t, sizeof(double) * (size_t)m->n);
+    memcpy(nm.x, m->x, sizeof(double) * (size_t)m->n);
+  } else if (m->type == WL_SPH_MOTION_FUNCTION) {
+    if (!m->x_of_t)
+      return wl_error_set(err, WL_EINPUT, "sph motion of body %d: no function given", body);
+    nm.x_of_t = m->x_of_t;
+    nm.user = m->user;
+  } else if (m->type != WL_SPH_MOTION_NONE) {
+    return wl_error_set(err, WL_EINPUT, "sph motion of body %d: type %d; valid 0, 1, 2", body,
+                        (int)m->type);
+  }
+  motion_clear(&sim->motion[body]);
+  sim->motion[body] = nm;
+  return WL_OK;
+}
+
+/* Displacement X(t) [m] of a body. */
+static double motion_x(const struct body_motion *m, double t) {
+  switch (m->type) {
+  case WL_SPH_MOTION_TABLE: {
+    if (t <= m->t[0]) return m->x[0];
+    if (t >= m->t[m->n - 1]) return m->x[m->n - 1];
+    int lo = 0, hi = m->n - 1; /* bisection: t[lo] <= t < t[hi] */
+    while (hi - lo > 1) {
+      const int mid = (lo + hi) / 2;
+      if (m->t[mid] <= t) lo = mid;
+      else hi = mid;
+    }
+    const double s = (t - m->t[lo]) / (m->t[hi] - m->t[lo]);
+    return m->x[lo] + s * (m->x[hi] - m->x[lo]);
+  }
+  case WL_SPH_MOTION_FUNCTION: return m->x_of_t(t, m->user);
+  default: return 0;
+  }
+}
+
+enum wl_status wl_sph_sim_step(struct wl_sph_sim *sim, double dt_max, struct wl_error *err) {
+  const double dt_cfl = sim->dt_next;
+  if (!(dt_cfl >= sim->k.dt_collapse * sim->dt_initial) || !isfinite(dt_cfl)) {
+    struct wl_sph_step_out o = sim->last;
+    return wl_error_set(err, WL_EUNSTABLE,
+                        "unstable at t = %.6g s, step %ld: time step collapsed to %.3g s (%.3g of "
+                        "the initial %.3g s; limit %.3g): max |a| = %.4g m/s^2, max |v| = %.4g m/s",
+                        sim->t, sim->steps, dt_cfl, dt_cfl / sim->dt_initial, sim->dt_initial,
+                        sim->k.dt_collapse, o.ace_max, o.vel_max);
+  }
+  struct wl_sph_step_in in;
+  memset(&in, 0, sizeof in);
+  in.t = sim->t;
+  in.dt = dt_max > 0 && dt_max < dt_cfl ? dt_max : dt_cfl;
+  in.step = sim->steps;
+  for (int b = 1; b <= WL_SPH_BODIES_MAX; b++)
+    if (sim->motion[b].type != WL_SPH_MOTION_NONE)
+      in.body_vel[b][0] =
+          (motion_x(&sim->motion[b], sim->t + in.dt) - motion_x(&sim->motion[b], sim->t)) / in.dt;
+  struct wl_sph_step_out out;
+  enum wl_status st = sim->ops->step(sim->ctx, &in, &out, err);
+  sim->host_valid = 0;
+  if (st != WL_OK) {
+    wl_error_prefix(err, "%s backend, t = %.6g s, step %ld: ", sim->ops->name, sim->t, sim->steps);
+    return st;
+  }
+  sim->t += in.dt;
+  sim->steps++;
+  sim->last = out;
+  sim->dt_next = out.dt_next;
+  if (out.fault) return report_fault(sim, &out, err);
+  return WL_OK;
+}
+
+static double wall_seconds(void) {
+  struct timespec ts;
+  timespec_get(&ts, TIME_UTC);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+enum wl_status wl_sph_sim_run(struct wl_sph_sim *sim, const struct wl_sph_run_opts *o,
+                              struct wl_error *err) {
+  if (!(o->t_end >= sim->t))
+    return wl_error_set(err, WL_EINPUT, "sph run: end time %g s is before the current time %g s",
+                        o->t_end, sim->t);
+  const double t0 = sim->t, wall0 = wall_seconds();
+  const double every = o->progress_wall_s > 0 ? o->progress_wall_s : 1.0;
+  double wall_next = wall0 + every;
+  const long steps0 = sim->steps;
+  /* output times t0 + m output_dt; the last one is t_end */
+  long m = 0;
+  enum wl_status st = WL_OK;
+  if (o->output) st = o->output(o->user, sim, sim->t, err);
+  m = 1;
+  while (st == WL_OK && sim->t < o->t_end) {
+    double t_out = o->output_dt > 0 ? t0 + (double)m * o->output_dt : o->t_end;
+    if (t_out > o->t_end) t_out = o->t_end;
+    /* the step that lands on t_out; two steps split the rest evenly, so no
+     * step is shorter than half the CFL step */
+    const double rest = t_out - sim->t, dt = sim->dt_next;
+    if (!(rest > 0)) { /* already there (rounding) */
+      m++;
+      continue;
+    }
+    double dt_max = 0;
+    if (rest <= dt) dt_max = rest;
+    else if (rest < 2 * dt) dt_max = 0.5 * rest;
+    st = wl_sph_sim_step(sim, dt_max, err);
+    if (st != WL_OK) break;
+    if (rest <= dt) {
+      sim->t = t_out; /* exact, against rounding of t + dt */
+      if (o->output) st = o->output(o->user, sim, sim->t, err);
+      m++;
+    }
+    if (o->progress) {
+      const double now = wall_seconds();
+      if (now >= wall_next || sim->t >= o->t_end) {
+        struct wl_sph_progress pr;
+        pr.t = sim->t;
+        pr.t_end = o->t_end;
+        pr.step = sim->steps;
+        pr.dt = sim->dt_next;
+        pr.wall_s = now - wall0;
+        pr.steps_per_s = pr.wall_s > 0 ? (double)(sim->steps - steps0) / pr.wall_s : 0;
+        pr.n = sim->host.capacity;
+        pr.particle_steps_per_s = pr.steps_per_s * pr.n;
+        o->progress(o->user, &pr);
+        wall_next = now + every;
+      }
+    }
+  }
+  return st;
+}
+
+const struct wl_particles *wl_sph_sim_particles(struct wl_sph_sim *sim, struct wl_error *err) {
+  if (!sim->host_valid) {
+    if (sim->ops->download(sim->ctx, &sim->host, err) != WL_OK) return NULL;
+    sim->host_valid = 1;
+  }
+  return &sim->host;
+}
+
+double wl_sph_sim_time(const struct wl_sph_sim *sim) { return sim->t; }
+long wl_sph_sim_steps(const struct wl_sph_sim *sim) { return sim->steps; }
+double wl_sph_sim_dt(const struct wl_sph_sim *sim) { return sim->dt_next; }
+double wl_sph_sim_dt_initial(const struct wl_sph_sim *sim) { return sim->dt_initial; }
+const struct wl_sph_const *wl_sph_sim_const(const struct wl_sph_sim *sim) { return &sim->k; }
+const struct wl_sph_config *wl_sph_sim_config(const struct wl_sph_sim *sim) { return &sim->cfg; }
+const struct wl_sph_step_out *wl_sph_sim_last(const struct wl_sph_sim *sim) { return &sim->last; }
