@@ -6,13 +6,14 @@
 #
 # Build:   gcc, cmake, pkg-config, GSL, libyaml, cairo (+pango), HDF5, OpenMP (libgomp
 #          comes with gcc).
-# Tests:   poppler-utils (pdfinfo, pdftotext, pdftoppm check the PDF report).
+# Tests:   poppler-utils (pdfinfo, pdftotext, pdftoppm check the PDF report), python3
+#          (the command-line tests read summary.json and the CSV files with it).
 # CUDA is optional: where nvcc is on the PATH or in /usr/local/cuda, the CUDA backend
 # is compiled; it is never installed from here.
 set -eu
 
 packages="build-essential cmake pkg-config libgsl-dev libyaml-dev libcairo2-dev
-libpango1.0-dev libhdf5-dev poppler-utils"
+libpango1.0-dev libhdf5-dev poppler-utils python3"
 
 missing=""
 for p in $packages; do

@@ -1,21 +1,66 @@
 #!/usr/bin/env bash
-# `wallload assess` until the solver exists: a valid scenario is planned and
-# the command says which stage is missing (exit 1); bad input exits 2.
+# `wallload assess` end to end on a small, short case: exit codes, the files
+# of the results contract, summary values equal to the stored series'
+# extremes (checked with h5dump-free tools: the CSV the same run wrote), and
+# the refusal to overwrite an existing output directory.
 set -u
 bin=$1; src=$2
 fail=0
-msg=$("$bin" assess "$src/scenarios/seawall.yaml" 2>&1); rc=$?
-if [ $rc = 1 ] && grep -q "SPH solver, is not built yet" <<<"$msg"; then echo "PASS assess names the missing stage"
-else echo "FAIL assess: exit $rc: $msg"; fail=$((fail+1)); fi
+ok() { echo "PASS $1"; }
+bad() { echo "FAIL $1"; fail=$((fail+1)); }
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cat > "$work/tiny.yaml" <<'YAML'
+scenario: tiny
+water: {depth: 0.2 m}
+domain: {length: 4 m}
+wall: {x: 3 m, height: 0.4 m, probes: 10}
+gauges: [{name: G1, x: 2 m}]
+loads:
+  solitary: {height: 0.06 m, generation: initial, at: 1.6 m}
+  explosion: {energy: same-as-solitary, at: 1.5 m}
+resolution: {dp: 0.02 m}
+run: {output_interval: 0.02 s}
+YAML
+cd "$work" || exit 1
+out=$("$bin" assess tiny.yaml --quiet --end-time 0.3 2>&1); rc=$?
+[ $rc = 0 ] && ok "assess runs both cases (exit 0)" || bad "assess exit $rc: $out"
+for f in results.h5 summary.json solitary_wall.csv solitary_gauges.csv explosion_wall.csv \
+         particles_solitary.h5 particles_solitary.xmf particles_explosion.xmf; do
+  [ -s "tiny-results/$f" ] && ok "wrote $f" || bad "missing tiny-results/$f"
+done
+ls tiny-results | grep -q '\.tmp$' && bad "temporary files left behind" || ok "no temporary files left"
+grep -q '"larger_peak_force"' tiny-results/summary.json && ok "summary names the larger peak force" || bad "no comparison in summary.json"
+grep -q '"peak_force_boundary"' tiny-results/summary.json && ok "summary reports the boundary-particle force" || bad "no boundary force"
+# summary impulse == last impulse value of the CSV (both from the stored series)
+imp_json=$(python3 -c "import json;print(json.load(open('tiny-results/summary.json'))['cases']['solitary']['impulse']['value'])" 2>/dev/null)
+imp_csv=$(tail -1 tiny-results/solitary_wall.csv | cut -d, -f5)
+python3 - "$imp_json" "$imp_csv" <<'PY' && ok "summary impulse = last stored impulse sample" || bad "impulse mismatch: json $imp_json csv $imp_csv"
+import sys
+a, b = float(sys.argv[1]), float(sys.argv[2])
+sys.exit(0 if abs(a - b) <= 1e-5 * max(1.0, abs(a)) else 1)
+PY
+# summary peak force == max of the filtered force column
+python3 - <<'PY' && ok "summary peak force = max of the stored filtered force" || bad "peak force is not the max of the stored series"
+import json, csv
+s = json.load(open('tiny-results/summary.json'))['cases']['solitary']
+rows = list(csv.DictReader(open('tiny-results/solitary_wall.csv')))
+m = max(float(r['force_filtered_N_per_m']) for r in rows)
+v = s['peak_force']['value']
+raise SystemExit(0 if abs(m - v) <= 1e-5 * abs(v) else 1)
+PY
+msg=$("$bin" assess tiny.yaml --quiet --end-time 0.1 2>&1); rc=$?
+[ $rc = 2 ] && grep -q -- "--force" <<<"$msg" && ok "existing output directory refused (exit 2)" || bad "overwrite: exit $rc: $msg"
+"$bin" assess tiny.yaml --quiet --force --end-time 0.1 >/dev/null 2>&1 && ok "--force writes into it" || bad "--force failed"
 msg=$("$bin" assess "$src/tests/scenarios/bad/04_negative_depth.yaml" 2>&1); rc=$?
-[ $rc = 2 ] && echo "PASS assess bad scenario -> 2" || { echo "FAIL assess bad -> $rc: $msg"; fail=$((fail+1)); }
-msg=$("$bin" assess "$src/scenarios/seawall.yaml" --bogus 2>&1); rc=$?
-[ $rc = 2 ] && echo "PASS assess unknown option -> 2" || { echo "FAIL unknown option -> $rc"; fail=$((fail+1)); }
+[ $rc = 2 ] && ok "bad scenario -> 2" || bad "bad scenario -> $rc: $msg"
+msg=$("$bin" assess tiny.yaml --bogus 2>&1); rc=$?
+[ $rc = 2 ] && ok "unknown option -> 2" || bad "unknown option -> $rc"
 msg=$("$bin" assess /nonexistent.yaml 2>&1); rc=$?
-[ $rc = 1 ] && grep -q "cannot open" <<<"$msg" && echo "PASS missing file -> 1: $msg" || { echo "FAIL missing file -> $rc: $msg"; fail=$((fail+1)); }
+[ $rc = 1 ] && grep -q "cannot open" <<<"$msg" && ok "missing file -> 1: $msg" || bad "missing file -> $rc: $msg"
 msg=$("$bin" frobnicate 2>&1); rc=$?
-[ $rc = 2 ] && echo "PASS unknown command -> 2" || { echo "FAIL unknown command -> $rc"; fail=$((fail+1)); }
+[ $rc = 2 ] && ok "unknown command -> 2" || bad "unknown command -> $rc"
 out=$("$bin" check "$src/scenarios/seawall.yaml"); rc=$?
-[ $rc = 0 ] && grep -q "water.gravity .*9.81 m/s^2 .*(default)" <<<"$out" && echo "PASS check lists defaults" || { echo "FAIL check defaults"; fail=$((fail+1)); }
-grep -q "bathymetry\[0\].slope .*0.175439 .*(given as 1/5.7" <<<"$out" && echo "PASS check shows the user's value beside SI" || { echo "FAIL check user value"; fail=$((fail+1)); }
+[ $rc = 0 ] && grep -q "water.gravity .*9.81 m/s^2 .*(default)" <<<"$out" && ok "check lists defaults" || bad "check defaults"
+grep -q "bathymetry\[0\].slope .*0.175439 .*(given as 1/5.7" <<<"$out" && ok "check shows the user's value beside SI" || bad "check user value"
 exit $fail

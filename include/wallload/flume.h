@@ -43,6 +43,7 @@ struct wl_flume {
   int n_paddle;
   double x_wall, z_toe, z_crest;   /* seawall face and its extent [m] */
   double depth;                    /* still-water level above the floor [m] */
+  double x_left;                   /* left end of the modelled flume [m] (plan) */
   double depth_wall;               /* still water depth at the wall's toe [m] */
   double static_force;             /* rho g d_w^2 / 2 at rest [N/m] */
   double static_moment;            /* rho g d_w^3 / 6 about the toe [N m/m] */

@@ -45,6 +45,9 @@ struct wl_plan_solitary {
   double crest_x0;                     /* initial crest position [m] (initial condition) */
   double arrival_time;                 /* crest at the wall, estimated [s] */
   double end_time;                     /* simulated time of this case [s] */
+  double x_left;                       /* the modelled flume starts here [m] */
+  long n_fluid, n_boundary;            /* estimated particles */
+  double particle_steps;               /* estimated to end_time */
 };
 
 struct wl_plan_explosion {
@@ -68,6 +71,9 @@ struct wl_plan_explosion {
   int thrown_parts;
   double arrival_time;              /* leading wave at the wall, estimated [s] */
   double end_time;                  /* simulated time of this case [s] */
+  double x_left;                    /* the modelled flume starts here [m] */
+  long n_fluid, n_boundary;         /* estimated particles */
+  double particle_steps;            /* estimated to end_time */
 };
 
 enum { WL_PLAN_MAX_NOTES = 12 };
@@ -82,7 +88,8 @@ struct wl_plan {
   double c0;                        /* numerical speed of sound [m/s] */
   double dt;                        /* estimated time step, CFL condition [s] */
   double fluid_area;                /* wetted flume section up to the wall [m^2] (2D) */
-  long n_fluid, n_boundary;         /* estimated particle counts */
+  double land_length;               /* land modelled behind the seawall [m] */
+  long n_fluid, n_boundary;         /* estimated particles of the largest case */
   double memory_bytes;              /* estimated solver memory */
   double particle_steps;            /* estimated for all cases */
   double cpu_seconds;               /* estimated on the reference CPU rate */

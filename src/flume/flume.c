@@ -92,7 +92,7 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
     return wl_error_set(err, WL_EINPUT, "%s: the scenario has no explosion load case", s->path);
 
   const double dp = plan->dp, depth = plan->h;
-  const double xw = s->wall.x.q.si, L = s->domain.length.q.si;
+  const double xw = s->wall.x.q.si;
   f->depth = depth;
   f->x_wall = xw;
   f->z_toe = wl_scenario_bed_z(s, xw);
@@ -106,8 +106,10 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
   struct surface surf = {load, depth, NULL, 0, 0, 0, 0, 0};
   const struct wl_plan_solitary *ps = &plan->solitary;
   const struct wl_plan_explosion *px = &plan->explosion;
+  double x_left = 0.0; /* where the modelled flume starts (plan) */
   if (load == WL_CASE_SOLITARY) {
     rise = ps->wave.H;
+    x_left = ps->paddle ? 0.0 : ps->x_left;
     f->has_paddle = ps->paddle;
     if (!ps->paddle) {
       surf.wave = &ps->wave;
@@ -120,6 +122,7 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
     surf.r0 = px->r0;
     surf.xc = px->x_center;
     rise = 2.0 * px->eta0; /* a lip of up to 2 eta0 (plane lip) */
+    x_left = px->x_left;
     f->t_end = px->end_time;
   } else {
     f->t_end = s->run.end_time.is_auto ? 10.0 : s->run.end_time.q.si;
@@ -154,8 +157,9 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
   double thick = layers * dp;
 
   double z_top = fmax(f->z_crest, depth) + fmax(3.0 * rise, 0.5 * depth) + thrown_top;
-  f->cfg.lo[0] = -thick - 2 * dp;
-  f->cfg.hi[0] = L + thick + 2 * dp;
+  f->x_left = x_left;
+  f->cfg.lo[0] = x_left - thick - 2 * dp;
+  f->cfg.hi[0] = xw + plan->land_length + thick + 2 * dp;
   f->cfg.lo[1] = -thick - 2 * dp;
   f->cfg.hi[1] = z_top + thick + 2 * dp;
 
@@ -168,8 +172,8 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
   double vx[MAXV], vz[MAXV];
   int nv = 0;
   if (!f->has_paddle) {
-    vx[nv] = 0.0, vz[nv++] = z_top;
-    vx[nv] = 0.0, vz[nv++] = 0.0;
+    vx[nv] = x_left, vz[nv++] = z_top;
+    vx[nv] = x_left, vz[nv++] = wl_scenario_bed_z(s, x_left);
   } else {
     vx[nv] = -thick - dp, vz[nv++] = 0.0; /* under the piston's layers */
   }
@@ -180,8 +184,10 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
   }
   vx[nv] = xw, vz[nv++] = f->z_toe;
   vx[nv] = xw, vz[nv++] = f->z_crest;
-  vx[nv] = L, vz[nv++] = f->z_crest;
-  vx[nv] = L, vz[nv++] = z_top;
+  /* Land behind the wall only as far as overtopping water can use it. */
+  double x_end = xw + plan->land_length;
+  vx[nv] = x_end, vz[nv++] = f->z_crest;
+  vx[nv] = x_end, vz[nv++] = z_top;
   st = wl_scene_boundary_polyline(&sc, vx, vz, nv, layers, WL_KIND_FIXED, 0, &f->cfg, err);
   if (!st && f->has_paddle)
     st = wl_scene_piston(&sc, 0.0, 0.0, z_top, layers, WL_FLUME_BODY_PADDLE, err);
@@ -189,14 +195,14 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
   /* Fluid between the left end and the wall, under the initial surface. */
   double bx[WL_SCENARIO_MAX_BED + 2], bz[WL_SCENARIO_MAX_BED + 2];
   int nb = 0;
-  bx[nb] = 0.0, bz[nb++] = 0.0;
+  bx[nb] = x_left, bz[nb++] = wl_scenario_bed_z(s, x_left);
   for (int i = 0; i < s->n_bed; i++) {
     double xb = s->bed[i].from.q.si;
-    if (xb <= 0.0) continue;
+    if (xb <= x_left) continue;
     bx[nb] = xb, bz[nb++] = wl_scenario_bed_z(s, xb);
   }
   bx[nb] = xw, bz[nb++] = f->z_toe;
-  if (!st) st = wl_scene_fluid_surface(&sc, 0.0, xw, bx, bz, nb, surface_z, &surf, err);
+  if (!st) st = wl_scene_fluid_surface(&sc, x_left, xw, bx, bz, nb, surface_z, &surf, err);
   if (!st && surf.wave) wl_scene_fluid_velocity(&sc, solitary_velocity, &surf);
   for (int i = 0; !st && i < n_parts; i++) {
     const struct wl_explosion_part *pt = &parts[i];

@@ -18,6 +18,13 @@
 /* Time for the explosion's wave train to pass the wall, as a multiple of the
  * shallow-water travel time of its leading edge. */
 #define EXPLOSION_TRAIN_FACTOR 1.5
+/* Land modelled behind the seawall, closed by an end wall: at least
+ * LAND_MIN [m], or LAND_PER_HEIGHT wall heights (overtopping jets land
+ * within a few crest heights), never beyond the scenario's flume. */
+#define LAND_MIN 0.5
+#define LAND_PER_HEIGHT 5.0
+/* Distance kept between a gauge and a truncated left end of the flume [m]. */
+#define GAUGE_CLEARANCE 0.5
 /* Boundary layers of dynamic boundary particles (enough for the support 2h
  * of a Wendland kernel at h/dp up to 1.5). */
 #define BOUNDARY_LAYERS 3
@@ -69,12 +76,24 @@ static enum wl_status plan_solitary(const struct wl_scenario *s, struct wl_plan 
     /* The crest leaves the paddle about lambda/c after the start. */
     ps->arrival_time = ps->goring.lambda / c + xw / c;
   } else {
-    ps->crest_x0 = s->solitary.at.is_auto ? fmin(0.5 * xw, 0.75 * length) : s->solitary.at.q.si;
+    /* auto: the wave's front (1 % of H) just reaches the first slope's toe
+     * (or the wall), so the simulation starts where the wave meets the
+     * structure; seed 001 also starts its wave as an initial condition. */
+    double x_toe = xw;
+    for (int i = 0; i < s->n_bed; i++)
+      if (s->bed[i].slope.q.si != 0.0) {
+        x_toe = s->bed[i].from.q.si;
+        break;
+      }
+    ps->crest_x0 = s->solitary.at.is_auto ? fmax(x_toe - 0.5 * length, 0.5 * length)
+                                          : s->solitary.at.q.si;
     if (!s->solitary.at.is_auto && ps->crest_x0 < 0.5 * length)
       note(p, "loads.solitary.at = %.3g m puts the crest within half a wave length (%.3g m) of "
-              "the paddle: the wave's front is cut there",
+              "the left end: the wave's tail is cut there",
            ps->crest_x0, 0.5 * length);
     ps->arrival_time = (xw - ps->crest_x0) / c;
+    /* Model only what the wave needs: the flume starts behind its tail. */
+    ps->x_left = fmax(0.0, ps->crest_x0 - 0.5 * length);
   }
   ps->end_time = ps->arrival_time + LOAD_PASSES * length / c;
   if (ps->wave.eps > WL_WAVES_EPS_GRIMSHAW_ACCURATE) {
@@ -200,6 +219,11 @@ static enum wl_status plan_explosion(const struct wl_scenario *s, struct wl_plan
    * than sqrt(g h). Run until the slowest part that matters (the train
    * behind the leading wave) has reached the wall. */
   px->end_time = EXPLOSION_TRAIN_FACTOR * (xw - px->x_center + 2.0 * px->extent) / c_lin;
+  /* The left end may come as close as lets the wave reflected there reach
+   * the wall only after the end time: it travels 2 (x_c - extent - x_left)
+   * further than the direct wave. */
+  px->x_left = fmax(0.0, px->x_center - px->extent -
+                             0.5 * c_lin * (px->end_time - px->arrival_time) - 2.0 * px->extent);
   if (!px->conserves_mass)
     note(p, "crater shape %s does not conserve mass in %dD (net %+.4g %s): the water level "
             "after the waves settle differs from the scenario's depth",
@@ -215,19 +239,41 @@ static enum wl_status plan_explosion(const struct wl_scenario *s, struct wl_plan
   return WL_OK;
 }
 
-static void plan_resolution(const struct wl_scenario *s, struct wl_plan *p) {
-  double xw = s->wall.x.q.si;
-  /* Wetted section up to the wall, by the trapezoid rule on the bed segments
-   * (exact for a piecewise-linear bed when sampled at its corners). */
-  double area = 0.0, x_prev = 0.0, d_prev = p->h;
+/* Wetted section between x0 and the wall [m^2], by the trapezoid rule on
+ * the bed's corners (exact for a piecewise-linear bed). */
+static double wet_area(const struct wl_scenario *s, double h, double x0) {
+  double xw = s->wall.x.q.si, area = 0.0, x_prev = x0;
+  double d_prev = h - wl_scenario_bed_z(s, x0);
   for (int i = 0; i <= s->n_bed; i++) {
     double x = i < s->n_bed ? s->bed[i].from.q.si : xw;
-    double d = p->h - wl_scenario_bed_z(s, x);
+    if (x <= x0) continue;
+    double d = h - wl_scenario_bed_z(s, x);
     area += 0.5 * (d + d_prev) * (x - x_prev);
     x_prev = x;
     d_prev = d;
   }
-  p->fluid_area = area;
+  return area;
+}
+
+/* Particles of one case whose flume starts at x_left, and its
+ * particle-steps to t_end. */
+static void case_cost(const struct wl_scenario *s, struct wl_plan *p, double x_left, double t_end,
+                      long *n_fluid, long *n_boundary, double *particle_steps) {
+  double xw = s->wall.x.q.si;
+  double area = wet_area(s, p->h, x_left);
+  double wall_top = wl_scenario_bed_z(s, xw) + s->wall.height.q.si;
+  /* bed and land to the end of the flume, left end and seawall faces */
+  double perimeter = (xw + p->land_length - x_left) + 2.0 * wall_top + p->h;
+  double across = p->dims == 3 ? s->domain.width.q.si / p->dp : 1.0;
+  *n_fluid = (long)(area / (p->dp * p->dp) * across);
+  *n_boundary = (long)(BOUNDARY_LAYERS * perimeter / p->dp * across);
+  *particle_steps = (double)(*n_fluid + *n_boundary) * t_end / p->dt;
+}
+
+static void plan_resolution(const struct wl_scenario *s, struct wl_plan *p) {
+  p->fluid_area = wet_area(s, p->h, 0.0);
+  p->land_length = fmin(s->domain.length.q.si - s->wall.x.q.si,
+                        fmax(LAND_MIN, LAND_PER_HEIGHT * s->wall.height.q.si));
   double smallest = INFINITY;
   if (p->solitary.present) smallest = fmin(smallest, p->solitary.wave.H);
   if (p->explosion.present) smallest = fmin(smallest, p->explosion.eta0);
@@ -243,27 +289,24 @@ static void plan_resolution(const struct wl_scenario *s, struct wl_plan *p) {
   if (p->explosion.present) h_max = fmax(h_max, p->h + p->explosion.eta0);
   p->c0 = s->numerics.coefsound.q.si * sqrt(p->g * h_max);
   p->dt = s->numerics.cfl.q.si * p->h_sml / p->c0;
-  double width = p->dims == 3 ? s->domain.width.q.si : p->dp;
-  p->n_fluid = (long)(area * width / (p->dp * p->dp * (p->dims == 3 ? p->dp : p->dp)));
-  if (p->dims == 2) p->n_fluid = (long)(area / (p->dp * p->dp));
-  double wall_top = wl_scenario_bed_z(s, xw) + s->wall.height.q.si;
-  double perimeter = xw + p->h + wall_top + 0.5; /* bed, paddle, wall */
-  p->n_boundary = (long)(BOUNDARY_LAYERS * perimeter / p->dp *
-                         (p->dims == 3 ? s->domain.width.q.si / p->dp : 1.0));
-  long n = p->n_fluid + p->n_boundary;
-  p->memory_bytes = BYTES_PER_PARTICLE * (double)n;
-  double t_all = 0.0;
+  long n_max = 0;
   if (p->solitary.present) {
-    double t = s->run.end_time.is_auto ? p->solitary.end_time : s->run.end_time.q.si;
-    p->solitary.end_time = t;
-    t_all += t;
+    struct wl_plan_solitary *ps = &p->solitary;
+    if (!s->run.end_time.is_auto) ps->end_time = s->run.end_time.q.si;
+    case_cost(s, p, ps->x_left, ps->end_time, &ps->n_fluid, &ps->n_boundary, &ps->particle_steps);
+    p->particle_steps += ps->particle_steps;
+    if (ps->n_fluid + ps->n_boundary > n_max) n_max = ps->n_fluid + ps->n_boundary;
+    p->n_fluid = ps->n_fluid, p->n_boundary = ps->n_boundary;
   }
   if (p->explosion.present) {
-    double t = s->run.end_time.is_auto ? p->explosion.end_time : s->run.end_time.q.si;
-    p->explosion.end_time = t;
-    t_all += t;
+    struct wl_plan_explosion *px = &p->explosion;
+    if (!s->run.end_time.is_auto) px->end_time = s->run.end_time.q.si;
+    case_cost(s, p, px->x_left, px->end_time, &px->n_fluid, &px->n_boundary, &px->particle_steps);
+    p->particle_steps += px->particle_steps;
+    if (px->n_fluid + px->n_boundary > n_max)
+      n_max = px->n_fluid + px->n_boundary, p->n_fluid = px->n_fluid, p->n_boundary = px->n_boundary;
   }
-  p->particle_steps = (double)n * t_all / p->dt;
+  p->memory_bytes = BYTES_PER_PARTICLE * (double)n_max;
   p->cpu_seconds = p->particle_steps / WL_PLAN_CPU_RATE;
 }
 
@@ -280,6 +323,12 @@ enum wl_status wl_plan_make(const struct wl_scenario *s, struct wl_plan *p,
     return st;
   }
   if (s->explosion.present && (st = plan_explosion(s, p, err))) return st;
+  /* Gauges stay in the water of every case. */
+  for (int i = 0; i < s->n_gauges; i++) {
+    double xg = s->gauges[i].x.q.si - GAUGE_CLEARANCE;
+    if (p->solitary.present && xg < p->solitary.x_left) p->solitary.x_left = fmax(0.0, xg);
+    if (p->explosion.present && xg < p->explosion.x_left) p->explosion.x_left = fmax(0.0, xg);
+  }
   plan_resolution(s, p);
   return WL_OK;
 }
@@ -315,6 +364,8 @@ void wl_plan_write(const struct wl_plan *p, FILE *out) {
       fprintf(out, "    %-34s %12.5g m\n", "initial crest position", ps->crest_x0);
     fprintf(out, "    %-34s %12.5g s\n", "arrival at the wall", ps->arrival_time);
     fprintf(out, "    %-34s %12.5g s\n", "end time", ps->end_time);
+    fprintf(out, "    %-34s %12.5g m      (%ld fluid + %ld boundary particles, %.3g particle-steps)\n",
+            "flume modelled from x", ps->x_left, ps->n_fluid, ps->n_boundary, ps->particle_steps);
   }
   if (p->explosion.present) {
     const struct wl_plan_explosion *px = &p->explosion;
@@ -354,6 +405,8 @@ void wl_plan_write(const struct wl_plan *p, FILE *out) {
       fprintf(out, "    model: thrown mass in %d parts (seed 000)\n", px->thrown_parts);
     fprintf(out, "    %-34s %12.5g s\n", "leading wave at the wall", px->arrival_time);
     fprintf(out, "    %-34s %12.5g s\n", "end time", px->end_time);
+    fprintf(out, "    %-34s %12.5g m      (%ld fluid + %ld boundary particles, %.3g particle-steps)\n",
+            "flume modelled from x", px->x_left, px->n_fluid, px->n_boundary, px->particle_steps);
   }
   fprintf(out, "\nResolution and cost\n");
   fprintf(out, "  %-36s %dD\n", "dimension", p->dims);
@@ -362,8 +415,8 @@ void wl_plan_write(const struct wl_plan *p, FILE *out) {
           p->h_sml / p->dp);
   fprintf(out, "  %-36s %12.5g m/s\n", "speed of sound c0", p->c0);
   fprintf(out, "  %-36s %12.5g s\n", "time step (CFL estimate)", p->dt);
-  fprintf(out, "  %-36s %12ld        (+ %ld boundary)\n", "fluid particles", p->n_fluid,
-          p->n_boundary);
+  fprintf(out, "  %-36s %12ld        (+ %ld boundary; the largest case)\n", "fluid particles",
+          p->n_fluid, p->n_boundary);
   fprintf(out, "  %-36s %12.4g MiB\n", "memory (estimate)", p->memory_bytes / 1048576.0);
   fprintf(out, "  %-36s %12.4g\n", "particle-steps, all cases", p->particle_steps);
   fprintf(out, "  %-36s %12.4g s      (at %.2g particle-steps/s)\n", "CPU runtime (estimate)",

@@ -128,7 +128,7 @@ static const struct wl_key run_keys[] = {
 static const struct wl_key numerics_keys[] = {
     {"coefh", KT_QTY, WL_DIM_NONE, OFF(numerics.coefh), NULL, 0.5, 2.0, 0, 0, "1.0", NULL, NO_FLAG,
      0, "h = coefh*sqrt(dim)*dp (DualSPHysics convention)"},
-    {"coefsound", KT_QTY, WL_DIM_NONE, OFF(numerics.coefsound), NULL, 5, 100, 0, 0, "20", NULL,
+    {"coefsound", KT_QTY, WL_DIM_NONE, OFF(numerics.coefsound), NULL, 5, 100, 0, 0, "10", NULL,
      NO_FLAG, 0, "c0 = coefsound*sqrt(g*h_max)"},
     {"cfl", KT_QTY, WL_DIM_NONE, OFF(numerics.cfl), NULL, 0, 1, 1, 0, "0.2", NULL, NO_FLAG, 0,
      "Courant number of the variable time step"},
