@@ -52,6 +52,7 @@ struct wl_flume {
   double probe_z[WL_FLUME_MAX_PROBES];
   int n_gauges;
   double gauge_x[WL_SCENARIO_MAX_GAUGES + 1]; /* scenario gauges, then one at the wall face */
+  double gauge_bed[WL_SCENARIO_MAX_GAUGES + 1]; /* bed height under each gauge [m] */
   char gauge_name[WL_SCENARIO_MAX_GAUGES + 1][64];
   double t_end;                    /* simulated time of this case [s] */
 };

@@ -151,4 +151,31 @@ const char *wl_report_section_type_name(enum wl_report_section_type type);
 /* The heading a section of `type` gets when its template gives no title. */
 const char *wl_report_section_default_title(enum wl_report_section_type type);
 
+/* ---- rendering ------------------------------------------------------------------ */
+
+/* Render the design report of an assessment to the PDF `pdf_path` from
+ * `results_h5` alone (the results.h5 of `wallload assess`, with the particle
+ * snapshots particles_<case>.h5 read from its directory when there) and a
+ * template. The stored scenario text is re-parsed and re-planned for the
+ * bathymetry and the derived initial conditions; peaks are recomputed from
+ * the stored series with the definitions of loads.h (so they equal
+ * summary.json's).
+ *
+ * template_path: a template file; NULL: the stored scenario's
+ * report.template (default "design"), looked up as a file (a path as given,
+ * beside the scenario file or beside results.h5; a name as NAME.yaml in
+ * $WALLLOAD_TEMPLATE_DIR, ./report_templates, report_templates beside or
+ * above the executable); "design" falls back to a built-in copy of
+ * report_templates/design.yaml.
+ *
+ * A missing load case, an unstable or short record, missing snapshots or a
+ * stored scenario this version cannot re-read are said on the pages, not
+ * errors. Returns WL_OK; WL_EUSAGE (a NULL or empty path); WL_EINPUT (a bad
+ * template, "file:line:col: key: ..."; a results file that is not one);
+ * WL_EIO (results or template unreadable, PDF not writable); WL_ENOMEM.
+ * The PDF is written as pdf_path.part and renamed when complete; on failure
+ * no file is left at pdf_path (an existing one is kept). Nothing prints. */
+enum wl_status wl_report_render(const char *results_h5, const char *template_path,
+                                const char *pdf_path, struct wl_error *err);
+
 #endif

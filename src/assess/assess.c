@@ -14,6 +14,7 @@
 #include "assess_private.h"
 #include "wallload/backend.h"
 #include "wallload/config.h"
+#include "wallload/report.h"
 #include "wallload/sph/interact.h"
 #include "wallload/store.h"
 
@@ -172,7 +173,8 @@ static enum wl_status on_output(void *user, struct wl_sph_sim *sim, double t,
   r->t[row] = t;
   for (int g = 0; g < f->n_gauges; g++) {
     double x = f->gauge_x[g];
-    double z = wl_sph_probe_elevation(rc->probe, x, 0.0, cfg->lo[1], cfg->hi[1], 0.0);
+    /* scan up from the bed: a dry gauge reads the bed, not the domain's floor */
+    double z = wl_sph_probe_elevation(rc->probe, x, 0.0, f->gauge_bed[g], cfg->hi[1], 0.0);
     r->eta[row * (size_t)r->n_gauges + (size_t)g] = z - f->depth;
   }
   /* Wall probes read the fluid below the free surface at the wall (the
@@ -401,6 +403,18 @@ enum wl_status wl_assess_run(const struct wl_scenario *s, const struct wl_plan *
     if ((st = write_results(s, plan, res, err))) return st;
     if (c->status == WL_EINTERRUPTED) break;
     if (c->status != WL_OK && c->status != WL_EUNSTABLE) break;
+  }
+  /* The design report, from the stored results alone (as `wallload
+   * report` would); a report failure never hides a run failure. */
+  char res_h5[600], pdf[600];
+  snprintf(res_h5, sizeof res_h5, "%s/results.h5", res->out_dir);
+  snprintf(pdf, sizeof pdf, "%s/report.pdf", res->out_dir);
+  struct wl_error rerr;
+  wl_error_clear(&rerr);
+  enum wl_status rst = wl_report_render(res_h5, NULL, pdf, &rerr);
+  if (rst && overall == WL_OK) {
+    *err = rerr;
+    return rst;
   }
   if (overall != WL_OK) {
     *err = first;

@@ -20,7 +20,8 @@ static void usage(FILE *out) {
           "                      conditions and what a run would cost\n"
           "  convert OPTIONS     charge weight <-> crater <-> energy <-> equal-energy solitary\n"
           "                      wave (wallload convert --help)\n"
-          "  report RESULTS.h5 [-o FILE.pdf]   re-render the design report\n"
+          "  report RESULTS.h5 [-o FILE.pdf] [--template FILE]\n"
+          "                      re-render the design report from stored results\n"
           "  validate [CASE...]  run the reference cases, error against runtime\n"
           "  bench               particle-steps per second per backend\n"
           "  --version           print the version\n"
@@ -51,7 +52,9 @@ int main(int argc, char **argv) {
     st = wl_cli_convert(argc - 1, argv + 1, &err);
   } else if (!strcmp(cmd, "assess")) {
     st = wl_cli_assess(argc - 1, argv + 1, &err);
-  } else if (!strcmp(cmd, "report") || !strcmp(cmd, "validate") || !strcmp(cmd, "bench")) {
+  } else if (!strcmp(cmd, "report")) {
+    st = wl_cli_report(argc - 1, argv + 1, &err);
+  } else if (!strcmp(cmd, "validate") || !strcmp(cmd, "bench")) {
     st = wl_error_set(&err, WL_EUNSUPPORTED,
                       "%s: this stage is not built yet in wallload %s (see the open issues)", cmd,
                       WL_VERSION);

@@ -249,10 +249,12 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
     f->probe_z[i] = f->z_toe + (i + 0.5) * (f->z_crest - f->z_toe) / n_probes;
   for (int i = 0; i < s->n_gauges; i++) {
     f->gauge_x[i] = s->gauges[i].x.q.si;
+    f->gauge_bed[i] = wl_scenario_bed_z(s, f->gauge_x[i]);
     snprintf(f->gauge_name[i], sizeof f->gauge_name[i], "%s", s->gauges[i].name.text);
   }
   f->n_gauges = s->n_gauges + 1;
   f->gauge_x[s->n_gauges] = f->probe_x;
+  f->gauge_bed[s->n_gauges] = f->z_toe;
   snprintf(f->gauge_name[s->n_gauges], sizeof f->gauge_name[0], "wall");
   return WL_OK;
 }

@@ -1,0 +1,691 @@
+/* sections.c: wl_report_render (results.h5 + template -> PDF), the helpers
+ * every section renderer shares, and the text-and-table sections: title
+ * page with the summary of findings and the input digest, peaks,
+ * convergence, run record (metadata). The figure sections are in
+ * sections_scene.c (scene, snapshots), sections_plots.c (gauges, loads)
+ * and sections_design.c (design formulae). */
+#define _POSIX_C_SOURCE 200809L /* localtime_r */
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "sections.h"
+#include "wallload/config.h"
+#include "wallload/report.h"
+
+#define DEFAULT_DIGITS 3 /* peaks when the template has no peaks section */
+#define TIME_DIGITS 3    /* times of peaks in running text */
+#define SHARE_DIGITS 2   /* percentages in running text */
+
+/* ---- shared helpers ---------------------------------------------------------------- */
+
+double *wl_report_scratch_alloc(struct wl_report_scratch *s, size_t n) {
+  if (s->n >= WL_REPORT_SCRATCH_MAX)
+    return NULL;
+  double *p = malloc((n ? n : 1) * sizeof *p);
+  if (p)
+    s->p[s->n++] = p;
+  return p;
+}
+
+double *wl_report_scratch_scaled(struct wl_report_scratch *s, const double *v, size_t n,
+                                 double divisor) {
+  if (!v)
+    return NULL;
+  double *p = wl_report_scratch_alloc(s, n);
+  if (p)
+    for (size_t i = 0; i < n; i++)
+      p[i] = v[i] / divisor;
+  return p;
+}
+
+void wl_report_scratch_free(struct wl_report_scratch *s) {
+  for (int i = 0; i < s->n; i++)
+    free(s->p[i]);
+  s->n = 0;
+}
+
+const char *wl_report_fmt(double v, int sig, char *buf, size_t size) {
+  wl_report_format_sig(v, sig, buf, size);
+  return buf;
+}
+
+const char *wl_report_case_label(int i) {
+  return i == WL_REPORT_CASE_SOLITARY ? "solitary wave" : "explosion wave";
+}
+
+enum wl_status wl_report_section_begin(struct wl_report_ctx *c, const struct wl_report_section *s,
+                                       struct wl_error *err) {
+  enum wl_status st = WL_OK;
+  if (s->page_break)
+    st = wl_report_break_page(c->doc, err);
+  if (!st && s->title[0])
+    st = wl_report_add_heading(c->doc, 1, s->title, err);
+  if (!st && s->text[0])
+    st = wl_report_add_paragraph(c->doc, s->text, err);
+  return st;
+}
+
+enum wl_status wl_report_paragraphf(struct wl_report_doc *d, struct wl_error *err, const char *fmt,
+                                    ...) {
+  char buf[4096];
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(buf, sizeof buf, fmt, ap);
+  va_end(ap);
+  return wl_report_add_paragraph(d, buf, err);
+}
+
+int wl_report_governs(double a, double b) {
+  if (isfinite(a) && isfinite(b))
+    return a >= b ? WL_REPORT_CASE_SOLITARY : WL_REPORT_CASE_EXPLOSION;
+  if (isfinite(a))
+    return WL_REPORT_CASE_SOLITARY;
+  if (isfinite(b))
+    return WL_REPORT_CASE_EXPLOSION;
+  return -1;
+}
+
+/* Appending to a fixed buffer. */
+struct buf {
+  char *s;
+  size_t size, len;
+};
+
+static void put(struct buf *b, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+static void put(struct buf *b, const char *fmt, ...) {
+  if (b->len + 1 >= b->size)
+    return;
+  va_list ap;
+  va_start(ap, fmt);
+  int n = vsnprintf(b->s + b->len, b->size - b->len, fmt, ap);
+  va_end(ap);
+  if (n > 0)
+    b->len = b->len + (size_t)n < b->size ? b->len + (size_t)n : b->size - 1;
+}
+
+/* Signed percentage "+3.2 %" of (a - b) / b; "n/a" when undefined. */
+static const char *share(double a, double b, char *out, size_t size) {
+  double r = 100.0 * (a - b) / fabs(b);
+  char num[64];
+  if (!isfinite(r)) {
+    snprintf(out, size, "n/a");
+    return out;
+  }
+  wl_report_format_sig(r, SHARE_DIGITS, num, sizeof num);
+  snprintf(out, size, "%s%s %%", r > 0 ? "+" : "", num);
+  return out;
+}
+
+/* ---- title page -------------------------------------------------------------------- */
+
+static void today(char *out, size_t size) {
+  time_t now = time(NULL);
+  struct tm tm;
+  if (localtime_r(&now, &tm))
+    strftime(out, size, "%Y-%m-%d", &tm);
+  else
+    snprintf(out, size, "unknown");
+}
+
+/* The summary of findings, from the peaks the report recomputed. */
+static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
+  const struct wl_report_results *r = c->res;
+  const struct wl_report_case *cs = r->cases;
+  struct buf b = {out, size, 0};
+  out[0] = '\0';
+  int dg = c->digits;
+  char f[2][64], im[2][64], tf[2][64];
+  for (int i = 0; i < WL_REPORT_N_CASES; i++) {
+    wl_report_fmt(cs[i].force_peak.value / KILO, dg, f[i], sizeof f[i]);
+    wl_report_fmt(cs[i].impulse_total / KILO, dg, im[i], sizeof im[i]);
+    wl_report_fmt(cs[i].force_peak.time, TIME_DIGITS, tf[i], sizeof tf[i]);
+  }
+  const int S = WL_REPORT_CASE_SOLITARY, X = WL_REPORT_CASE_EXPLOSION;
+  if (r->n_cases == 0) {
+    put(&b, "The results hold no load case: there is nothing to compare. ");
+  } else if (r->n_cases == 1) {
+    int i = cs[S].present ? S : X;
+    put(&b,
+        "Only the %s case is in the results (no %s case was run), so the two cases are not "
+        "compared. Its peak force is %s kN/m (at t = %s s) and its impulse %s kN s/m per metre "
+        "of wall. ",
+        cs[i].name, cs[1 - i].name, f[i], tf[i], im[i]);
+  } else {
+    int gf = wl_report_governs(cs[S].force_peak.value, cs[X].force_peak.value);
+    int gi = wl_report_governs(cs[S].impulse_total, cs[X].impulse_total);
+    if (gf < 0) {
+      put(&b, "Neither case has a peak force in its record, so none governs. ");
+    } else if (gf == gi) {
+      put(&b,
+          "The %s case governs: its peak force, %s kN/m (at t = %s s), and its impulse, %s kN s/m "
+          "per metre of wall, exceed the %s case's %s kN/m and %s kN s/m. ",
+          cs[gf].name, f[gf], tf[gf], im[gf], cs[1 - gf].name, f[1 - gf], im[1 - gf]);
+    } else {
+      put(&b,
+          "Neither case governs both loads: the %s case has the larger peak force, %s kN/m "
+          "(at t = %s s) against %s kN/m",
+          cs[gf].name, f[gf], tf[gf], f[1 - gf]);
+      if (gi >= 0)
+        put(&b, ", the %s case the larger impulse, %s kN s/m against %s kN s/m", cs[gi].name,
+            im[gi], im[1 - gi]);
+      put(&b, " (per metre of wall). ");
+    }
+  }
+  int first = -1;
+  for (int i = 0; i < WL_REPORT_N_CASES; i++)
+    if (cs[i].present && cs[i].n) {
+      first = i;
+      break;
+    }
+  if (first >= 0) {
+    char cut[64], fs[64];
+    put(&b,
+        "Peak forces are those of the pressure probes on the wall face, %s (cut-off %s Hz); "
+        "impulses integrate the force in excess of the hydrostatic force at rest (%s kN/m). ",
+        cs[first].filtered ? "low-pass filtered" : "unfiltered (no filtered series stored)",
+        wl_report_fmt(cs[first].cutoff, 3, cut, sizeof cut),
+        wl_report_fmt(cs[first].static_force / KILO, dg, fs, sizeof fs));
+    put(&b, "Error indicator: the force summed on the wall's boundary particles peaks at");
+    int k = 0;
+    for (int i = 0; i < WL_REPORT_N_CASES; i++) {
+      if (!cs[i].present || !cs[i].n)
+        continue;
+      char fb[64], d[64], pc[64];
+      put(&b, "%s %s kN/m for the %s case (%s kN/m, %s from the probe value)", k ? " and" : "",
+          wl_report_fmt(cs[i].force_b_peak.value / KILO, dg, fb, sizeof fb), cs[i].name,
+          wl_report_fmt((cs[i].force_b_peak.value - cs[i].force_peak.value) / KILO, dg, d,
+                        sizeof d),
+          share(cs[i].force_b_peak.value, cs[i].force_peak.value, pc, sizeof pc));
+      k++;
+    }
+    put(&b, "; the two ways of measuring the wall load differ by about that much. ");
+  }
+  for (int i = 0; i < WL_REPORT_N_CASES; i++) {
+    if (!cs[i].present || !strcmp(cs[i].status, "complete"))
+      continue;
+    char tr[64], te[64];
+    put(&b,
+        "The %s case did not complete (%s at t = %s s of %s s%s%s); its values cover the "
+        "record up to then and can miss the peak. ",
+        cs[i].name, cs[i].status[0] ? cs[i].status : "status not stored",
+        wl_report_fmt(cs[i].time_reached, TIME_DIGITS, tr, sizeof tr),
+        wl_report_fmt(cs[i].end_time, TIME_DIGITS, te, sizeof te), cs[i].stopped[0] ? ": " : "",
+        cs[i].stopped);
+    if (cs[i].n == 0)
+      put(&b, "It stored no samples at all. ");
+  }
+}
+
+enum wl_status wl_report_render_title(struct wl_report_ctx *c, const struct wl_report_section *s,
+                                      struct wl_error *err) {
+  const struct wl_report_template *t = c->tpl;
+  const struct wl_report_results *r = c->res;
+  struct wl_report_doc *d = c->doc;
+  enum wl_status st = WL_OK;
+  if (s->page_break)
+    st = wl_report_break_page(d, err);
+  if (!st)
+    st = wl_report_add_title(d, t->title, t->subtitle[0] ? t->subtitle : NULL, err);
+  char date[64];
+  if (!strcmp(t->block.date, "auto") || !t->block.date[0])
+    today(date, sizeof date);
+  else
+    snprintf(date, sizeof date, "%s", t->block.date);
+  char made[160];
+  snprintf(made, sizeof made, "wallload %s, %s",
+           r->version[0] ? r->version : "(version not stored)",
+           r->created[0] ? r->created : "(time not stored)");
+  char by[160];
+  snprintf(by, sizeof by, "wallload %s", WL_VERSION);
+  struct {
+    const char *key, *text;
+  } rows[] = {
+      {"Project", t->block.project},
+      {"Client", t->block.client},
+      {"Reference", t->block.reference},
+      {"Revision", t->block.revision},
+      {"Prepared by", t->block.prepared_by},
+      {"Checked by", t->block.checked_by},
+      {"Date", date},
+      {"Scenario", r->scenario_name[0] ? r->scenario_name : "(not stored)"},
+      {"Scenario file", r->scenario_file[0] ? r->scenario_file : "(not stored)"},
+      {"Results", r->path},
+      {"Results written by", made},
+      {"Report rendered by", by},
+  };
+  struct wl_report_kv kv[sizeof rows / sizeof rows[0]];
+  int n = 0;
+  for (size_t i = 0; i < sizeof rows / sizeof rows[0]; i++) {
+    if (!rows[i].text || !rows[i].text[0])
+      continue;
+    kv[n++] = (struct wl_report_kv){rows[i].key, rows[i].text, 0, NULL, 0};
+  }
+  if (!st)
+    st = wl_report_add_kv_table(d, NULL, kv, n, err);
+  if (!st)
+    st = wl_report_paragraphf(d, err,
+                              "Input digest (SHA-256 of the scenario text stored with the "
+                              "results, %zu bytes):\n%s",
+                              r->scenario_len, r->digest);
+  if (!st && s->text[0])
+    st = wl_report_add_paragraph(d, s->text, err);
+  if (!st)
+    st = wl_report_add_heading(d, 3, "Summary of findings", err);
+  char text[4096];
+  summary(c, text, sizeof text);
+  if (!st)
+    st = wl_report_add_paragraph(d, text, err);
+  if (!st)
+    st = wl_report_break_page(d, err);
+  return st;
+}
+
+/* ---- peaks -------------------------------------------------------------------------- */
+
+enum wl_status wl_report_render_peaks(struct wl_report_ctx *c, const struct wl_report_section *s,
+                                      struct wl_error *err) {
+  const struct wl_report_results *r = c->res;
+  const struct wl_report_case *cs = r->cases;
+  struct wl_report_doc *d = c->doc;
+  enum wl_status st = wl_report_section_begin(c, s, err);
+  int dg = s->digits;
+  char cut[WL_REPORT_N_CASES][64];
+  for (int i = 0; i < WL_REPORT_N_CASES; i++)
+    wl_report_fmt(cs[i].cutoff, 3, cut[i], sizeof cut[i]);
+  if (!st) {
+    char cuts[256] = "";
+    struct buf b = {cuts, sizeof cuts, 0};
+    int k = 0;
+    for (int i = 0; i < WL_REPORT_N_CASES; i++)
+      if (cs[i].present)
+        put(&b, "%s%s Hz for the %s case", k++ ? ", " : "", cut[i], cs[i].name);
+    st = wl_report_paragraphf(
+        d, err,
+        "Peak force and peak moment are taken from the low-pass filtered series (zero-phase "
+        "Butterworth, cut-off c0/(8 d), d the water depth at the wall: %s), not from the raw "
+        "ones. Impulse is the time integral of the raw probe force minus the hydrostatic force "
+        "at rest, to the end of the record. Run-up is the highest water level at the wall face "
+        "above still water. Rise time and duration are those of the filtered force in excess "
+        "of the force at rest (10 %% of its peak). All per metre of wall.",
+        k ? cuts : "no case in the results");
+  }
+  static const struct wl_report_column cols0[] = {
+      {"case", NULL, WL_REPORT_ALIGN_LEFT, 0},
+      {"peak force", "kN/m", WL_REPORT_ALIGN_AUTO, 0},
+      {"at", "s", WL_REPORT_ALIGN_AUTO, 0},
+      {"impulse", "kN s/m", WL_REPORT_ALIGN_AUTO, 0},
+      {"peak moment", "kN m/m", WL_REPORT_ALIGN_AUTO, 0},
+      {"run-up", "m", WL_REPORT_ALIGN_AUTO, 0},
+      {"rise time", "s", WL_REPORT_ALIGN_AUTO, 0},
+      {"duration", "s", WL_REPORT_ALIGN_AUTO, 0},
+  };
+  enum { NC = 8 };
+  struct wl_report_column cols[NC];
+  memcpy(cols, cols0, sizeof cols);
+  for (int k = 1; k < NC; k++)
+    cols[k].sig = dg;
+  struct wl_report_cell cells[(WL_REPORT_N_CASES + 1) * NC];
+  int rows = 0;
+  static const struct wl_report_cell blank = {"", 0};
+  for (int i = 0; i < WL_REPORT_N_CASES; i++) {
+    const struct wl_report_case *k = &cs[i];
+    struct wl_report_cell *row = &cells[rows * NC];
+    row[0] = (struct wl_report_cell){k->name, 0};
+    if (!k->present) {
+      row[1] = (struct wl_report_cell){"not run", 0};
+      for (int j = 2; j < NC; j++)
+        row[j] = blank;
+    } else {
+      row[1] = (struct wl_report_cell){NULL, k->force_peak.value / KILO};
+      row[2] = (struct wl_report_cell){NULL, k->force_peak.time};
+      row[3] = (struct wl_report_cell){NULL, k->impulse_total / KILO};
+      row[4] = (struct wl_report_cell){NULL, k->moment_peak.value / KILO};
+      row[5] = (struct wl_report_cell){NULL, k->runup};
+      row[6] = (struct wl_report_cell){NULL, k->force_peak.rise_time};
+      row[7] = (struct wl_report_cell){NULL, k->force_peak.duration};
+    }
+    rows++;
+  }
+  if (r->n_cases == 2) {
+    struct wl_report_cell *row = &cells[rows * NC];
+    for (int j = 0; j < NC; j++)
+      row[j] = blank;
+    row[0].text = "governs";
+    int g;
+    g = wl_report_governs(cs[0].force_peak.value, cs[1].force_peak.value);
+    row[1].text = g < 0 ? "n/a" : cs[g].name;
+    g = wl_report_governs(cs[0].impulse_total, cs[1].impulse_total);
+    row[3].text = g < 0 ? "n/a" : cs[g].name;
+    g = wl_report_governs(cs[0].moment_peak.value, cs[1].moment_peak.value);
+    row[4].text = g < 0 ? "n/a" : cs[g].name;
+    g = wl_report_governs(cs[0].runup, cs[1].runup);
+    row[5].text = g < 0 ? "n/a" : cs[g].name;
+    rows++;
+  }
+  struct wl_report_table tab = {
+      "Peak loads per metre of wall (peak force and moment from the filtered series)", cols, NC,
+      cells, rows};
+  if (!st)
+    st = wl_report_add_table(d, &tab, err);
+
+  /* Probe force against boundary-particle force: the error indicator. */
+  static const struct wl_report_column ecols0[] = {
+      {"case", NULL, WL_REPORT_ALIGN_LEFT, 0},
+      {"at rest", "kN/m", WL_REPORT_ALIGN_AUTO, 0},
+      {"probe peak", "kN/m", WL_REPORT_ALIGN_AUTO, 0},
+      {"boundary peak", "kN/m", WL_REPORT_ALIGN_AUTO, 0},
+      {"difference", "kN/m", WL_REPORT_ALIGN_AUTO, 0},
+      {"difference", "% of probe", WL_REPORT_ALIGN_AUTO, 0},
+      {"boundary impulse", "kN s/m", WL_REPORT_ALIGN_AUTO, 0},
+  };
+  enum { NE = 7 };
+  struct wl_report_column ecols[NE];
+  memcpy(ecols, ecols0, sizeof ecols);
+  for (int k = 1; k < NE; k++)
+    ecols[k].sig = dg;
+  ecols[5].sig = 2;
+  struct wl_report_cell ecells[WL_REPORT_N_CASES * NE];
+  int erows = 0;
+  for (int i = 0; i < WL_REPORT_N_CASES; i++) {
+    const struct wl_report_case *k = &cs[i];
+    if (!k->present)
+      continue;
+    struct wl_report_cell *row = &ecells[erows * NE];
+    row[0] = (struct wl_report_cell){k->name, 0};
+    row[1] = (struct wl_report_cell){NULL, k->static_force / KILO};
+    row[2] = (struct wl_report_cell){NULL, k->force_peak.value / KILO};
+    row[3] = (struct wl_report_cell){NULL, k->force_b_peak.value / KILO};
+    row[4] = (struct wl_report_cell){NULL, (k->force_b_peak.value - k->force_peak.value) / KILO};
+    row[5] = (struct wl_report_cell){NULL, 100.0 * (k->force_b_peak.value - k->force_peak.value) /
+                                               fabs(k->force_peak.value)};
+    row[6] = (struct wl_report_cell){NULL, k->impulse_b_total / KILO};
+    erows++;
+  }
+  if (!st && erows) {
+    st = wl_report_add_paragraph(
+        d,
+        "The wall force is measured twice: by the pressure probes on the wall face (the "
+        "values above) and by summing the SPH forces on the wall's boundary particles. The "
+        "difference between the two is an indicator of the numerical error of the wall load "
+        "at this resolution (a convergence ladder gives a proper estimate).",
+        err);
+    struct wl_report_table et = {"Probe and boundary-particle wall force (filtered peaks)", ecols,
+                                 NE, ecells, erows};
+    if (!st)
+      st = wl_report_add_table(d, &et, err);
+  }
+  for (int i = 0; !st && i < WL_REPORT_N_CASES; i++) {
+    const struct wl_report_case *k = &cs[i];
+    if (!k->present)
+      st = wl_report_paragraphf(d, err,
+                                "The %s case is not in the results: the scenario or the "
+                                "run had no %s.",
+                                k->name, wl_report_case_label(i));
+    else if (strcmp(k->status, "complete"))
+      st = wl_report_paragraphf(d, err,
+                                "The %s case did not complete (%s%s%s): its peaks are those of "
+                                "the %zu samples recorded and may not be the peaks of the event.",
+                                k->name, k->status[0] ? k->status : "status not stored",
+                                k->stopped[0] ? ": " : "", k->stopped, k->n);
+  }
+  return st;
+}
+
+/* ---- convergence ----------------------------------------------------------------------- */
+
+enum wl_status wl_report_render_convergence(struct wl_report_ctx *c,
+                                            const struct wl_report_section *s,
+                                            struct wl_error *err) {
+  const struct wl_report_results *r = c->res;
+  enum wl_status st = wl_report_section_begin(c, s, err);
+  char asked[256] = "";
+  if (r->have_scenario && r->scenario.resolution.levels_given) {
+    struct buf b = {asked, sizeof asked, 0};
+    put(&b, "[");
+    for (int i = 0; i < r->scenario.resolution.n_levels; i++)
+      put(&b, "%s%s", i ? ", " : "", r->scenario.resolution.levels[i].text);
+    put(&b, "]");
+  }
+  if (!st && r->has_convergence)
+    st = wl_report_add_paragraph(c->doc,
+                                 "These results hold a /convergence group, but this version of "
+                                 "the report does not read it yet; nothing from it is shown.",
+                                 err);
+  if (!st && asked[0])
+    st = wl_report_paragraphf(
+        c->doc, err,
+        "The scenario asks for a convergence ladder (resolution.convergence: %s), but these "
+        "results hold a single resolution (dp = %g m): this version of wallload assess does not "
+        "run ladders yet. No convergence plot is drawn; the numerical error is indicated only "
+        "by the difference between the probe and boundary-particle wall forces (see the peak "
+        "loads).",
+        asked, r->dp);
+  else if (!st && !r->has_convergence)
+    st = wl_report_paragraphf(
+        c->doc, err,
+        "No convergence ladder was run for these results (a single resolution, dp = %g m), so "
+        "no convergence plot is drawn and the numerical error is indicated only by the "
+        "difference between the probe and boundary-particle wall forces (see the peak loads). "
+        "To ask for a ladder, add to the scenario\n"
+        "    resolution: { convergence: [1, 0.71, 0.5] }\n"
+        "(dp, dp/sqrt 2, dp/2) and run wallload assess again: the report then shows peak force, "
+        "impulse and runtime at each level with an estimate of the error.",
+        r->dp);
+  return st;
+}
+
+/* ---- metadata (run record) ------------------------------------------------------------- */
+
+static const char *value_text(const struct wl_scenario_value *v, char *out, size_t size) {
+  snprintf(out, size, "%s%s", v->text, v->given ? "" : " (default)");
+  return out;
+}
+
+enum wl_status wl_report_render_metadata(struct wl_report_ctx *c, const struct wl_report_section *s,
+                                         struct wl_error *err) {
+  const struct wl_report_results *r = c->res;
+  const struct wl_report_case *cs = r->cases;
+  struct wl_report_doc *d = c->doc;
+  enum wl_status st = wl_report_section_begin(c, s, err);
+  char threads[64], by[128], made[128];
+  snprintf(by, sizeof by, "wallload %s", WL_VERSION);
+  if (isfinite(r->threads))
+    snprintf(threads, sizeof threads, "%.0f", r->threads);
+  else
+    snprintf(threads, sizeof threads, "(not stored)");
+  snprintf(made, sizeof made, "wallload %s, %s", r->version[0] ? r->version : "?",
+           r->created[0] ? r->created : "time not stored");
+  struct wl_report_kv run[] = {
+      {"Results file", r->path, 0, NULL, 0},
+      {"Written by", made, 0, NULL, 0},
+      {"Rendered by", by, 0, NULL, 0},
+      {"Template", c->template_source, 0, NULL, 0},
+      {"Scenario", r->scenario_name[0] ? r->scenario_name : "(not stored)", 0, NULL, 0},
+      {"Scenario file", r->scenario_file[0] ? r->scenario_file : "(not stored)", 0, NULL, 0},
+      {"Backend", r->backend[0] ? r->backend : "(not stored)", 0, NULL, 0},
+      {"Threads", threads, 0, NULL, 0},
+      {"Particle spacing dp", NULL, r->dp, "m", 4},
+  };
+  if (!st)
+    st = wl_report_add_kv_table(d, "Run", run, (int)(sizeof run / sizeof run[0]), err);
+
+  static const struct wl_report_column rc[] = {
+      {"case", NULL, WL_REPORT_ALIGN_LEFT, 0},
+      {"dp", "m", WL_REPORT_ALIGN_AUTO, 4},
+      {"h", "m", WL_REPORT_ALIGN_AUTO, 4},
+      {"c0", "m/s", WL_REPORT_ALIGN_AUTO, 4},
+      {"particles", NULL, WL_REPORT_ALIGN_RIGHT, 0},
+      {"fluid", NULL, WL_REPORT_ALIGN_RIGHT, 0},
+      {"filter cut-off", "Hz", WL_REPORT_ALIGN_AUTO, 4},
+  };
+  static const struct wl_report_column tc[] = {
+      {"case", NULL, WL_REPORT_ALIGN_LEFT, 0},
+      {"status", NULL, WL_REPORT_ALIGN_LEFT, 0},
+      {"steps", NULL, WL_REPORT_ALIGN_RIGHT, 0},
+      {"simulated", "s", WL_REPORT_ALIGN_AUTO, 4},
+      {"planned", "s", WL_REPORT_ALIGN_AUTO, 4},
+      {"runtime", "s", WL_REPORT_ALIGN_AUTO, 4},
+      {"particle-steps/s", NULL, WL_REPORT_ALIGN_AUTO, 3},
+  };
+  struct wl_report_cell rcells[WL_REPORT_N_CASES * 7], tcells[WL_REPORT_N_CASES * 7];
+  char counts[WL_REPORT_N_CASES][3][32]; /* whole numbers, printed whole */
+  int n = 0;
+  for (int i = 0; i < WL_REPORT_N_CASES; i++) {
+    const struct wl_report_case *k = &cs[i];
+    if (!k->present)
+      continue;
+    struct wl_report_cell *a = &rcells[7 * n], *b = &tcells[7 * n];
+    a[0] = b[0] = (struct wl_report_cell){k->name, 0};
+    a[1] = (struct wl_report_cell){NULL, k->dp};
+    a[2] = (struct wl_report_cell){NULL, k->h};
+    a[3] = (struct wl_report_cell){NULL, k->c0};
+    snprintf(counts[n][0], sizeof counts[n][0], "%.0f", k->particles);
+    snprintf(counts[n][1], sizeof counts[n][1], "%.0f", k->fluid_particles);
+    snprintf(counts[n][2], sizeof counts[n][2], "%.0f", k->steps);
+    a[4] = (struct wl_report_cell){counts[n][0], 0};
+    a[5] = (struct wl_report_cell){counts[n][1], 0};
+    a[6] = (struct wl_report_cell){NULL, k->cutoff};
+    b[1] = (struct wl_report_cell){k->status[0] ? k->status : "?", 0};
+    b[2] = (struct wl_report_cell){counts[n][2], 0};
+    b[3] = (struct wl_report_cell){NULL, k->time_reached};
+    b[4] = (struct wl_report_cell){NULL, k->end_time};
+    b[5] = (struct wl_report_cell){NULL, k->runtime};
+    b[6] =
+        (struct wl_report_cell){NULL, k->runtime > 0 ? k->particles * k->steps / k->runtime : NAN};
+    n++;
+  }
+  if (!st && n) {
+    struct wl_report_table t1 = {"Resolution of each load case", rc, 7, rcells, n};
+    struct wl_report_table t2 = {"Run of each load case", tc, 7, tcells, n};
+    st = wl_report_add_table(d, &t1, err);
+    if (!st)
+      st = wl_report_add_table(d, &t2, err);
+  } else if (!st) {
+    st = wl_report_add_paragraph(d, "The results hold no load case.", err);
+  }
+  for (int i = 0; !st && i < WL_REPORT_N_CASES; i++) {
+    const struct wl_report_case *k = &cs[i];
+    if (!k->present)
+      st = wl_report_paragraphf(d, err, "The %s case is not in the results.", k->name);
+    else if (strcmp(k->status, "complete"))
+      st = wl_report_paragraphf(d, err, "The %s case stopped: %s%s%s.", k->name,
+                                k->status[0] ? k->status : "status not stored",
+                                k->stopped[0] ? ": " : "", k->stopped);
+  }
+
+  if (!st && r->have_scenario) {
+    const struct wl_scenario *sc = &r->scenario;
+    char v[10][160];
+    struct wl_report_kv num[] = {
+        {"coefh (h = coefh sqrt(dim) dp)", value_text(&sc->numerics.coefh, v[0], 160), 0, NULL, 0},
+        {"coefsound (c0 = coefsound sqrt(g h_max))", value_text(&sc->numerics.coefsound, v[1], 160),
+         0, NULL, 0},
+        {"CFL number", value_text(&sc->numerics.cfl, v[2], 160), 0, NULL, 0},
+        {"artificial viscosity alpha", value_text(&sc->numerics.alpha, v[3], 160), 0, NULL, 0},
+        {"viscosity", value_text(&sc->numerics.viscosity, v[4], 160), 0, NULL, 0},
+        {"laminar viscosity nu", value_text(&sc->numerics.nu, v[5], 160), 0, NULL, 0},
+        {"density diffusion", value_text(&sc->numerics.density_diffusion, v[6], 160), 0, NULL, 0},
+        {"shifting", value_text(&sc->numerics.shifting, v[7], 160), 0, NULL, 0},
+        {"output interval", value_text(&sc->run.output_interval, v[8], 160), 0, NULL, 0},
+        {"end time", value_text(&sc->run.end_time, v[9], 160), 0, NULL, 0},
+    };
+    st = wl_report_add_kv_table(d, "Numerical settings (from the stored scenario)", num,
+                                (int)(sizeof num / sizeof num[0]), err);
+  } else if (!st) {
+    st = wl_report_paragraphf(d, err, "Numerical settings are not shown: %s.", r->scenario_note);
+  }
+  if (!st && r->have_plan && r->plan.n_notes) {
+    char text[WL_PLAN_MAX_NOTES * 330 + 64];
+    struct buf b = {text, sizeof text, 0};
+    put(&b, "Notes of the plan (as wallload check prints them):");
+    for (int i = 0; i < r->plan.n_notes; i++)
+      put(&b, "\n- %s", r->plan.notes[i]);
+    st = wl_report_add_paragraph(d, text, err);
+  }
+  if (!st && s->scenario_text) {
+    st = wl_report_add_heading(d, 2, "Scenario file as run", err);
+    if (!st)
+      st = wl_report_paragraphf(d, err, "%s (SHA-256 %s):",
+                                r->scenario_file[0] ? r->scenario_file : "scenario", r->digest);
+    if (!st)
+      st = wl_report_add_preformatted(d, r->scenario_len ? r->scenario_text : "(not stored)", err);
+  }
+  return st;
+}
+
+/* ---- the report ---------------------------------------------------------------------- */
+
+typedef enum wl_status (*renderer)(struct wl_report_ctx *, const struct wl_report_section *,
+                                   struct wl_error *);
+
+static const renderer RENDERERS[WL_REPORT_SECTION_COUNT] = {
+    wl_report_render_title,  wl_report_render_scene,       wl_report_render_snapshots,
+    wl_report_render_gauges, wl_report_render_loads,       wl_report_render_peaks,
+    wl_report_render_design, wl_report_render_convergence, wl_report_render_metadata,
+};
+
+enum wl_status wl_report_render(const char *results_h5, const char *template_path,
+                                const char *pdf_path, struct wl_error *err) {
+  struct wl_report_template tpl;
+  wl_report_template_init(&tpl);
+  struct wl_report_ctx ctx;
+  memset(&ctx, 0, sizeof ctx);
+  enum wl_status st = WL_OK;
+  if (!results_h5 || !*results_h5 || !pdf_path || !*pdf_path)
+    return wl_error_set(err, WL_EUSAGE, "report: needs a results file and an output file");
+  /* A template named by the caller is checked first: a bad one fails fast. */
+  if (template_path) {
+    st = wl_report_template_load(template_path, &tpl, err);
+    snprintf(ctx.template_source, sizeof ctx.template_source, "%s", template_path);
+    if (st)
+      return st;
+  }
+  struct wl_report_results *res = malloc(sizeof *res);
+  if (!res) {
+    wl_report_template_clear(&tpl);
+    return wl_error_set(err, WL_ENOMEM, "report: no memory for the results");
+  }
+  st = wl_report_results_load(results_h5, res, err);
+  if (!st && !template_path)
+    st =
+        wl_report_template_resolve(res, &tpl, ctx.template_source, sizeof ctx.template_source, err);
+  struct wl_report_doc *doc = NULL;
+  if (!st) {
+    struct wl_report_doc_info info = {tpl.title, res->scenario_name[0] ? res->scenario_name : NULL,
+                                      tpl.company, WL_VERSION};
+    st = wl_report_doc_open(pdf_path, &info, &doc, err);
+  }
+  if (!st) {
+    ctx.doc = doc;
+    ctx.tpl = &tpl;
+    ctx.res = res;
+    ctx.digits = DEFAULT_DIGITS;
+    for (int i = 0; i < tpl.n_sections; i++)
+      if (tpl.sections[i].type == WL_REPORT_SECTION_PEAKS) {
+        ctx.digits = tpl.sections[i].digits;
+        break;
+      }
+    for (int i = 0; !st && i < tpl.n_sections; i++) {
+      const struct wl_report_section *s = &tpl.sections[i];
+      if ((int)s->type < 0 || s->type >= WL_REPORT_SECTION_COUNT)
+        continue;
+      st = RENDERERS[s->type](&ctx, s, err);
+    }
+    if (!st)
+      st = wl_report_doc_finish(doc, err);
+  }
+  wl_report_doc_free(doc);
+  wl_report_results_clear(res);
+  free(res);
+  wl_report_template_clear(&tpl);
+  return st;
+}
