@@ -53,6 +53,7 @@ static void run(const char *name, const char *text, enum wl_load_case load, doub
 
 int main(void) {
   gsl_set_error_handler_off();
+  setvbuf(stdout, NULL, _IOLBF, 0); /* progress lines survive a timeout */
   const int quick = getenv("WL_TEST_QUICK") != NULL;
   /* H/h = 0.6 on 0.2 m: the crest reaches the wall at about 1.5 s and the
    * plunging run-up and its fall follow. */

@@ -103,6 +103,7 @@ static void run(double eps, double t_run, double dp) {
 
 int main(void) {
   gsl_set_error_handler_off();
+  setvbuf(stdout, NULL, _IOLBF, 0); /* progress lines survive a timeout */
   const int quick = getenv("WL_TEST_QUICK") != NULL;
   run(0.4, quick ? 1.5 : 5.0, 0.01);
   run(0.2, quick ? 1.5 : 5.0, 0.01);

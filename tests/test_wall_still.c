@@ -26,6 +26,7 @@
 
 int main(void) {
   gsl_set_error_handler_off();
+  setvbuf(stdout, NULL, _IOLBF, 0); /* progress lines survive a timeout */
   const int quick = getenv("WL_TEST_QUICK") != NULL;
   const char *text = "scenario: still\nwater: {depth: 0.5 m}\ndomain: {length: 2.5 m}\n"
                      "wall: {x: 2 m, height: 0.8 m, probes: 40}\n"

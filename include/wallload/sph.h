@@ -56,6 +56,23 @@ void wl_sph_config_default(struct wl_sph_config *cfg, int dim, double dp, double
 enum wl_status wl_sph_config_add_wall(struct wl_sph_config *cfg, double ax, double az, double bx,
                                       double bz, double thickness, struct wl_error *err);
 
+/* ---- cell lists (host side; the physics side is sph/cells.h) ----------- */
+
+/* Most cells a domain box may have (2 int arrays of twice this size). */
+#define WL_SPH_CELLS_MAX 200000000
+
+/* The grid of cells of side 2h over cfg's domain box. WL_EINPUT for an
+ * empty or non-finite box or more than WL_SPH_CELLS_MAX cells. */
+enum wl_status wl_sph_grid_make(const struct wl_sph_config *cfg, const struct wl_sph_const *k,
+                                struct wl_sph_grid *g, struct wl_error *err);
+
+/* Stable counting sort of n particles by key (group * n_cells + cell, see
+ * sph/cells.h; key[i] < 2 n_cells): begin (2 n_cells + 1 entries) gets the
+ * first sorted index of every key, perm[s] the particle at sorted position
+ * s. cursor: scratch of 2 n_cells entries. No allocation. */
+void wl_sph_cells_sort(const struct wl_sph_grid *g, const unsigned int *key, int n, int *begin,
+                       int *cursor, unsigned int *perm);
+
 /* ---- particles --------------------------------------------------------- */
 
 /* The field table (name, unit, type, flags) and its length. */
@@ -74,6 +91,13 @@ size_t wl_field_type_size(enum wl_field_type type);
  * dimensions; with_work: also the per-step arrays (backends need them,
  * a host copy of the state does not). For `wallload check`. */
 size_t wl_particles_bytes(int dim, int capacity, int with_work);
+
+/* Bytes a CPU run of n particles in cfg's domain needs: the particle
+ * arrays with work fields, the second state copy the sort fills, the
+ * sorted keys and the two cell index arrays (2 n_cells + 1 ints each). For
+ * `wallload check` and the run metadata; 0 if cfg's box or parameters are
+ * invalid. */
+size_t wl_sph_memory_bytes(const struct wl_sph_config *cfg, int n);
 
 /* Allocate the arrays of p for `capacity` particles (zeroed), state fields
  * always, work fields if with_work. n = n_bound = 0. Returns WL_OK;
@@ -118,6 +142,7 @@ struct wl_sph_progress {
   double wall_s;     /* wall-clock time since the run started [s] */
   double steps_per_s;
   double particle_steps_per_s;
+  double eta_s;      /* estimated wall-clock seconds to t_end at the rate so far */
   int n;             /* particles */
 };
 
@@ -209,10 +234,10 @@ int wl_sph_probe_interp(const struct wl_sph_probe *pr, const double *x, double *
 
 /* Free-surface elevation [m] on the vertical line at (x, y) (y ignored in
  * 2D), scanning z upward from z_lo to z_hi in steps of dz [m] (<= 0:
- * dp/10, DualSPHysics' default): the first z where S falls below
- * coefmasslimit (0.4 in 2D, 0.5 in 3D, see sph/probe.h) after it was
- * above, linearly interpolated between samples. z_lo when the line is dry
- * from z_lo (S never above the limit); z_hi when never below. */
+ * dp/10, DualSPHysics' default): the top of the highest stretch where S is
+ * at least coefmasslimit (0.4 in 2D, 0.5 in 3D, see sph/probe.h), linearly
+ * interpolated between samples. z_lo when the line is dry (S never above
+ * the limit); z_hi when still wet there. */
 double wl_sph_probe_elevation(const struct wl_sph_probe *pr, double x, double y, double z_lo,
                               double z_hi, double dz);
 

@@ -253,7 +253,10 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
     snprintf(f->gauge_name[i], sizeof f->gauge_name[i], "%s", s->gauges[i].name.text);
   }
   f->n_gauges = s->n_gauges + 1;
-  f->gauge_x[s->n_gauges] = f->probe_x;
+  /* The run-up gauge stands one kernel support (2h) from the face, where the
+   * kernel is not cut by the wall (S would not reach the surface limit
+   * closer in); at maximum run-up the surface there is level with the face. */
+  f->gauge_x[s->n_gauges] = xw - 2.0 * (double)k.h;
   f->gauge_bed[s->n_gauges] = f->z_toe;
   snprintf(f->gauge_name[s->n_gauges], sizeof f->gauge_name[0], "wall");
   return WL_OK;

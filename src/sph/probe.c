@@ -12,6 +12,7 @@ struct wl_sph_probe {
   struct wl_sph_const k;
   struct wl_sph_grid grid;
   int *begin;        /* 2 n_cells + 1 */
+  int *cursor;       /* n_cells: counting-sort scratch */
   int capacity;      /* particles the arrays below hold */
   int *order;        /* sorted position -> particle index */
   double *pos[WL_SPH_DIM_MAX]; /* gathered copies in cell order */
@@ -39,6 +40,7 @@ void wl_sph_probe_free(struct wl_sph_probe *pr) {
   if (!pr) return;
   arrays_free(pr);
   free(pr->begin);
+  free(pr->cursor);
   free(pr);
 }
 
@@ -54,31 +56,14 @@ enum wl_status wl_sph_probe_alloc(struct wl_sph_probe **out, const struct wl_sph
   }
   pr->dim = cfg->prm.dim;
   struct wl_sph_grid *g = &pr->grid;
-  g->cell = 2.0 * pr->k.h_d;
-  g->inv_cell = 1.0 / g->cell;
-  double cells = 1;
-  for (int a = 0; a < WL_SPH_DIM_MAX; a++) {
-    g->lo[a] = a < pr->dim ? cfg->lo[a] : 0;
-    g->n[a] = 1;
-    if (a < pr->dim) {
-      const double len = cfg->hi[a] - cfg->lo[a];
-      if (!(len > 0)) {
-        wl_sph_probe_free(pr);
-        return wl_error_set(err, WL_EINPUT, "probe: domain box axis %d is [%g, %g]; need lo < hi", a,
-                            cfg->lo[a], cfg->hi[a]);
-      }
-      g->n[a] = (int)ceil(len * g->inv_cell);
-      if (g->n[a] < 1) g->n[a] = 1;
-      cells *= g->n[a];
-    }
-  }
-  if (cells > 2e8) {
+  st = wl_sph_grid_make(cfg, &pr->k, g, err);
+  if (st != WL_OK) {
     wl_sph_probe_free(pr);
-    return wl_error_set(err, WL_EINPUT, "probe: the domain box needs %.3g cells; at most 2e8", cells);
+    return st;
   }
-  g->n_cells = (int)cells;
   pr->begin = calloc((size_t)(2 * g->n_cells + 1), sizeof(int));
-  if (!pr->begin) {
+  pr->cursor = calloc((size_t)g->n_cells, sizeof(int));
+  if (!pr->begin || !pr->cursor) {
     const int nc = g->n_cells;
     wl_sph_probe_free(pr);
     return wl_error_set(err, WL_ENOMEM, "probe: cannot allocate the cell index (%d cells)", nc);
@@ -115,12 +100,10 @@ enum wl_status wl_sph_probe_index(struct wl_sph_probe *pr, const struct wl_parti
   for (int i = 0; i < n; i++)
     if (p->kind[i] == WL_KIND_FLUID) begin[nc + wl_sph_cell_of(dim, &pr->grid, p->pos, i) + 1]++;
   for (int b = 0; b < 2 * nc; b++) begin[b + 1] += begin[b];
-  int *cursor = malloc(sizeof(int) * (size_t)nc);
-  if (!cursor) return wl_error_set(err, WL_ENOMEM, "probe: out of memory (%d cells)", nc);
+  int *cursor = pr->cursor;
   memcpy(cursor, begin + nc, sizeof(int) * (size_t)nc);
   for (int i = 0; i < n; i++)
     if (p->kind[i] == WL_KIND_FLUID) pr->order[cursor[wl_sph_cell_of(dim, &pr->grid, p->pos, i)]++] = i;
-  free(cursor);
   const int nf = begin[2 * nc];
   for (int s = 0; s < nf; s++) {
     const int i = pr->order[s];
@@ -156,8 +139,12 @@ double wl_sph_probe_elevation(const struct wl_sph_probe *pr, double x, double y,
   if (!(dz > 0)) dz = 0.1 * pr->k.dp;
   double pt[WL_SPH_DIM_MAX] = {x, y, 0};
   const int az = dim - 1;
+  /* The surface is the top of the highest wet stretch: S can dip below
+   * the limit inside the water (a film running up a wall, air entrained
+   * under a plunging crest), and the first dip from below is not the
+   * surface. */
   int wet = 0;
-  double z_prev = z_lo, s_prev = 0;
+  double z_prev = z_lo, s_prev = 0, surface = z_lo;
   const long n_pts = (long)ceil((z_hi - z_lo) / dz);
   for (long i = 0; i <= n_pts; i++) {
     const double z = i < n_pts ? z_lo + (double)i * dz : z_hi;
@@ -165,11 +152,13 @@ double wl_sph_probe_elevation(const struct wl_sph_probe *pr, double x, double y,
     const double s = wl_sph_probe_shepard(pr, pt);
     if (s >= limit) {
       wet = 1;
+      surface = z_hi; /* wet up to here; lowered when it dries */
     } else if (wet) {
-      return z_prev + (z - z_prev) * (s_prev - limit) / (s_prev - s);
+      surface = z_prev + (z - z_prev) * (s_prev - limit) / (s_prev - s);
+      wet = 0;
     }
     z_prev = z;
     s_prev = s;
   }
-  return wet ? z_hi : z_lo;
+  return surface;
 }
