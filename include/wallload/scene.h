@@ -16,9 +16,15 @@
  *    and a dp from the nearest fluid row, as on DualSPHysics' single
  *    lattice, and the fluid volume ends at the face. Along each layer the
  *    particles are spaced as close to dp as the segment length allows.
- *  - Densities are hydrostatic and Tait-consistent,
- *      rho = rho0 (1 + rho0 g (eta - z)/B)^(1/7)  (REFERENCES.md 1.1),
- *    so the state starts at rest without a pressure transient.
+ *  - Fluid at rest is hydrostatic and Tait-consistent (REFERENCES.md 1.1),
+ *    rho = rho0 (1 + p/B)^(1/7), with p the weight of the particles above
+ *    (and of any water above the block), and each column is stacked with
+ *    layer thicknesses dp rho0/rho, so that every particle's volume m/rho
+ *    is the space it fills. The column therefore ends a little below the
+ *    nominal surface (about p/(14 B) of the depth: 0.5 % at coefsound 10),
+ *    and holds exactly the mass of the nominal block. GenCase places a
+ *    uniform lattice instead; that overstates the SPH pressure near the bed
+ *    by about the compression (1 % at coefsound 10).
  *
  * The builder collects particles; wl_scene_build emits them boundary first,
  * then fluid, with ids in that order. */
@@ -50,8 +56,9 @@ void wl_scene_init(struct wl_scene *sc, const struct wl_sph_const *k, double y0,
 /* Free the lists; safe on a zeroed or cleared scene. */
 void wl_scene_clear(struct wl_scene *sc);
 
-/* Fluid block lo..hi (x, z in 2D; x, y, z in 3D; [m]) at rest, hydrostatic
- * below the free surface eta [m] (usually hi's z). WL_EINPUT for an empty or inverted block; WL_ENOMEM. */
+/* Fluid block lo..hi (x, z in 2D; x, y, z in 3D; [m]) at rest, hydrostatic;
+ * eta [m] is the free surface (hi's z for a block open at the top; higher
+ * for a block under more water, whose weight is added). WL_EINPUT for an empty or inverted block; WL_ENOMEM. */
 enum wl_status wl_scene_fluid_block(struct wl_scene *sc, const double *lo, const double *hi, double eta,
                                     struct wl_error *err);
 
@@ -62,7 +69,7 @@ typedef double (*wl_scene_eta_fn)(double x, void *user);
  * bed_x[i], bed_z[i], i < n_bed, bed_x increasing; [m]) and the free surface
  * eta(x): lattice points with z < eta(x) whose distance above the bed is at
  * least dp/2 (the bed is a wall face: its first boundary layer is dp/2
- * below). Hydrostatic under the local eta(x). WL_EINPUT for bad arrays or
+ * below), each column then stacked hydrostatically (see above). WL_EINPUT for bad arrays or
  * x range; WL_ENOMEM. */
 enum wl_status wl_scene_fluid_surface(struct wl_scene *sc, double x0, double x1, const double *bed_x, const double *bed_z,
                                       int n_bed, wl_scene_eta_fn eta, void *user,

@@ -201,6 +201,10 @@ enum wl_status wl_sph_sim_run(struct wl_sph_sim *sim, const struct wl_sph_run_op
  * particle. NULL on failure (err set). */
 const struct wl_particles *wl_sph_sim_particles(struct wl_sph_sim *sim, struct wl_error *err);
 
+/* The backend's one-line description (backend, threads, code path) into
+ * buf of size bytes. */
+void wl_sph_sim_describe(const struct wl_sph_sim *sim, char *buf, size_t size);
+
 double wl_sph_sim_time(const struct wl_sph_sim *sim);          /* [s] */
 long wl_sph_sim_steps(const struct wl_sph_sim *sim);           /* steps done */
 double wl_sph_sim_dt(const struct wl_sph_sim *sim);            /* next step [s] */

@@ -86,8 +86,9 @@ static enum wl_status boundary_force(struct run_ctx *rc, const struct wl_particl
       double ax = (double)pr.c_r * dx + (double)pr.c_v * vx;
       double fij = -(double)k->mass * ax;
       fx += fij;
-      /* the pair force acts between the two particles */
-      my += fij * (0.5 * (p->pos[1][i] + p->pos[1][j]) - f->z_toe);
+      /* the pair force acts between the two particles; what pushes on the
+       * foundation below the toe has no lever arm about it */
+      my += fij * fmax(0.0, 0.5 * (p->pos[1][i] + p->pos[1][j]) - f->z_toe);
     }
   }
   *force = fx;

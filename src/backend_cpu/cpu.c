@@ -6,6 +6,7 @@
  * max or min, so the results do not depend on the thread count. */
 #include <math.h>
 #include <omp.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -40,66 +41,75 @@ struct eval_stats {
   double ace2_max, vel2_max, visc_max;
 };
 
-static int threads(const struct cpu *c) { return c->n_threads > 0 ? c->n_threads : omp_get_max_threads(); }
+static int threads(const struct cpu *c) {
+  return c->n_threads > 0 ? c->n_threads : omp_get_max_threads();
+}
 
 /* ---- cell rebuild ------------------------------------------------------------ */
 
-/* d[i] = s[perm[i]] for elements of es bytes. */
-static void permute(const struct cpu *c, void *d, const void *s, size_t es, const unsigned *perm,
-                    int n) {
+/* d[i] = s[perm[i]] for elements of es bytes; called inside a parallel
+ * region (orphaned worksharing loop, no barrier at its end). */
+static void permute(void *d, const void *s, size_t es, const unsigned *perm, int n) {
   if (es == 8) {
     const double *src = s;
     double *dst = d;
-#pragma omp parallel for schedule(static) num_threads(threads(c))
+#pragma omp for schedule(static) nowait
     for (int i = 0; i < n; i++) dst[i] = src[perm[i]];
   } else if (es == 4) {
     const unsigned int *src = s;
     unsigned int *dst = d;
-#pragma omp parallel for schedule(static) num_threads(threads(c))
+#pragma omp for schedule(static) nowait
     for (int i = 0; i < n; i++) dst[i] = src[perm[i]];
   } else {
     const unsigned char *src = s;
     unsigned char *dst = d;
+#pragma omp for schedule(static) nowait
     for (int i = 0; i < n; i++) dst[i] = src[perm[i]];
   }
 }
 
 /* Counting sort of all particles by key = group * n_cells + cell (boundary
  * group 0 first, so boundary particles stay in [0, n_bound)). The sort is
- * stable, so the order within a cell is the previous order: deterministic. */
+ * stable, so the order within a cell is the previous order: deterministic.
+ * One parallel region (a step's barriers are what costs when the machine is
+ * shared). */
 static void rebuild(struct cpu *c) {
   struct wl_particles *p = &c->p;
-  const int n = p->n, nc = c->grid.n_cells, nk = 2 * nc, dim = p->dim;
+  const int n = p->n, nc = c->grid.n_cells, dim = p->dim;
   const struct wl_sph_grid *g = &c->grid;
-#pragma omp parallel for schedule(static) num_threads(threads(c))
-  for (int i = 0; i < n; i++) {
-    const unsigned group = p->kind[i] == WL_KIND_FLUID ? 1u : 0u;
-    p->key[i] = group * (unsigned)nc + (unsigned)wl_sph_cell_of(dim, g, p->pos, i);
-  }
-  int *begin = c->begin, *cursor = c->cursor;
-  memset(begin, 0, sizeof(int) * (size_t)(nk + 1));
-  for (int i = 0; i < n; i++) begin[p->key[i] + 1]++;
-  for (int b = 0; b < nk; b++) begin[b + 1] += begin[b];
-  memcpy(cursor, begin, sizeof(int) * (size_t)nk);
-  for (int i = 0; i < n; i++) p->perm[cursor[p->key[i]]++] = (unsigned)i;
-
-  /* permute every state field (field table) into alt, then swap the arrays */
   int nf;
   const struct wl_field_desc *fd = wl_particles_fields(&nf);
   const unsigned *perm = p->perm;
+#pragma omp parallel num_threads(threads(c))
+  {
+#pragma omp for schedule(static)
+    for (int i = 0; i < n; i++) {
+      const unsigned group = p->kind[i] == WL_KIND_FLUID ? 1u : 0u;
+      p->key[i] = group * (unsigned)nc + (unsigned)wl_sph_cell_of(dim, g, p->pos, i);
+    }
+#pragma omp single
+    wl_sph_cells_sort(g, p->key, n, c->begin, c->cursor, p->perm);
+    /* every state field (field table) into alt, the keys into key_tmp */
+    for (int f = 0; f < nf; f++) {
+      if (!(fd[f].flags & WL_FIELD_SORT)) continue;
+      for (int comp = 0; comp < wl_field_components(&fd[f], dim); comp++)
+        permute(*((void **)((char *)&c->alt + fd[f].offset) + comp),
+                *((void **)((char *)p + fd[f].offset) + comp), wl_field_type_size(fd[f].type),
+                perm, n);
+    }
+    permute(c->key_tmp, p->key, sizeof(unsigned int), perm, n);
+  }
+  /* swap the arrays: the sorted copies become the state */
   for (int f = 0; f < nf; f++) {
     if (!(fd[f].flags & WL_FIELD_SORT)) continue;
     for (int comp = 0; comp < wl_field_components(&fd[f], dim); comp++) {
       void **src = (void **)((char *)p + fd[f].offset) + comp;
       void **dst = (void **)((char *)&c->alt + fd[f].offset) + comp;
-      permute(c, *dst, *src, wl_field_type_size(fd[f].type), perm, n);
       void *tmp = *src;
       *src = *dst;
       *dst = tmp;
     }
   }
-#pragma omp parallel for schedule(static) num_threads(threads(c))
-  for (int i = 0; i < n; i++) c->key_tmp[i] = p->key[perm[i]];
   unsigned int *tmp = p->key;
   p->key = c->key_tmp;
   c->key_tmp = tmp;
@@ -210,9 +220,10 @@ static block_fn select_block(int dim, int laminar, const char **isa) {
 enum { CELLS_PER_CHUNK = 32 };
 
 /* One force evaluation at state (pos, vel, rho): pressures, then the gather
- * over all cells in chunks; the maxima go into st. */
+ * over all cells in chunks; the maxima go into st. With `in` not NULL the
+ * predictor (step in->dt) runs first in the same parallel region. */
 static void evaluate(struct cpu *c, double *const *pos, wl_real *const *vel, wl_real *rho,
-                     struct eval_stats *st) {
+                     const struct wl_sph_step_in *in, struct eval_stats *st) {
   struct wl_particles *p = &c->p;
   const struct wl_sph_const *k = &c->k;
   const int n = p->n, dim = p->dim;
@@ -234,6 +245,11 @@ static void evaluate(struct cpu *c, double *const *pos, wl_real *const *vel, wl_
   const int n_chunks = (n_keys + CELLS_PER_CHUNK - 1) / CELLS_PER_CHUNK;
 #pragma omp parallel num_threads(threads(c))
   {
+    if (in) {
+#pragma omp for schedule(static)
+      for (int i = 0; i < n; i++)
+        wl_sph_predict(dim, k, p, in->dt, (const double(*)[WL_SPH_DIM_MAX])in->body_vel, i);
+    }
 #pragma omp for schedule(static)
     for (int i = 0; i < n; i++) press[i] = wl_sph_eos_p(k, rho[i]);
     struct eval_stats mine = {0, 0, 0};
@@ -265,12 +281,16 @@ static void fill_dt(const struct cpu *c, const struct eval_stats *st, struct wl_
 
 /* ---- guard ------------------------------------------------------------------- */
 
-static void guard(struct cpu *c, struct wl_sph_step_out *out) {
-  const struct wl_particles *p = &c->p;
+/* The guard for every particle, after the corrector when `in` is not NULL
+ * (one loop: particle i's check reads only what its corrector wrote). The
+ * first faulty particle is the lowest index, whatever the threads. */
+static void guard(struct cpu *c, const struct wl_sph_step_in *in, struct wl_sph_step_out *out) {
+  struct wl_particles *p = &c->p;
   const int n = p->n, dim = p->dim;
   int first = n;
 #pragma omp parallel for schedule(static) num_threads(threads(c)) reduction(min : first)
   for (int i = 0; i < n; i++) {
+    if (in) wl_sph_correct(dim, &c->k, p, in->dt, (const double(*)[WL_SPH_DIM_MAX])in->body_vel, i);
     int w = -1;
     if (wl_sph_guard(dim, &c->k, p, c->cfg.lo, c->cfg.hi, c->cfg.walls, c->cfg.n_walls, i, &w) &&
         i < first)
@@ -309,22 +329,24 @@ static enum wl_status cpu_step(void *ctx, const struct wl_sph_step_in *in,
                                struct wl_sph_step_out *out, struct wl_error *err) {
   struct cpu *c = ctx;
   struct wl_particles *p = &c->p;
-  const int n = p->n, dim = p->dim;
-  const double dt = in->dt;
   (void)err;
   memset(out, 0, sizeof *out);
   struct eval_stats st = {0, 0, 0};
 
+  /* four parallel regions: sort; forces at the start; predictor and forces
+   * at the half step; corrector and guard */
   rebuild(c);
-  evaluate(c, p->pos, p->vel, p->rho, &st);
-#pragma omp parallel for schedule(static) num_threads(threads(c))
-  for (int i = 0; i < n; i++) wl_sph_predict(dim, &c->k, p, dt, (const double(*)[WL_SPH_DIM_MAX])in->body_vel, i);
-  evaluate(c, p->pos_h, p->vel_h, p->rho_h, &st);
-#pragma omp parallel for schedule(static) num_threads(threads(c))
-  for (int i = 0; i < n; i++) wl_sph_correct(dim, &c->k, p, dt, i);
+  evaluate(c, p->pos, p->vel, p->rho, NULL, &st);
+  evaluate(c, p->pos_h, p->vel_h, p->rho_h, in, &st);
+  guard(c, in, out);
   fill_dt(c, &st, out);
-  guard(c, out);
   return WL_OK;
+}
+
+static void cpu_describe(void *ctx, char *buf, size_t size) {
+  const struct cpu *c = ctx;
+  snprintf(buf, size, "cpu (OpenMP, %d threads, %s force loop, %d cells of %.4g m)", threads(c),
+           c->isa, c->grid.n_cells, c->grid.cell);
 }
 
 static enum wl_status cpu_download(void *ctx, struct wl_particles *host, struct wl_error *err) {
@@ -362,31 +384,11 @@ static enum wl_status cpu_init(void **ctx, const struct wl_sph_config *cfg,
   c->block = select_block(dim, k->visc == WL_SPH_VISC_LAMINAR, &c->isa);
   /* the grid: cells of side 2h over the domain box */
   struct wl_sph_grid *g = &c->grid;
-  g->cell = 2.0 * k->h_d;
-  g->inv_cell = 1.0 / g->cell;
-  double cells = 1;
-  for (int a = 0; a < WL_SPH_DIM_MAX; a++) {
-    g->lo[a] = a < dim ? cfg->lo[a] : 0;
-    g->n[a] = 1;
-    if (a < dim) {
-      const double len = cfg->hi[a] - cfg->lo[a];
-      if (!(len > 0) || !isfinite(len)) {
-        cpu_free(c);
-        return wl_error_set(err, WL_EINPUT, "cpu backend: domain box axis %d is [%g, %g]; need lo < hi",
-                            a, cfg->lo[a], cfg->hi[a]);
-      }
-      g->n[a] = (int)ceil(len * g->inv_cell);
-      if (g->n[a] < 1) g->n[a] = 1;
-      cells *= g->n[a];
-    }
-  }
-  if (cells > 2e8) {
-    const double side = g->cell;
+  const enum wl_status gst = wl_sph_grid_make(cfg, k, g, err);
+  if (gst != WL_OK) {
     cpu_free(c);
-    return wl_error_set(err, WL_EINPUT, "cpu backend: the domain box needs %.3g cells of %g m; at "
-                        "most 2e8 (shrink the box)", cells, side);
+    return gst;
   }
-  g->n_cells = (int)cells;
   enum wl_status st = wl_particles_alloc(&c->p, dim, host->n, 1, err);
   if (st == WL_OK) st = wl_particles_alloc(&c->alt, dim, host->n, 0, err);
   if (st == WL_OK) st = wl_particles_copy_state(&c->p, host, err);
@@ -408,9 +410,9 @@ static enum wl_status cpu_init(void **ctx, const struct wl_sph_config *cfg,
   memset(out, 0, sizeof *out);
   struct eval_stats es = {0, 0, 0};
   rebuild(c);
-  evaluate(c, c->p.pos, c->p.vel, c->p.rho, &es);
+  evaluate(c, c->p.pos, c->p.vel, c->p.rho, NULL, &es);
   fill_dt(c, &es, out);
-  guard(c, out);
+  guard(c, NULL, out);
   *ctx = c;
   return WL_OK;
 }
@@ -420,5 +422,6 @@ const struct wl_backend_ops wl_backend_cpu_ops = {
     .init = cpu_init,
     .step = cpu_step,
     .download = cpu_download,
+    .describe = cpu_describe,
     .free = cpu_free,
 };

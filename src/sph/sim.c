@@ -51,7 +51,7 @@ static const char *fault_name(int fault) {
   case WL_SPH_FAULT_NONFINITE: return "non-finite position, velocity or density";
   case WL_SPH_FAULT_OUTSIDE: return "left the domain box";
   case WL_SPH_FAULT_DENSITY: return "density out of range";
-  case WL_SPH_FAULT_PENETRATION: return "fluid particle crossed a wall";
+  case WL_SPH_FAULT_PENETRATION: return "crossed a wall";
   case WL_SPH_FAULT_DT: return "time step collapsed";
   }
   return "no fault";
@@ -195,7 +195,7 @@ enum wl_status wl_sph_sim_step(struct wl_sph_sim *sim, double dt_max, struct wl_
     struct wl_sph_step_out o = sim->last;
     return wl_error_set(err, WL_EUNSTABLE,
                         "unstable at t = %.6g s, step %ld: time step collapsed to %.3g s (%.3g of "
-                        "the initial %.3g s; limit %.3g): max |a| = %.4g m/s^2, max |v| = %.4g m/s",
+                        "the initial %.3g s; limit %.4g): max |a| = %.4g m/s^2, max |v| = %.4g m/s",
                         sim->t, sim->steps, dt_cfl, dt_cfl / sim->dt_initial, sim->dt_initial,
                         sim->k.dt_collapse, o.ace_max, o.vel_max);
   }
@@ -275,6 +275,7 @@ enum wl_status wl_sph_sim_run(struct wl_sph_sim *sim, const struct wl_sph_run_op
         pr.steps_per_s = pr.wall_s > 0 ? (double)(sim->steps - steps0) / pr.wall_s : 0;
         pr.n = sim->host.capacity;
         pr.particle_steps_per_s = pr.steps_per_s * pr.n;
+        pr.eta_s = sim->t > t0 ? pr.wall_s * (o->t_end - sim->t) / (sim->t - t0) : 0;
         o->progress(o->user, &pr);
         wall_next = now + every;
       }
@@ -298,3 +299,9 @@ double wl_sph_sim_dt_initial(const struct wl_sph_sim *sim) { return sim->dt_init
 const struct wl_sph_const *wl_sph_sim_const(const struct wl_sph_sim *sim) { return &sim->k; }
 const struct wl_sph_config *wl_sph_sim_config(const struct wl_sph_sim *sim) { return &sim->cfg; }
 const struct wl_sph_step_out *wl_sph_sim_last(const struct wl_sph_sim *sim) { return &sim->last; }
+
+void wl_sph_sim_describe(const struct wl_sph_sim *sim, char *buf, size_t size) {
+  if (size == 0) return;
+  if (sim->ops->describe) sim->ops->describe(sim->ctx, buf, size);
+  else snprintf(buf, size, "%s", sim->ops->name);
+}

@@ -47,9 +47,11 @@ WL_HD static WL_INLINE void wl_sph_predict(const int dim, const struct wl_sph_co
 }
 
 /* Corrector for particle i: reads the step-start state, the half-step
- * arrays and the half-step forces; writes the new state. */
+ * arrays and the half-step forces; writes the new state. body_vel as in
+ * wl_sph_predict (moving particles advance by exactly v_body dt in double). */
 WL_HD static WL_INLINE void wl_sph_correct(const int dim, const struct wl_sph_const *k,
-                                        const struct wl_particles *p, double dt, int i) {
+                                           const struct wl_particles *p, double dt,
+                                           const double (*body_vel)[WL_SPH_DIM_MAX], int i) {
   const wl_real eps = -(p->ar[i] / p->rho_h[i]) * (wl_real)dt;
   const wl_real rho = p->rho[i] * (WL_R(2.0) - eps) / (WL_R(2.0) + eps);
   if (p->kind[i] == WL_KIND_FLUID) {
@@ -61,7 +63,8 @@ WL_HD static WL_INLINE void wl_sph_correct(const int dim, const struct wl_sph_co
     }
   } else {
     p->rho[i] = rho > k->rho0 ? rho : k->rho0;
-    for (int a = 0; a < dim; a++) p->pos[a][i] = p->pos_h[a][i] + 0.5 * dt * (double)p->vel[a][i];
+    if (p->kind[i] == WL_KIND_MOVING)
+      for (int a = 0; a < dim; a++) p->pos[a][i] = p->pos_h[a][i] + 0.5 * dt * body_vel[p->body[i]][a];
   }
 }
 

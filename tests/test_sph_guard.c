@@ -1,0 +1,243 @@
+/* test_sph_guard.c: the instability guard and every error path of the
+ * sph, backend and scene interfaces, provoked one by one; the paddle's
+ * prescribed trajectory; output and progress callbacks.
+ * References: the contracts in sph.h, backend.h, scene.h and sph/guard.h,
+ * and for the paddle the prescribed X(t) itself. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "testutil.h"
+#include "wallload/scene.h"
+#include "wallload/sph.h"
+
+#define DP 0.02
+#define H 0.4
+#define L 0.8
+
+/* A small tank (fixed walls registered with the guard) with a fluid block,
+ * optionally a piston paddle (body 1) at x = 0; one extra fluid particle
+ * can be appended at (xe, ze) with density rhoe. */
+static enum wl_status make(struct wl_sph_config *cfg, struct wl_particles *p, int paddle,
+                           int extra, double xe, double ze, double rhoe, struct wl_error *err) {
+  wl_sph_config_default(cfg, 2, DP, H);
+  struct wl_sph_const k;
+  enum wl_status st = wl_sph_const_make(&cfg->prm, &k, err);
+  if (st) return st;
+  cfg->lo[0] = -0.2;
+  cfg->hi[0] = L + 0.2;
+  cfg->lo[1] = -0.2;
+  cfg->hi[1] = 3 * H;
+  struct wl_scene sc;
+  wl_scene_init(&sc, &k, 0, 0);
+  const double tx[4] = {0, 0, L, L}, tz[4] = {2 * H, 0, 0, 2 * H};
+  const double px[3] = {-0.15, L, L}, pz[3] = {0, 0, 2 * H};
+  const double lo[2] = {paddle ? 0.1 : 0, 0}, hi[2] = {0.3, H};
+  if (paddle) {
+    st = wl_scene_boundary_polyline(&sc, px, pz, 3, 3, WL_KIND_FIXED, 0, cfg, err);
+    if (!st) st = wl_scene_piston(&sc, 0.05, 0, 1.5 * H, 3, 1, err);
+  } else {
+    st = wl_scene_boundary_polyline(&sc, tx, tz, 4, 3, WL_KIND_FIXED, 0, cfg, err);
+  }
+  if (!st) st = wl_scene_fluid_block(&sc, lo, hi, H, err);
+  if (!st && extra) {
+    const double lo2[2] = {xe - 0.5 * DP, ze - 0.5 * DP}, hi2[2] = {xe + 0.5 * DP, ze + 0.5 * DP};
+    st = wl_scene_fluid_block(&sc, lo2, hi2, ze, err);
+    if (!st) sc.rho[1][sc.n[1] - 1] = rhoe;
+  }
+  if (!st) st = wl_scene_build(&sc, p, err);
+  wl_scene_clear(&sc);
+  return st;
+}
+
+static enum wl_status alloc_with(double xe, double ze, double rhoe, struct wl_error *err) {
+  struct wl_sph_config cfg;
+  struct wl_particles p = {0};
+  enum wl_status st = make(&cfg, &p, 0, 1, xe, ze, rhoe, err);
+  if (st) return st;
+  struct wl_sph_sim *sim = NULL;
+  st = wl_sph_sim_alloc(&sim, &wl_backend_cpu_ops, &cfg, &p, err);
+  wl_sph_sim_free(sim);
+  wl_particles_clear(&p);
+  return st;
+}
+
+static double paddle_x(double t, void *user) {
+  (void)user;
+  return 0.05 * sin(10 * t); /* [m] */
+}
+
+static int n_out, n_prog;
+static enum wl_status out_fail(void *user, struct wl_sph_sim *sim, double t, struct wl_error *err) {
+  (void)user;
+  (void)sim;
+  n_out++;
+  if (t > 0.005) return wl_error_set(err, WL_EIO, "test output failure at t = %g", t);
+  return WL_OK;
+}
+static void prog(void *user, const struct wl_sph_progress *pr) {
+  (void)user;
+  if (pr->t >= 0 && pr->n > 0) n_prog++;
+}
+
+int main(void) {
+  struct wl_error err;
+
+  /* ---- guard faults, found in the initial state ---- */
+  wl_error_clear(&err);
+  CHECK_TRUE(alloc_with(0.5, 5 * H, 1000, &err) == WL_EUNSTABLE && strstr(err.msg, "left the domain box") &&
+                 strstr(err.msg, "id ") && strstr(err.msg, "t = 0"),
+             "particle outside the domain box: WL_EUNSTABLE naming id, position, time");
+  printf("  message: %s\n", err.msg);
+  wl_error_clear(&err);
+  CHECK_TRUE(alloc_with(0.5, 0.2, NAN, &err) == WL_EUNSTABLE && strstr(err.msg, "non-finite"),
+             "non-finite density: WL_EUNSTABLE");
+  wl_error_clear(&err);
+  CHECK_TRUE(alloc_with(0.5, 0.2, 1500, &err) == WL_EUNSTABLE && strstr(err.msg, "density out of range"),
+             "fluid density 1500 kg/m^3 (> 1.3 rho0): WL_EUNSTABLE");
+  wl_error_clear(&err);
+  CHECK_TRUE(alloc_with(0.5, -1.5 * DP, 1000, &err) == WL_EUNSTABLE && strstr(err.msg, "crossed a wall") &&
+                 strstr(err.msg, "wall 1"),
+             "fluid particle 1.5 dp behind the bed face: WL_EUNSTABLE naming the wall");
+  printf("  message: %s\n", err.msg);
+  wl_error_clear(&err);
+  CHECK_TRUE(alloc_with(0.5, -0.2 * DP, 1000, &err) == WL_OK,
+             "0.2 dp behind the face is within the dp/2 tolerance");
+  wl_error_clear(&err);
+  CHECK_TRUE(alloc_with(-0.15, 0.2, 1000, &err) == WL_OK,
+             "fluid beyond the back of the wall layers is not a crossing (overtopping)");
+
+  /* ---- dt collapse ---- */
+  {
+    struct wl_sph_config cfg;
+    struct wl_particles p = {0};
+    wl_error_clear(&err);
+    make(&cfg, &p, 0, 0, 0, 0, 0, &err);
+    cfg.prm.dt_collapse = 0.9999;
+    struct wl_sph_sim *sim;
+    enum wl_status st = wl_sph_sim_alloc(&sim, &wl_backend_cpu_ops, &cfg, &p, &err);
+    for (int s = 0; s < 2000 && st == WL_OK; s++) st = wl_sph_sim_step(sim, 0, &err);
+    CHECK_TRUE(st == WL_EUNSTABLE && strstr(err.msg, "time step collapsed") && strstr(err.msg, "step "),
+               "dt below dt_collapse x initial dt: WL_EUNSTABLE with time and step");
+    printf("  message: %s\n", err.msg);
+    wl_sph_sim_free(sim);
+    wl_particles_clear(&p);
+  }
+
+  /* ---- configuration and API errors ---- */
+  {
+    struct wl_sph_config cfg;
+    struct wl_particles p = {0};
+    wl_error_clear(&err);
+    make(&cfg, &p, 1, 0, 0, 0, 0, &err);
+    struct wl_sph_sim *sim = NULL;
+    /* boundary particles must come first */
+    const unsigned char k0 = p.kind[0];
+    p.kind[0] = WL_KIND_FLUID;
+    CHECK_TRUE(wl_sph_sim_alloc(&sim, &wl_backend_cpu_ops, &cfg, &p, &err) == WL_EINPUT && !sim &&
+                   strstr(err.msg, "boundary"),
+               "fluid particle among the boundary ones: WL_EINPUT, no simulation");
+    p.kind[0] = k0;
+    wl_error_clear(&err);
+    struct wl_sph_config bad = cfg;
+    bad.hi[0] = bad.lo[0];
+    CHECK_TRUE(wl_sph_sim_alloc(&sim, &wl_backend_cpu_ops, &bad, &p, &err) == WL_EINPUT,
+               "empty domain box: WL_EINPUT");
+    wl_error_clear(&err);
+    bad = cfg;
+    bad.prm.dim = 3;
+    CHECK_TRUE(wl_sph_sim_alloc(&sim, &wl_backend_cpu_ops, &bad, &p, &err) == WL_EINPUT,
+               "2D particles with 3D parameters: WL_EINPUT");
+    wl_error_clear(&err);
+    CHECK_TRUE(wl_sph_sim_alloc(&sim, &wl_backend_cpu_ops, &cfg, &p, &err) == WL_OK, "valid set-up");
+    const double t_bad[2] = {0, 0}, x2[2] = {0, 1};
+    struct wl_sph_motion m = {WL_SPH_MOTION_TABLE, 2, t_bad, x2, NULL, NULL};
+    CHECK_TRUE(wl_sph_sim_set_motion(sim, 1, &m, &err) == WL_EINPUT && strstr(err.msg, "not increasing"),
+               "motion table with repeated time: WL_EINPUT");
+    wl_error_clear(&err);
+    CHECK_TRUE(wl_sph_sim_set_motion(sim, 0, &m, &err) == WL_EINPUT, "motion of body 0: WL_EINPUT");
+    wl_error_clear(&err);
+    m.type = WL_SPH_MOTION_FUNCTION;
+    m.x_of_t = NULL;
+    CHECK_TRUE(wl_sph_sim_set_motion(sim, 1, &m, &err) == WL_EINPUT, "function motion without function");
+    wl_error_clear(&err);
+    /* paddle trajectory: particles follow X(t) exactly */
+    m.x_of_t = paddle_x;
+    CHECK_TRUE(wl_sph_sim_set_motion(sim, 1, &m, &err) == WL_OK, "function motion accepted");
+    double x_before = 0;
+    unsigned pid = 0;
+    for (int i = 0; i < p.n; i++)
+      if (p.kind[i] == WL_KIND_MOVING) {
+        x_before = p.pos[0][i];
+        pid = p.id[i];
+        break;
+      }
+    struct wl_sph_run_opts o = {0};
+    o.t_end = 0.1;
+    o.output_dt = 0.01;
+    o.progress = prog;
+    o.progress_wall_s = 1e-9;
+    const enum wl_status st = wl_sph_sim_run(sim, &o, &err);
+    CHECK_TRUE(st == WL_OK, "paddle run to 0.1 s");
+    const struct wl_particles *q = wl_sph_sim_particles(sim, &err);
+    double x_after = NAN;
+    for (int i = 0; i < q->n; i++)
+      if (q->id[i] == pid) x_after = q->pos[0][i];
+    CHECK_ABS(x_after - x_before, paddle_x(0.1, NULL), 1e-12, "paddle displacement = prescribed X(t)");
+    CHECK_TRUE(n_prog > 0, "progress callback called");
+    o.t_end = 0.05;
+    CHECK_TRUE(wl_sph_sim_run(sim, &o, &err) == WL_EINPUT, "end time before the current time: WL_EINPUT");
+    wl_error_clear(&err);
+    o.t_end = 0.2;
+    o.output = out_fail;
+    CHECK_TRUE(wl_sph_sim_run(sim, &o, &err) == WL_EIO && strstr(err.msg, "test output failure"),
+               "an output callback error stops the run with its status");
+    CHECK_TRUE(n_out == 1, "output callback called at the start (and the run stopped there)");
+    wl_sph_sim_free(sim);
+    wl_particles_clear(&p);
+  }
+
+  /* ---- particles and scene ---- */
+  {
+    struct wl_particles p = {0}, q = {0};
+    wl_error_clear(&err);
+    CHECK_TRUE(wl_particles_alloc(&p, 4, 10, 0, &err) == WL_EINPUT, "4D particles rejected");
+    wl_error_clear(&err);
+    wl_particles_alloc(&p, 2, 10, 0, &err);
+    wl_particles_alloc(&q, 2, 5, 0, &err);
+    p.n = 10;
+    CHECK_TRUE(wl_particles_copy_state(&q, &p, &err) == WL_EINPUT, "copy into too small a view");
+    wl_particles_clear(&p);
+    wl_particles_clear(&p); /* safe twice */
+    wl_particles_clear(&q);
+    CHECK_TRUE(wl_particles_bytes(2, 1000, 1) > wl_particles_bytes(2, 1000, 0),
+               "memory estimate counts the work arrays");
+    struct wl_sph_params prm;
+    wl_sph_params_default(&prm, 2, DP, H);
+    struct wl_sph_const k;
+    wl_sph_const_make(&prm, &k, &err);
+    struct wl_scene sc;
+    wl_scene_init(&sc, &k, 0, 0);
+    const double x[2] = {0, 0}, z[2] = {1, 1};
+    wl_error_clear(&err);
+    CHECK_TRUE(wl_scene_boundary_polyline(&sc, x, z, 2, 2, WL_KIND_FIXED, 0, NULL, &err) == WL_EINPUT &&
+                   strstr(err.msg, "zero length"),
+               "zero-length wall segment rejected");
+    wl_error_clear(&err);
+    CHECK_TRUE(wl_scene_boundary_polyline(&sc, x, z, 1, 2, WL_KIND_FIXED, 0, NULL, &err) == WL_EINPUT,
+               "one-vertex polyline rejected");
+    wl_error_clear(&err);
+    const double x2[2] = {0, 1};
+    CHECK_TRUE(wl_scene_boundary_polyline(&sc, x2, z, 2, 2, WL_KIND_MOVING, 0, NULL, &err) == WL_EINPUT,
+               "moving boundary without a body rejected");
+    wl_error_clear(&err);
+    const double lo[2] = {0, 0}, hi[2] = {0.5 * DP, 1};
+    CHECK_TRUE(wl_scene_fluid_block(&sc, lo, hi, 1, &err) == WL_EINPUT, "block thinner than dp rejected");
+    wl_error_clear(&err);
+    CHECK_TRUE(wl_scene_build(&sc, &p, &err) == WL_EINPUT && strstr(err.msg, "no fluid"),
+               "scene without fluid rejected");
+    wl_scene_clear(&sc);
+    wl_scene_clear(&sc);
+  }
+  return TEST_RESULT();
+}
