@@ -19,7 +19,8 @@ ctest --test-dir build --output-on-failure -j "$jobs" -LE accuracy
 echo "== AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DWL_SANITIZE=ON >/dev/null
 cmake --build build-asan -j "$jobs"
-# The sanitized run is slower: tests that scale their work read WL_TEST_QUICK.
+# The sanitized run is slower: tests that scale their work read WL_TEST_QUICK,
+# and the long physics runs (label "long") are left to the Release build.
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   LSAN_OPTIONS=suppressions="$PWD/tests/lsan.supp" \
-  WL_TEST_QUICK=1 ctest --test-dir build-asan --output-on-failure -j "$jobs" -LE accuracy
+  WL_TEST_QUICK=1 ctest --test-dir build-asan --output-on-failure -j "$jobs" -LE "accuracy|long"

@@ -10,8 +10,9 @@
  * (the front has formed) and Z < 3.6 (before the far wall at Z = 4 is felt):
  *  - front speed: the least-squares slope dZ/dT within 5 % of the table's;
  *  - front position after the best single time shift dT (|dT| <= 0.35):
- *    within 5 % in Z at every point;
- *  - front position as is: within 15 % in Z.
+ *    within 5 % in Z at every point.
+ * The brief's check, the position as is within 5 %, fails today and lives
+ * in test_sph_dambreak_front (an accuracy test, run with ctest -L accuracy).
  * Why the shift: an inviscid model with a free-slip bed runs ahead of
  * Martin & Moyce by a nearly constant 0.2-0.3 in T that builds up for
  * T < 1.2, while the column is released (their gate/diaphragm) and the
@@ -19,8 +20,8 @@
  * of dam-break experiments are the usual finding (e.g. Jonsson et al.
  * 2015, Engineering 7:248: "a tendency of the wave front to be ahead of
  * the experimental results"). With this engine the unshifted front is
- * 9-15 % ahead for 1.5 <= T <= 2.9 (a/dp = 40), so the brief's "5 % in Z
- * as is" is NOT met and is tested with 15 %; nothing was tuned to close it.
+ * 9-15 % ahead for 1.5 <= T <= 2.9 (a/dp = 40); nothing was tuned to close
+ * it.
  * The run then goes on through the impact on the far wall to t sqrt(g/H) =
  * 8 with every value finite and no particle through a wall (the guard
  * would stop it with WL_EUNSTABLE).
@@ -39,7 +40,6 @@
 #define A 1.0           /* column width a [m] */
 #define N_A 40          /* a / dp */
 #define TOL_Z 0.05      /* brief: 5 % in Z (data scatter ~3 %, REFERENCES 2.3) */
-#define TOL_Z_RAW 0.15  /* unshifted: see the header comment */
 #define TOL_SPEED 0.05  /* front speed dZ/dT */
 #define DT_SHIFT_MAX 0.35
 #define T_FORMED 1.5    /* front formed (brief) */
@@ -216,8 +216,6 @@ int main(void) {
   for (int i = 0; i < n; i++) {
     CHECK_REL(interp(T, Z, lg.n, te[i] + best), ze[i], TOL_Z,
               "Martin & Moyce (1952) Table 2 surge front, after the best time shift");
-    CHECK_REL(interp(T, Z, lg.n, te[i]), ze[i], TOL_Z_RAW,
-              "Martin & Moyce (1952) Table 2 surge front, unshifted (see header)");
   }
   free(T);
   free(Z);
