@@ -87,6 +87,7 @@ struct wl_assess_opts {
   const char *out_dir;       /* NULL: "<scenario name>-results" in the current directory */
   int force;                 /* 1: write into an existing directory */
   int threads;               /* 0: the scenario's run.threads */
+  const char *backend;       /* NULL: the scenario's run.backend; else "cpu", "cuda", "auto" */
   double snapshot_interval;  /* [s]; <= 0: a twentieth of each case's end time */
   double end_time;           /* > 0: override every case's end time [s] (tests) */
   volatile sig_atomic_t *interrupted; /* the CLI's Ctrl-C flag; may be NULL */

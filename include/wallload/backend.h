@@ -6,8 +6,8 @@
  * and runs one symplectic step on them with the shared physics of
  * include/wallload/sph/.
  *
- * Backends: wl_backend_cpu_ops (src/backend_cpu, OpenMP). A CUDA backend
- * will provide wl_backend_cuda_ops with the same contract. */
+ * Backends: wl_backend_cpu_ops (src/backend_cpu, OpenMP) and
+ * wl_backend_cuda_ops (src/backend_cuda) with the same contract. */
 #ifndef WALLLOAD_BACKEND_H
 #define WALLLOAD_BACKEND_H
 
@@ -82,5 +82,9 @@ struct wl_backend_ops {
 
 /* The OpenMP CPU backend (src/backend_cpu). */
 extern const struct wl_backend_ops wl_backend_cpu_ops;
+
+/* The CUDA backend (src/backend_cuda); in a build without CUDA its init
+ * returns WL_EUNSUPPORTED ("built without CUDA"). */
+extern const struct wl_backend_ops wl_backend_cuda_ops;
 
 #endif

@@ -116,4 +116,25 @@ enum wl_status wl_scene_build(const struct wl_scene *sc, struct wl_particles *ou
  * d <= 0). */
 double wl_scene_rho_hydro(const struct wl_sph_const *k, double depth);
 
+/* ---- 3D boxes (src/scene/box3d.c) ---------------------------------------- */
+
+/* Rectangular tank open at the top (3D only): the inside lo..hi [m] (x, y,
+ * z) is where the fluid may be; n_layers of fixed boundary particles lie
+ * behind the floor z = lo[2] and the four walls x = lo[0], hi[0], y =
+ * lo[1], hi[1], up to z = hi[2], edges and corners filled. Along each axis
+ * the particles keep the spacing closest to dp that divides the span (dp
+ * where the span is a multiple of it). With cfg not NULL the floor and the
+ * two end walls (x = lo[0], hi[0]) are added to the penetration guard.
+ * Densities rho0 (wl_scene_hydrostatic_boundary for still water). WL_EINPUT
+ * (2D scene, a span below dp, layers outside 1..16), WL_ENOMEM. */
+enum wl_status wl_scene_box3d_tank(struct wl_scene *sc, const double *lo, const double *hi,
+                                   int n_layers, struct wl_sph_config *cfg, struct wl_error *err);
+
+/* Solid box lo..hi [m] (3D only; e.g. a pillar): fixed boundary particles
+ * on the inside lattice of the box, n_layers deep behind its faces (the
+ * fluid is outside). floor_below = 1 leaves out the layers behind the
+ * bottom face (the box stands on a floor). Errors as wl_scene_box3d_tank. */
+enum wl_status wl_scene_box3d_solid(struct wl_scene *sc, const double *lo, const double *hi,
+                                    int n_layers, int floor_below, struct wl_error *err);
+
 #endif

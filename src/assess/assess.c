@@ -14,11 +14,11 @@
 #include "assess_private.h"
 #include "wallload/backend.h"
 #include "wallload/config.h"
+#include "wallload/cuda_device.h"
 #include "wallload/report.h"
 #include "wallload/sph/interact.h"
 #include "wallload/store.h"
 
-extern const struct wl_backend_ops wl_backend_cpu_ops;
 
 /* State of one running case, seen by the output callback. */
 struct run_ctx {
@@ -233,9 +233,30 @@ static void on_progress(void *user, const struct wl_sph_progress *pr) {
   if (rc->opts->progress) rc->opts->progress(rc->opts->user, rc->c->name, pr);
 }
 
+/* The backend of a run: opts->backend when set, else the scenario's
+ * run.backend; "auto" takes the GPU when wl_cuda_device_query finds one, else
+ * the CPU. WL_EUNSUPPORTED for cuda without a usable GPU (or CUDA build). */
+static enum wl_status pick_backend(const struct wl_scenario *s, const struct wl_assess_opts *opts,
+                                   const struct wl_backend_ops **ops, struct wl_error *err) {
+  enum wl_backend_choice choice = s->run.backend.choice;
+  if (opts->backend && !strcmp(opts->backend, "cpu")) choice = WL_BACKEND_CPU;
+  else if (opts->backend && !strcmp(opts->backend, "cuda")) choice = WL_BACKEND_CUDA;
+  else if (opts->backend && !strcmp(opts->backend, "auto")) choice = WL_BACKEND_AUTO;
+  *ops = &wl_backend_cpu_ops;
+  if (choice == WL_BACKEND_CPU) return WL_OK;
+  struct wl_cuda_device dev;
+  struct wl_error qerr;
+  wl_error_clear(&qerr);
+  if (wl_cuda_device_query(&dev, &qerr) == WL_OK) *ops = &wl_backend_cuda_ops;
+  else if (choice == WL_BACKEND_CUDA)
+    return wl_error_set(err, WL_EUNSUPPORTED, "%s: backend cuda: %s", s->path, qerr.msg);
+  return WL_OK;
+}
+
 /* Run one case into c (its flume already built). Returns the run's status;
  * the record holds what was sampled before any stop. */
-static enum wl_status run_case(const struct wl_assess_opts *opts, const char *snap_path,
+static enum wl_status run_case(const struct wl_assess_opts *opts,
+                               const struct wl_backend_ops *ops, const char *snap_path,
                                struct wl_case_result *c, struct wl_error *err) {
   struct run_ctx rc;
   memset(&rc, 0, sizeof rc);
@@ -243,8 +264,7 @@ static enum wl_status run_case(const struct wl_assess_opts *opts, const char *sn
   rc.opts = opts;
   struct wl_sph_sim *sim = NULL;
   double start = now_s();
-  enum wl_status st = wl_sph_sim_alloc(&sim, &wl_backend_cpu_ops, &c->flume.cfg,
-                                       &c->flume.particles, err);
+  enum wl_status st = wl_sph_sim_alloc(&sim, ops, &c->flume.cfg, &c->flume.particles, err);
   if (!st && c->flume.has_paddle) {
     struct wl_sph_motion m = {0};
     m.type = WL_SPH_MOTION_TABLE;
@@ -331,7 +351,9 @@ enum wl_status wl_assess_case(const struct wl_scenario *s, const struct wl_plan 
   c->depth_wall = c->flume.depth_wall;
   c->rec.n_gauges = c->flume.n_gauges;
   c->rec.n_probes = c->flume.n_probes;
-  c->status = run_case(opts, snapshots, c, err);
+  const struct wl_backend_ops *ops;
+  if ((st = pick_backend(s, opts, &ops, err))) return st;
+  c->status = run_case(opts, ops, snapshots, c, err);
   if (c->status != WL_OK) snprintf(c->message, sizeof c->message, "%s", err->msg);
   struct wl_error lerr;
   wl_error_clear(&lerr);
@@ -371,10 +393,9 @@ enum wl_status wl_assess_run(const struct wl_scenario *s, const struct wl_plan *
     snprintf(res->out_dir, sizeof res->out_dir, "%s-results", s->name.text);
   enum wl_status st = prepare_dir(res->out_dir, opts->force, err);
   if (st) return st;
-  snprintf(res->backend, sizeof res->backend, "cpu");
-  if (s->run.backend.choice == WL_BACKEND_CUDA)
-    return wl_error_set(err, WL_EUNSUPPORTED,
-                        "%s: run.backend: cuda is not available yet; use cpu or auto", s->path);
+  const struct wl_backend_ops *ops;
+  if ((st = pick_backend(s, opts, &ops, err))) return st;
+  snprintf(res->backend, sizeof res->backend, "%s", ops->name);
 
   enum wl_load_case todo[2];
   int n = 0;

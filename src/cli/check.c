@@ -125,9 +125,10 @@ enum wl_status wl_cli_assess(int argc, char **argv, struct wl_error *err) {
         if (*end || !(t > 0))
           return wl_error_set(err, WL_EUSAGE, "assess: --end-time: found '%s'; expected seconds > 0", v);
         opts.end_time = t;
-      } else if (strcmp(v, "cpu") && strcmp(v, "auto")) {
-        return wl_error_set(err, WL_EUSAGE,
-                            "assess: --backend: found '%s'; valid: cpu, auto (cuda is not built yet)", v);
+      } else if (strcmp(v, "cpu") && strcmp(v, "cuda") && strcmp(v, "auto")) {
+        return wl_error_set(err, WL_EUSAGE, "assess: --backend: found '%s'; valid: cpu, cuda, auto", v);
+      } else {
+        opts.backend = v;
       }
     } else if (!strcmp(a, "--quiet")) {
       quiet = 1;

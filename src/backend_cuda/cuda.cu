@@ -1,0 +1,828 @@
+/* cuda.cu: the CUDA backend (backend.h): particle arrays in device memory
+ * (structure of arrays; positions double, every other field wl_real), one
+ * symplectic step on the device with the shared physics of
+ * include/wallload/sph/:
+ *
+ *   keys      key = group * n_cells + cell (sph/cells.h wl_sph_cell_of)
+ *   sort      stable radix sort of (key, index) pairs (CUB), then the state
+ *             fields gathered into sorted order; begin[key] = first sorted
+ *             index of each key by binary search (every entry written, no
+ *             memset, no atomics)
+ *   forces    one thread per particle, wl_sph_gather (sph/gather.h) at the
+ *             step start; predictor (sph/integrate.h) and the gather again
+ *             at the half step
+ *   corrector and guard (sph/guard.h) in one kernel; the first faulty
+ *             particle (lowest sorted index) by an atomic min
+ *   dt        max |a|^2, max |v|^2 of fluid particles and max h|v.r|/(r^2 +
+ *             eta^2): block reductions, one atomic max of the bit pattern per
+ *             block (exact: the max of non-negative doubles does not depend
+ *             on the order)
+ *
+ * The host reads back one small record per step (the maxima and the fault)
+ * and touches particle data only in download. Everything is allocated in
+ * init (no allocation in step); init checks cudaMemGetInfo first.
+ *
+ * Two force loops, chosen by the environment variable WL_CUDA_GATHER:
+ *  - "ref": wl_sph_gather itself, per particle (branch-free, every
+ *    candidate j in the 3 or 9 cell rows costs a whole pair evaluation);
+ *  - "fast" (default): the same rows, the same order of j and the same pair
+ *    function (wl_sph_pair_eval, sph/interact.h), but a candidate farther
+ *    than 2h (with a 1e-4 relative margin on r^2) is skipped before the pair
+ *    evaluation. Such a pair contributes exact zeros in the reference loop
+ *    (W, grad W and the viscous dt term are 0 beyond the support), so the
+ *    sums are the same terms in the same order; test_cuda_backend compares
+ *    the two loops and the CPU. The bookkeeping of wl_sph_gather_block
+ *    (fluid then boundary sums, the DDT2 switch, gravity) is mirrored line
+ *    by line in gather_fast below: a change there must be made here too. */
+#include <cuda_runtime.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cub/device/device_radix_sort.cuh>
+
+extern "C" {
+#include "wallload/backend.h"
+#include "wallload/config.h"
+#include "wallload/cuda_device.h"
+#include "wallload/error.h"
+#include "wallload/sph.h"
+}
+#include "wallload/sph/cells.h"
+#include "wallload/sph/gather.h"
+#include "wallload/sph/guard.h"
+#include "wallload/sph/integrate.h"
+
+/* Threads per block of every particle kernel. */
+enum { THREADS = 128 };
+
+/* ---- error checking ----------------------------------------------------- */
+
+/* Every CUDA call goes through CK: on failure the function returns the
+ * error (first error wins) naming the call, the CUDA reason and the line. */
+#define CK(call)                                                                                 \
+  do {                                                                                           \
+    const cudaError_t e_ = (call);                                                               \
+    if (e_ != cudaSuccess)                                                                       \
+      return wl_error_set(err, WL_EIO, "cuda backend: %s failed: %s (%s:%d)", #call,             \
+                          cudaGetErrorString(e_), __FILE__, __LINE__);                           \
+  } while (0)
+
+/* After a kernel launch: the launch error (bad configuration) at once. */
+#define CKL(what) CK(cudaPeekAtLastError())
+
+/* ---- device state ------------------------------------------------------- */
+
+/* Reductions and fault of one step (device record, copied back once). */
+struct dstats {
+  unsigned long long ace2, vel2, visc; /* bit patterns of non-negative doubles */
+  int first;                           /* lowest faulty index, INT_MAX if none */
+  int fault, wall, kind;
+  unsigned int id;
+  int pad;
+  double pos[WL_SPH_DIM_MAX], vel[WL_SPH_DIM_MAX], rho;
+};
+
+/* Read-only configuration on the device (guard). */
+struct dmeta {
+  double lo[WL_SPH_DIM_MAX], hi[WL_SPH_DIM_MAX];
+  int n_walls;
+  struct wl_sph_wall walls[WL_SPH_WALLS_MAX];
+};
+
+struct bodyvel {
+  double v[WL_SPH_BODIES_MAX + 1][WL_SPH_DIM_MAX];
+};
+
+struct gpu {
+  struct wl_sph_config cfg;
+  struct wl_sph_const k;
+  struct wl_sph_grid grid;
+  int dim, n, nb, end_bit, fast;
+  /* device arrays (current roles; sorting swaps pos<->pos_h, vel<->vel_h,
+   * rho<->rho_h, id<->id_alt, kind<->kind_alt, body<->body_alt) */
+  double *pos[WL_SPH_DIM_MAX], *pos_h[WL_SPH_DIM_MAX];
+  wl_real *vel[WL_SPH_DIM_MAX], *vel_h[WL_SPH_DIM_MAX], *ace[WL_SPH_DIM_MAX];
+  wl_real *rho, *rho_h, *press, *ar, *visc;
+  unsigned int *key, *id, *id_alt;
+  unsigned char *kind, *kind_alt, *body, *body_alt;
+  int *begin; /* 2 n_cells + 1 */
+  void *sort_tmp;
+  size_t sort_tmp_bytes;
+  struct dmeta *meta;
+  struct dstats *stats;   /* device */
+  struct dstats *h_stats; /* pinned host copy */
+  void *allocs[64];       /* everything cudaMalloc'd, for free */
+  int n_allocs;
+  size_t bytes;           /* device bytes allocated */
+  cudaStream_t stream;
+  struct wl_cuda_device dev;
+};
+
+/* ---- kernels ------------------------------------------------------------ */
+
+static __device__ __forceinline__ int tid(void) { return blockIdx.x * blockDim.x + threadIdx.x; }
+
+/* Sort keys and the identity permutation; thread 0 resets the step record. */
+template <int DIM>
+__global__ void k_keys(struct wl_sph_grid g, const double *__restrict__ x,
+                       const double *__restrict__ y, const double *__restrict__ z,
+                       const unsigned char *__restrict__ kind, unsigned int *key,
+                       unsigned int *val, int n, struct dstats *st) {
+  const int i = tid();
+  if (i == 0) {
+    st->ace2 = st->vel2 = st->visc = 0ull;
+    st->first = 0x7fffffff;
+    st->fault = 0;
+  }
+  if (i >= n) return;
+  double *pos[WL_SPH_DIM_MAX] = {(double *)x, (double *)y, (double *)z};
+  if (DIM == 2) pos[1] = (double *)z;
+  const unsigned group = kind[i] == WL_KIND_FLUID ? 1u : 0u;
+  key[i] = group * (unsigned)g.n_cells + (unsigned)wl_sph_cell_of(DIM, &g, pos, i);
+  val[i] = (unsigned)i;
+}
+
+/* begin[k] = first sorted index whose key is >= k, for k in [0, n_keys]. */
+__global__ void k_begin(const unsigned int *__restrict__ key, int n, int n_keys, int *begin) {
+  const int k = tid();
+  if (k > n_keys) return;
+  int lo = 0, hi = n; /* lower bound */
+  while (lo < hi) {
+    const int mid = (lo + hi) >> 1;
+    if (key[mid] < (unsigned)k) lo = mid + 1;
+    else hi = mid;
+  }
+  begin[k] = lo;
+}
+
+/* State fields into sorted order (dst[s] = src[perm[s]]) and the pressure
+ * of the sorted density. */
+struct permute_args {
+  const unsigned int *perm;
+  const double *pos[WL_SPH_DIM_MAX];
+  double *pos_d[WL_SPH_DIM_MAX];
+  const wl_real *vel[WL_SPH_DIM_MAX];
+  wl_real *vel_d[WL_SPH_DIM_MAX];
+  const wl_real *rho;
+  wl_real *rho_d, *press;
+  const unsigned int *id;
+  unsigned int *id_d;
+  const unsigned char *kind, *body;
+  unsigned char *kind_d, *body_d;
+};
+
+template <int DIM>
+__global__ void k_permute(struct permute_args a, struct wl_sph_const k, int n) {
+  const int s = tid();
+  if (s >= n) return;
+  const int j = (int)a.perm[s];
+  for (int c = 0; c < DIM; c++) {
+    a.pos_d[c][s] = a.pos[c][j];
+    a.vel_d[c][s] = a.vel[c][j];
+  }
+  const wl_real rho = a.rho[j];
+  a.rho_d[s] = rho;
+  a.press[s] = wl_sph_eos_p(&k, rho);
+  a.id_d[s] = a.id[j];
+  a.kind_d[s] = a.kind[j];
+  a.body_d[s] = a.body[j];
+}
+
+/* Block maxima of three non-negative doubles, one atomic max per block. */
+static __device__ __forceinline__ void block_max3(double a, double b, double c, struct dstats *st) {
+  for (int o = 16; o > 0; o >>= 1) {
+    a = fmax(a, __shfl_xor_sync(0xffffffffu, a, o));
+    b = fmax(b, __shfl_xor_sync(0xffffffffu, b, o));
+    c = fmax(c, __shfl_xor_sync(0xffffffffu, c, o));
+  }
+  __shared__ double sh[3][THREADS / 32];
+  const int w = threadIdx.x >> 5, l = threadIdx.x & 31;
+  if (l == 0) {
+    sh[0][w] = a;
+    sh[1][w] = b;
+    sh[2][w] = c;
+  }
+  __syncthreads();
+  if (threadIdx.x == 0) {
+    for (int q = 1; q < THREADS / 32; q++) {
+      a = fmax(a, sh[0][q]);
+      b = fmax(b, sh[1][q]);
+      c = fmax(c, sh[2][q]);
+    }
+    if (a > 0) atomicMax(&st->ace2, (unsigned long long)__double_as_longlong(a));
+    if (b > 0) atomicMax(&st->vel2, (unsigned long long)__double_as_longlong(b));
+    if (c > 0) atomicMax(&st->visc, (unsigned long long)__double_as_longlong(c));
+  }
+}
+
+/* The maxima of particle i after its force evaluation, as the CPU backend
+ * takes them (double sums of float squares, no contraction). */
+template <int DIM>
+static __device__ __forceinline__ void particle_max(const struct wl_sph_eval *e, int i, int nb,
+                                                    double *a2, double *v2, double *vi) {
+  *vi = (double)e->visc[i];
+  if (i >= nb) {
+    double sa = 0, sv = 0;
+    for (int c = 0; c < DIM; c++) {
+      sa = __dadd_rn(sa, __dmul_rn((double)e->ace[c][i], (double)e->ace[c][i]));
+      sv = __dadd_rn(sv, __dmul_rn((double)e->vel[c][i], (double)e->vel[c][i]));
+    }
+    *a2 = sa;
+    *v2 = sv;
+  }
+}
+
+/* Reference force loop: the shared wl_sph_gather, one thread per particle. */
+template <int DIM, int LAM>
+__global__ void __launch_bounds__(THREADS)
+    k_gather_ref(const struct wl_sph_const kp, const struct wl_sph_grid gp,
+                 const struct wl_sph_eval ep, int n, int nb, struct dstats *st) {
+  const struct wl_sph_const k = kp;
+  const struct wl_sph_grid g = gp;
+  const struct wl_sph_eval e = ep;
+  const int i = tid();
+  double a2 = 0, v2 = 0, vi = 0;
+  if (i < n) {
+    wl_sph_gather(DIM, LAM, &k, &g, &e, nb, i);
+    particle_max<DIM>(&e, i, nb, &a2, &v2, &vi);
+  }
+  block_max3(a2, v2, vi, st);
+}
+
+/* Sums of one particle (wl_sph_acc for one lane). */
+struct acc1 {
+  wl_real a[3], cont, ddt, wsum, visc;
+};
+
+/* wl_sph_gather_range for one lane, skipping candidates beyond the support
+ * (see the file header: they add exact zeros in the reference loop). */
+template <int DIM, int LAM, int WANT_ACE, int WITH_DDT>
+static __device__ __forceinline__ void range_fast(const struct wl_sph_const *k,
+                                                  const struct wl_sph_eval *e, const double xi[3],
+                                                  const wl_real vi[3], wl_real rho_i,
+                                                  wl_real inv_rho_i, wl_real p_i, int j0, int j1,
+                                                  wl_real av, wl_real lam, wl_real r2_skip,
+                                                  struct acc1 *acc) {
+  const int az = DIM - 1;
+  const double *__restrict__ px = e->pos[0];
+  const double *__restrict__ py = e->pos[DIM == 3 ? 1 : 0];
+  const double *__restrict__ pz = e->pos[az];
+  for (int j = j0; j < j1; j++) {
+    const wl_real dx = (wl_real)(xi[0] - __ldg(px + j));
+    const wl_real dy = DIM == 3 ? (wl_real)(xi[1] - __ldg(py + j)) : WL_R(0.0);
+    const wl_real dz = (wl_real)(xi[2] - __ldg(pz + j));
+    const wl_real r2 = dx * dx + dy * dy + dz * dz;
+    if (!(r2 < r2_skip)) continue;
+    const wl_real uxj = __ldg(e->vel[0] + j), uyj = DIM == 3 ? __ldg(e->vel[1] + j) : WL_R(0.0),
+                  uzj = __ldg(e->vel[az] + j);
+    const wl_real rho_j = __ldg(e->rho + j), p_j = __ldg(e->press + j);
+    wl_real inv_rho_j, vol_j;
+    wl_sph_pair_j(k, rho_j, &inv_rho_j, &vol_j);
+    const wl_real ux = vi[0] - uxj;
+    const wl_real uy = DIM == 3 ? vi[1] - uyj : WL_R(0.0);
+    const wl_real uz = vi[2] - uzj;
+    const wl_real rv = dx * ux + dy * uy + dz * uz;
+    const struct wl_sph_pair o = wl_sph_pair_eval(LAM, WITH_DDT, k, r2, rv, dz, rho_i, inv_rho_i,
+                                                  p_i, rho_j, inv_rho_j, vol_j, p_j, av, lam);
+    if (WANT_ACE) {
+      acc->a[0] += o.c_r * dx + (LAM ? o.c_v * ux : WL_R(0.0));
+      if (DIM == 3) acc->a[1] += o.c_r * dy + (LAM ? o.c_v * uy : WL_R(0.0));
+      acc->a[2] += o.c_r * dz + (LAM ? o.c_v * uz : WL_R(0.0));
+    }
+    acc->cont += o.cont;
+    acc->ddt += o.ddt;
+    acc->wsum += o.wq;
+    acc->visc = wl_sph_max_nonneg(acc->visc, o.visc);
+  }
+}
+
+/* wl_sph_gather_block for one particle (lanes = 1, span 0) with range_fast. */
+template <int DIM, int LAM>
+__global__ void __launch_bounds__(THREADS)
+    k_gather_fast(const struct wl_sph_const kp, const struct wl_sph_grid gp,
+                  const struct wl_sph_eval ep, int n, int nb, wl_real r2_skip, struct dstats *st) {
+  const struct wl_sph_const k = kp;
+  const struct wl_sph_grid g = gp;
+  const struct wl_sph_eval e = ep;
+  const int i = tid();
+  double a2 = 0, v2 = 0, vmax = 0;
+  if (i < n) {
+    const int nc = g.n_cells;
+    const int fluid = i >= nb;
+    const int cell = (int)e.key[i] - (fluid ? nc : 0);
+    int first[9], last[9];
+    const int nr = wl_sph_cell_rows(DIM, &g, cell, 0, first, last);
+    const int *const bf = e.begin + nc;
+    const int *const bb = e.begin;
+    const int az = DIM - 1;
+    double xi[3];
+    wl_real vi[3];
+    xi[0] = e.pos[0][i];
+    xi[1] = DIM == 3 ? e.pos[1][i] : 0.0;
+    xi[2] = e.pos[az][i];
+    vi[0] = e.vel[0][i];
+    vi[1] = DIM == 3 ? e.vel[1][i] : WL_R(0.0);
+    vi[2] = e.vel[az][i];
+    const wl_real rho_i = e.rho[i], inv_rho_i = WL_R(1.0) / rho_i, p_i = e.press[i];
+    struct acc1 f = {{0, 0, 0}, 0, 0, 0, 0};
+    if (fluid) {
+      struct acc1 b = f;
+      for (int r = 0; r < nr; r++)
+        range_fast<DIM, LAM, 1, 1>(&k, &e, xi, vi, rho_i, inv_rho_i, p_i, bf[first[r]],
+                                   bf[last[r] + 1], k.av_ff, k.lam_ff, r2_skip, &f);
+      for (int r = 0; r < nr; r++)
+        range_fast<DIM, LAM, 1, 0>(&k, &e, xi, vi, rho_i, inv_rho_i, p_i, bb[first[r]],
+                                   bb[last[r] + 1], k.av_fb, k.lam_fb, r2_skip, &b);
+      const wl_real ddt = (k.ddt == WL_SPH_DDT_FOURTAKAS && b.wsum > 0) ? WL_R(0.0) : f.ddt;
+      e.ace[0][i] = f.a[0] + b.a[0] + k.gravity[0];
+      if (DIM == 3) e.ace[1][i] = f.a[1] + b.a[1] + k.gravity[1];
+      e.ace[DIM - 1][i] = f.a[2] + b.a[2] + k.gravity[DIM - 1];
+      e.ar[i] = rho_i * (f.cont + b.cont) + ddt;
+      e.visc[i] = k.h * wl_sph_max_nonneg(f.visc, b.visc);
+    } else {
+      for (int r = 0; r < nr; r++)
+        range_fast<DIM, LAM, 0, 0>(&k, &e, xi, vi, rho_i, inv_rho_i, p_i, bf[first[r]],
+                                   bf[last[r] + 1], k.av_fb, k.lam_fb, r2_skip, &f);
+      for (int a = 0; a < DIM; a++) e.ace[a][i] = 0;
+      e.ar[i] = rho_i * f.cont;
+      e.visc[i] = k.h * f.visc;
+    }
+    particle_max<DIM>(&e, i, nb, &a2, &v2, &vmax);
+  }
+  block_max3(a2, v2, vmax, st);
+}
+
+/* Predictor (sph/integrate.h) and the pressure of the half-step density. */
+template <int DIM>
+__global__ void k_predict(struct wl_sph_const kp, struct wl_particles p, double dt,
+                          struct bodyvel bv, int n) {
+  const int i = tid();
+  if (i >= n) return;
+  const struct wl_sph_const k = kp;
+  wl_sph_predict(DIM, &k, &p, dt, (const double(*)[WL_SPH_DIM_MAX])bv.v, i);
+  p.press[i] = wl_sph_eos_p(&k, p.rho_h[i]);
+}
+
+/* Corrector (when correct != 0) and guard; the lowest faulty index. */
+template <int DIM>
+__global__ void k_correct_guard(struct wl_sph_const kp, struct wl_particles p, double dt,
+                                struct bodyvel bv, int n, int correct, const struct dmeta *m,
+                                struct dstats *st) {
+  const int i = tid();
+  if (i >= n) return;
+  const struct wl_sph_const k = kp;
+  if (correct) wl_sph_correct(DIM, &k, &p, dt, (const double(*)[WL_SPH_DIM_MAX])bv.v, i);
+  int w = -1;
+  if (wl_sph_guard(DIM, &k, &p, m->lo, m->hi, m->walls, m->n_walls, i, &w))
+    atomicMin(&st->first, i);
+}
+
+/* The fault record of the first faulty particle (one thread). */
+template <int DIM>
+__global__ void k_fault(struct wl_sph_const kp, struct wl_particles p, int n,
+                        const struct dmeta *m, struct dstats *st) {
+  const struct wl_sph_const k = kp;
+  const int f = st->first;
+  if (f >= n) return;
+  int w = -1;
+  st->fault = wl_sph_guard(DIM, &k, &p, m->lo, m->hi, m->walls, m->n_walls, f, &w);
+  st->wall = w;
+  st->id = p.id[f];
+  st->kind = p.kind[f];
+  for (int a = 0; a < WL_SPH_DIM_MAX; a++) {
+    st->pos[a] = a < DIM ? p.pos[a][f] : 0;
+    st->vel[a] = a < DIM ? (double)p.vel[a][f] : 0;
+  }
+  st->rho = p.rho[f];
+}
+
+/* ---- host side ---------------------------------------------------------- */
+
+static int blocks(int n) { return (n + THREADS - 1) / THREADS; }
+
+template <class T> static void swap_ptr(T *&a, T *&b) {
+  T *t = a;
+  a = b;
+  b = t;
+}
+
+/* The particle view of the current roles (for integrate.h and guard.h). */
+static struct wl_particles view(const struct gpu *c) {
+  struct wl_particles p;
+  memset(&p, 0, sizeof p);
+  p.dim = c->dim;
+  p.n = p.capacity = c->n;
+  p.n_bound = c->nb;
+  for (int a = 0; a < WL_SPH_DIM_MAX; a++) {
+    p.pos[a] = c->pos[a];
+    p.vel[a] = c->vel[a];
+    p.pos_h[a] = c->pos_h[a];
+    p.vel_h[a] = c->vel_h[a];
+    p.ace[a] = c->ace[a];
+  }
+  p.rho = c->rho;
+  p.rho_h = c->rho_h;
+  p.press = c->press;
+  p.ar = c->ar;
+  p.visc = c->visc;
+  p.id = c->id;
+  p.kind = c->kind;
+  p.body = c->body;
+  p.key = c->key;
+  return p;
+}
+
+/* Rebuild the cell lists: keys, sort, begin, state into sorted order, the
+ * pressure of the sorted density. The sort's scratch lives in arrays that
+ * are free at this point of the step (ace, visc); pos_h, vel_h, rho_h
+ * receive the sorted state and swap roles with it. */
+static enum wl_status rebuild(struct gpu *c, struct wl_error *err) {
+  const int n = c->n, dim = c->dim;
+  unsigned int *key_alt = (unsigned int *)c->ace[0];
+  unsigned int *val = (unsigned int *)c->ace[1];
+  unsigned int *val_alt = (unsigned int *)(dim == 3 ? c->ace[2] : c->visc);
+  if (dim == 3)
+    k_keys<3><<<blocks(n), THREADS, 0, c->stream>>>(c->grid, c->pos[0], c->pos[1], c->pos[2],
+                                                     c->kind, c->key, val, n, c->stats);
+  else
+    k_keys<2><<<blocks(n), THREADS, 0, c->stream>>>(c->grid, c->pos[0], c->pos[1], c->pos[1],
+                                                     c->kind, c->key, val, n, c->stats);
+  CKL("keys");
+  cub::DoubleBuffer<unsigned int> dk(c->key, key_alt), dv(val, val_alt);
+  size_t tmp = c->sort_tmp_bytes;
+  CK(cub::DeviceRadixSort::SortPairs(c->sort_tmp, tmp, dk, dv, n, 0, c->end_bit, c->stream));
+  if (dk.Current() != c->key) {
+    /* sorted keys landed in ace[0]'s array: swap the two roles */
+    wl_real *t = (wl_real *)c->key;
+    c->key = dk.Current();
+    c->ace[0] = t;
+  }
+  const unsigned int *perm = dv.Current();
+  const int n_keys = 2 * c->grid.n_cells;
+  k_begin<<<blocks(n_keys + 1), THREADS, 0, c->stream>>>(c->key, n, n_keys, c->begin);
+  CKL("begin");
+  struct permute_args a;
+  memset(&a, 0, sizeof a);
+  a.perm = perm;
+  for (int q = 0; q < dim; q++) {
+    a.pos[q] = c->pos[q];
+    a.pos_d[q] = c->pos_h[q];
+    a.vel[q] = c->vel[q];
+    a.vel_d[q] = c->vel_h[q];
+  }
+  a.rho = c->rho;
+  a.rho_d = c->rho_h;
+  a.press = c->press;
+  a.id = c->id;
+  a.id_d = c->id_alt;
+  a.kind = c->kind;
+  a.kind_d = c->kind_alt;
+  a.body = c->body;
+  a.body_d = c->body_alt;
+  if (dim == 3) k_permute<3><<<blocks(n), THREADS, 0, c->stream>>>(a, c->k, n);
+  else k_permute<2><<<blocks(n), THREADS, 0, c->stream>>>(a, c->k, n);
+  CKL("permute");
+  for (int q = 0; q < dim; q++) {
+    swap_ptr(c->pos[q], c->pos_h[q]);
+    swap_ptr(c->vel[q], c->vel_h[q]);
+  }
+  swap_ptr(c->rho, c->rho_h);
+  swap_ptr(c->id, c->id_alt);
+  swap_ptr(c->kind, c->kind_alt);
+  swap_ptr(c->body, c->body_alt);
+  return WL_OK;
+}
+
+/* One force evaluation at (pos, vel, rho) with press already filled. */
+static enum wl_status evaluate(struct gpu *c, double *const *pos, wl_real *const *vel,
+                               const wl_real *rho, struct wl_error *err) {
+  struct wl_sph_eval e;
+  memset(&e, 0, sizeof e);
+  for (int a = 0; a < WL_SPH_DIM_MAX; a++) {
+    e.pos[a] = a < c->dim ? pos[a] : NULL;
+    e.vel[a] = a < c->dim ? vel[a] : NULL;
+    e.ace[a] = a < c->dim ? c->ace[a] : NULL;
+  }
+  e.rho = rho;
+  e.press = c->press;
+  e.key = c->key;
+  e.begin = c->begin;
+  e.ar = c->ar;
+  e.visc = c->visc;
+  const int n = c->n, nb = c->nb, lam = c->k.visc == WL_SPH_VISC_LAMINAR;
+  const int nbk = blocks(n);
+  /* skip threshold: (2h)^2 with a relative margin far above float rounding */
+  const wl_real r2_skip = c->k.support2 * WL_R(1.0001);
+  cudaStream_t s = c->stream;
+  if (c->fast) {
+    if (c->dim == 3 && !lam) k_gather_fast<3, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, r2_skip, c->stats);
+    else if (c->dim == 3) k_gather_fast<3, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, r2_skip, c->stats);
+    else if (!lam) k_gather_fast<2, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, r2_skip, c->stats);
+    else k_gather_fast<2, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, r2_skip, c->stats);
+  } else {
+    if (c->dim == 3 && !lam) k_gather_ref<3, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, c->stats);
+    else if (c->dim == 3) k_gather_ref<3, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, c->stats);
+    else if (!lam) k_gather_ref<2, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, c->stats);
+    else k_gather_ref<2, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, c->stats);
+  }
+  CKL("gather");
+  return WL_OK;
+}
+
+/* Corrector (in != NULL) and guard, the fault record, then the step record
+ * back to the host (the one synchronisation of a step). */
+static enum wl_status finish(struct gpu *c, const struct wl_sph_step_in *in,
+                             const struct bodyvel *bv, struct wl_sph_step_out *out,
+                             struct wl_error *err) {
+  const struct wl_particles p = view(c);
+  const int n = c->n;
+  const double dt = in ? in->dt : 0.0;
+  if (c->dim == 3) {
+    k_correct_guard<3><<<blocks(n), THREADS, 0, c->stream>>>(c->k, p, dt, *bv, n, in != NULL, c->meta, c->stats);
+    CKL("correct");
+    k_fault<3><<<1, 1, 0, c->stream>>>(c->k, p, n, c->meta, c->stats);
+  } else {
+    k_correct_guard<2><<<blocks(n), THREADS, 0, c->stream>>>(c->k, p, dt, *bv, n, in != NULL, c->meta, c->stats);
+    CKL("correct");
+    k_fault<2><<<1, 1, 0, c->stream>>>(c->k, p, n, c->meta, c->stats);
+  }
+  CKL("fault");
+  CK(cudaMemcpyAsync(c->h_stats, c->stats, sizeof *c->stats, cudaMemcpyDeviceToHost, c->stream));
+  CK(cudaStreamSynchronize(c->stream));
+  const struct dstats *st = c->h_stats;
+  double ace2, vel2, visc;
+  memcpy(&ace2, &st->ace2, sizeof ace2);
+  memcpy(&vel2, &st->vel2, sizeof vel2);
+  memcpy(&visc, &st->visc, sizeof visc);
+  /* dt exactly as the CPU backend's fill_dt */
+  const double h = c->k.h_d, c0 = c->k.c0_d;
+  const double amax = sqrt(ace2), vmax = sqrt(vel2);
+  memset(out, 0, sizeof *out);
+  out->ace_max = amax;
+  out->vel_max = vmax;
+  out->dt_force = amax > 0 ? sqrt(h / amax) : INFINITY;
+  out->dt_cv = h / ((c0 > 10 * vmax ? c0 : 10 * vmax) + visc);
+  out->dt_next = c->k.cfl * (out->dt_force < out->dt_cv ? out->dt_force : out->dt_cv);
+  out->fault = WL_SPH_FAULT_NONE;
+  if (st->first < n) {
+    out->fault = st->fault;
+    out->fault_index = st->first;
+    out->fault_id = st->id;
+    out->fault_kind = st->kind;
+    out->fault_wall = st->wall;
+    for (int a = 0; a < WL_SPH_DIM_MAX; a++) {
+      out->fault_pos[a] = st->pos[a];
+      out->fault_vel[a] = st->vel[a];
+    }
+    out->fault_rho = st->rho;
+  }
+  return WL_OK;
+}
+
+static void cuda_free(void *ctx) {
+  struct gpu *c = (struct gpu *)ctx;
+  if (!c) return;
+  for (int q = 0; q < c->n_allocs; q++) cudaFree(c->allocs[q]);
+  if (c->h_stats) cudaFreeHost(c->h_stats);
+  if (c->stream) cudaStreamDestroy(c->stream);
+  free(c);
+}
+
+static enum wl_status cuda_step(void *ctx, const struct wl_sph_step_in *in,
+                                struct wl_sph_step_out *out, struct wl_error *err) {
+  struct gpu *c = (struct gpu *)ctx;
+  memset(out, 0, sizeof *out);
+  struct bodyvel bv;
+  memcpy(bv.v, in->body_vel, sizeof bv.v);
+  enum wl_status st = rebuild(c, err);
+  if (st) return st;
+  if ((st = evaluate(c, c->pos, c->vel, c->rho, err))) return st;
+  struct wl_particles p = view(c);
+  if (c->dim == 3) k_predict<3><<<blocks(c->n), THREADS, 0, c->stream>>>(c->k, p, in->dt, bv, c->n);
+  else k_predict<2><<<blocks(c->n), THREADS, 0, c->stream>>>(c->k, p, in->dt, bv, c->n);
+  CKL("predict");
+  if ((st = evaluate(c, c->pos_h, c->vel_h, c->rho_h, err))) return st;
+  return finish(c, in, &bv, out, err);
+}
+
+static void cuda_describe(void *ctx, char *buf, size_t size) {
+  const struct gpu *c = (const struct gpu *)ctx;
+  snprintf(buf, size,
+           "cuda (%s, sm_%d%d, %d SMs; %s force loop, one thread per particle; %d cells of %.4g m; "
+           "%.1f MiB on the device, %.0f B/particle)",
+           c->dev.name, c->dev.sm_major, c->dev.sm_minor, c->dev.n_sm,
+           c->fast ? "fast (cut-off skip)" : "reference (wl_sph_gather)", c->grid.n_cells,
+           c->grid.cell, c->bytes / 1048576.0, (double)c->bytes / (c->n > 0 ? c->n : 1));
+}
+
+static enum wl_status cuda_download(void *ctx, struct wl_particles *host, struct wl_error *err) {
+  struct gpu *c = (struct gpu *)ctx;
+  if (host->dim != c->dim)
+    return wl_error_set(err, WL_EINPUT, "cuda backend: download of %dD particles into %dD", c->dim,
+                        host->dim);
+  if (host->capacity < c->n)
+    return wl_error_set(err, WL_EINPUT, "cuda backend: download of %d particles into room for %d",
+                        c->n, host->capacity);
+  const size_t n = (size_t)c->n;
+  for (int a = 0; a < c->dim; a++) {
+    CK(cudaMemcpyAsync(host->pos[a], c->pos[a], n * sizeof(double), cudaMemcpyDeviceToHost, c->stream));
+    CK(cudaMemcpyAsync(host->vel[a], c->vel[a], n * sizeof(wl_real), cudaMemcpyDeviceToHost, c->stream));
+  }
+  CK(cudaMemcpyAsync(host->rho, c->rho, n * sizeof(wl_real), cudaMemcpyDeviceToHost, c->stream));
+  CK(cudaMemcpyAsync(host->id, c->id, n * sizeof(unsigned int), cudaMemcpyDeviceToHost, c->stream));
+  CK(cudaMemcpyAsync(host->kind, c->kind, n, cudaMemcpyDeviceToHost, c->stream));
+  CK(cudaMemcpyAsync(host->body, c->body, n, cudaMemcpyDeviceToHost, c->stream));
+  CK(cudaStreamSynchronize(c->stream));
+  host->n = c->n;
+  host->n_bound = c->nb;
+  return WL_OK;
+}
+
+/* cudaMalloc of one labelled array, counted and remembered for free. */
+static enum wl_status dalloc(struct gpu *c, void **p, size_t bytes, const char *label,
+                             struct wl_error *err) {
+  *p = NULL;
+  if (bytes == 0) bytes = 1;
+  const cudaError_t e = cudaMalloc(p, bytes);
+  if (e != cudaSuccess) {
+    *p = NULL;
+    return wl_error_set(err, WL_ENOMEM, "cuda backend: cannot allocate '%s' (%.1f MiB, %d particles): %s",
+                        label, bytes / 1048576.0, c->n, cudaGetErrorString(e));
+  }
+  c->allocs[c->n_allocs++] = *p;
+  c->bytes += bytes;
+  return WL_OK;
+}
+
+/* Device bytes per particle of the arrays (dim components where vectors). */
+static size_t bytes_per_particle(int dim) {
+  return (size_t)dim * (2 * sizeof(double) + 3 * sizeof(wl_real)) /* pos, pos_h, vel, vel_h, ace */
+         + 5 * sizeof(wl_real)                                      /* rho, rho_h, press, ar, visc */
+         + 3 * sizeof(unsigned int)                                 /* key, id, id_alt */
+         + 4;                                                       /* kind, body and their alts */
+}
+
+static enum wl_status cuda_init(void **ctx, const struct wl_sph_config *cfg,
+                                const struct wl_sph_const *k, const struct wl_particles *host,
+                                struct wl_sph_step_out *out, struct wl_error *err) {
+  *ctx = NULL;
+  const int dim = cfg->prm.dim;
+  if (host->dim != dim)
+    return wl_error_set(err, WL_EINPUT, "cuda backend: particles are %dD, configuration %dD",
+                        host->dim, dim);
+  for (int i = 0; i < host->n; i++) {
+    const int bound = host->kind[i] != WL_KIND_FLUID;
+    if (bound != (i < host->n_bound))
+      return wl_error_set(err, WL_EINPUT,
+                          "cuda backend: particle %d (id %u) is %s but the first %d particles must "
+                          "be the boundary ones and the rest fluid",
+                          i, host->id[i], bound ? "boundary" : "fluid", host->n_bound);
+    if (host->kind[i] > WL_KIND_MOVING)
+      return wl_error_set(err, WL_EINPUT, "cuda backend: particle %d has kind %d; valid 0, 1, 2",
+                          i, host->kind[i]);
+    if (host->kind[i] == WL_KIND_MOVING && (host->body[i] < 1 || host->body[i] > WL_SPH_BODIES_MAX))
+      return wl_error_set(err, WL_EINPUT, "cuda backend: moving particle %d has body %d; valid 1..%d",
+                          i, host->body[i], WL_SPH_BODIES_MAX);
+  }
+  if (cfg->n_walls < 0 || cfg->n_walls > WL_SPH_WALLS_MAX)
+    return wl_error_set(err, WL_EINPUT, "cuda backend: %d walls; at most %d", cfg->n_walls,
+                        WL_SPH_WALLS_MAX);
+  struct wl_cuda_device dev;
+  enum wl_status st = wl_cuda_device_query(&dev, err);
+  if (st) return st;
+  struct gpu *c = (struct gpu *)calloc(1, sizeof *c);
+  if (!c) return wl_error_set(err, WL_ENOMEM, "cuda backend: out of host memory");
+  c->cfg = *cfg;
+  c->k = *k;
+  c->dev = dev;
+  c->dim = dim;
+  c->n = host->n;
+  c->nb = host->n_bound;
+  const char *mode = getenv("WL_CUDA_GATHER");
+  c->fast = !(mode && !strcmp(mode, "ref"));
+  if ((st = wl_sph_grid_make(cfg, k, &c->grid, err))) {
+    cuda_free(c);
+    return st;
+  }
+  const int n = c->n, n_keys = 2 * c->grid.n_cells;
+  unsigned int mk = (unsigned int)(n_keys - 1);
+  c->end_bit = 1;
+  while (c->end_bit < 32 && (mk >> c->end_bit)) c->end_bit++;
+
+  /* what the run needs, against what the GPU has free */
+  {
+    cub::DoubleBuffer<unsigned int> dk(NULL, NULL), dv(NULL, NULL);
+    const cudaError_t e =
+        cub::DeviceRadixSort::SortPairs(NULL, c->sort_tmp_bytes, dk, dv, n, 0, c->end_bit);
+    if (e != cudaSuccess) {
+      cuda_free(c);
+      return wl_error_set(err, WL_EIO, "cuda backend: radix sort size query failed: %s",
+                          cudaGetErrorString(e));
+    }
+  }
+  const size_t per = bytes_per_particle(dim);
+  const size_t need = per * (size_t)n + sizeof(int) * (size_t)(n_keys + 1) + c->sort_tmp_bytes +
+                      sizeof(struct dmeta) + sizeof(struct dstats);
+  size_t free_b = 0, total_b = 0;
+  if (cudaMemGetInfo(&free_b, &total_b) != cudaSuccess) free_b = 0;
+  /* leave a margin for the runtime and allocation granularity */
+  const size_t margin = 64u << 20;
+  if (need + margin > free_b) {
+    const size_t tot = total_b;
+    const double need_mib = need / 1048576.0, free_mib = free_b / 1048576.0,
+                 sort_mib = c->sort_tmp_bytes / 1048576.0;
+    cuda_free(c);
+    return wl_error_set(err, WL_ENOMEM,
+                        "cuda backend: %d particles (%dD) need %.1f MiB of GPU memory (%zu B per "
+                        "particle, %d cells, %.1f MiB sort scratch) plus a %.0f MiB margin; %s has "
+                        "%.1f MiB free of %.1f MiB",
+                        n, dim, need_mib, per, n_keys / 2, sort_mib, margin / 1048576.0,
+                        dev.name, free_mib, tot / 1048576.0);
+  }
+  const size_t nd = (size_t)n * sizeof(double), nr = (size_t)n * sizeof(wl_real),
+               nu = (size_t)n * sizeof(unsigned int), n8 = (size_t)n;
+#define A(ptr, bytes, label)                                                                     \
+  do {                                                                                           \
+    if ((st = dalloc(c, (void **)&(ptr), (bytes), (label), err))) {                              \
+      cuda_free(c);                                                                              \
+      return st;                                                                                 \
+    }                                                                                            \
+  } while (0)
+  for (int a = 0; a < dim; a++) {
+    A(c->pos[a], nd, "pos");
+    A(c->pos_h[a], nd, "pos_h");
+    A(c->vel[a], nr, "vel");
+    A(c->vel_h[a], nr, "vel_h");
+    A(c->ace[a], nr, "ace");
+  }
+  A(c->rho, nr, "rho");
+  A(c->rho_h, nr, "rho_h");
+  A(c->press, nr, "press");
+  A(c->ar, nr, "ar");
+  A(c->visc, nr, "visc");
+  A(c->key, nu, "key");
+  A(c->id, nu, "id");
+  A(c->id_alt, nu, "id (sort copy)");
+  A(c->kind, n8, "kind");
+  A(c->kind_alt, n8, "kind (sort copy)");
+  A(c->body, n8, "body");
+  A(c->body_alt, n8, "body (sort copy)");
+  A(c->begin, sizeof(int) * (size_t)(n_keys + 1), "cell index");
+  A(c->sort_tmp, c->sort_tmp_bytes, "sort scratch");
+  A(c->meta, sizeof(struct dmeta), "configuration");
+  A(c->stats, sizeof(struct dstats), "step record");
+#undef A
+  {
+    const cudaError_t e = cudaMallocHost((void **)&c->h_stats, sizeof *c->h_stats);
+    if (e != cudaSuccess) {
+      c->h_stats = NULL;
+      cuda_free(c);
+      return wl_error_set(err, WL_ENOMEM, "cuda backend: cudaMallocHost of the step record: %s",
+                          cudaGetErrorString(e));
+    }
+  }
+#define C(call)                                                                                  \
+  do {                                                                                           \
+    const cudaError_t e_ = (call);                                                               \
+    if (e_ != cudaSuccess) {                                                                     \
+      cuda_free(c);                                                                              \
+      return wl_error_set(err, WL_EIO, "cuda backend: %s failed: %s (%s:%d)", #call,             \
+                          cudaGetErrorString(e_), __FILE__, __LINE__);                           \
+    }                                                                                            \
+  } while (0)
+  C(cudaStreamCreateWithFlags(&c->stream, cudaStreamNonBlocking));
+  struct dmeta m;
+  memset(&m, 0, sizeof m);
+  for (int a = 0; a < WL_SPH_DIM_MAX; a++) {
+    m.lo[a] = cfg->lo[a];
+    m.hi[a] = cfg->hi[a];
+  }
+  m.n_walls = cfg->n_walls;
+  memcpy(m.walls, cfg->walls, sizeof m.walls);
+  C(cudaMemcpy(c->meta, &m, sizeof m, cudaMemcpyHostToDevice));
+  for (int a = 0; a < dim; a++) {
+    C(cudaMemcpy(c->pos[a], host->pos[a], nd, cudaMemcpyHostToDevice));
+    C(cudaMemcpy(c->vel[a], host->vel[a], nr, cudaMemcpyHostToDevice));
+  }
+  C(cudaMemcpy(c->rho, host->rho, nr, cudaMemcpyHostToDevice));
+  C(cudaMemcpy(c->id, host->id, nu, cudaMemcpyHostToDevice));
+  C(cudaMemcpy(c->kind, host->kind, n8, cudaMemcpyHostToDevice));
+  C(cudaMemcpy(c->body, host->body, n8, cudaMemcpyHostToDevice));
+#undef C
+  /* forces of the initial state give the first dt (as the CPU backend) */
+  struct bodyvel bv;
+  memset(&bv, 0, sizeof bv);
+  if ((st = rebuild(c, err)) || (st = evaluate(c, c->pos, c->vel, c->rho, err)) ||
+      (st = finish(c, NULL, &bv, out, err))) {
+    cuda_free(c);
+    return st;
+  }
+  *ctx = c;
+  return WL_OK;
+}
+
+extern "C" const struct wl_backend_ops wl_backend_cuda_ops = {
+    "cuda", cuda_init, cuda_step, cuda_download, cuda_describe, cuda_free,
+};
