@@ -10,6 +10,7 @@ enum wl_status wl_cli_check(int argc, char **argv, struct wl_error *err);
 enum wl_status wl_cli_convert(int argc, char **argv, struct wl_error *err);
 enum wl_status wl_cli_assess(int argc, char **argv, struct wl_error *err);
 enum wl_status wl_cli_report(int argc, char **argv, struct wl_error *err);
+enum wl_status wl_cli_validate(int argc, char **argv, struct wl_error *err);
 enum wl_status wl_cli_bench(int argc, char **argv, struct wl_error *err);
 
 #endif

@@ -22,7 +22,9 @@ static void usage(FILE *out) {
           "                      wave (wallload convert --help)\n"
           "  report RESULTS.h5 [-o FILE.pdf] [--template FILE]\n"
           "                      re-render the design report from stored results\n"
-          "  validate [CASE...]  run the reference cases, error against runtime\n"
+          "  validate [CASE...] [--ladder N] [--quick] [-o DIR] [--threads N]\n"
+          "                      reference cases (reference/) on a resolution ladder: error\n"
+          "                      against runtime, observed order (validate --help)\n"
           "  bench [--case dambreak2d|dambreak3d|all] [--backend cpu|cuda|all]\n"
           "        [--particles N] [--steps N] [--coefh C] [--threads N]\n"
           "                      dam-break throughput per backend (force evaluations/s)\n"
@@ -59,9 +61,7 @@ int main(int argc, char **argv) {
   } else if (!strcmp(cmd, "bench")) {
     st = wl_cli_bench(argc - 1, argv + 1, &err);
   } else if (!strcmp(cmd, "validate")) {
-    st = wl_error_set(&err, WL_EUNSUPPORTED,
-                      "%s: this stage is not built yet in wallload %s (see the open issues)", cmd,
-                      WL_VERSION);
+    st = wl_cli_validate(argc - 1, argv + 1, &err);
   } else {
     fprintf(stderr, "wallload: unknown command '%s'\n\n", cmd);
     usage(stderr);

@@ -1,0 +1,192 @@
+/* validate.c: `wallload validate [CASE...] [--ladder N] [--quick] [-o DIR]
+ * [--threads N] [--reference DIR]`: run the reference cases of reference/
+ * on a resolution ladder, print per case and level the particles, steps,
+ * runtime and metrics with pass/fail, the observed order and the
+ * Richardson-extrapolated error, and write validation.{json,csv,pdf}. */
+#define _POSIX_C_SOURCE 200809L /* mkdir */
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "cli.h"
+#include "wallload/error.h"
+#include "wallload/validate.h"
+
+#define VALIDATE_USAGE                                                                            \
+  "usage: wallload validate [CASE...] [--ladder N] [--quick] [-o DIR] [--threads N] "            \
+  "[--reference DIR]"
+
+static void help(void) {
+  printf("%s\n\n"
+         "Run reference cases (reference/<case>/README.md says what each checks) on a ladder of\n"
+         "resolutions dp, dp/sqrt2, dp/2, ...; print error, runtime and the observed order.\n"
+         "  CASE...          case names or the group 'solitary' (default: all)\n"
+         "  --ladder N       levels per case, 1 to 6 (default 3; the order needs 3)\n"
+         "  --quick          each case's coarse, short ladder (seconds to a minute per case)\n"
+         "  -o DIR           output directory (default validation-results; created)\n"
+         "  --threads N      OpenMP threads per run (default: OpenMP's)\n"
+         "  --reference DIR  the reference/ directory (default: the source tree's)\n"
+         "  --list           list the cases\n"
+         "exit: 0 every case passes, 1 a case misses its tolerance or a run fails, 2 bad input\n\n"
+         "cases:\n",
+         VALIDATE_USAGE);
+  for (int i = 0; i < wl_validate_n_cases(); i++)
+    printf("  %-20s %s\n", wl_validate_case_name(i), wl_validate_case_title(i));
+}
+
+static void print_metric(const struct wl_validate_metric *m) {
+  const char *mark = isnan(m->tol) ? "info" : (m->pass ? "pass" : "FAIL");
+  switch (m->kind) {
+  case WL_VALIDATE_REL:
+    printf("      %-34s %12.5g vs %-12.5g %-6s error %+8.2f %%  tol %s%.1f %%  %s\n", m->name,
+           m->value, m->reference, m->unit, 100 * m->error, isnan(m->tol) ? "(" : "",
+           isnan(m->tol) ? 0.0 : 100 * m->tol, mark);
+    break;
+  case WL_VALIDATE_RMSE:
+  case WL_VALIDATE_RATIO:
+    printf("      %-34s %12.5g / %-12.5g %-6s = %8.2f %%   tol %.1f %%  %s\n", m->name, m->value,
+           m->reference, m->unit, 100 * m->error, isnan(m->tol) ? NAN : 100 * m->tol, mark);
+    break;
+  case WL_VALIDATE_CORR:
+    printf("      %-34s r = %.4f%34s tol >= %.3f  %s\n", m->name, m->value, "", m->tol, mark);
+    break;
+  }
+}
+
+static void on_level(void *user, const struct wl_validate_result *r, int l) {
+  (void)user;
+  const struct wl_validate_level *lv = &r->lv[l];
+  printf("  level %d: dp = %-9.4g m  %7d particles  %7ld steps  %8.1f s%s%s\n", l + 1, lv->dp,
+         lv->n_particles, lv->steps, lv->runtime_s, lv->status ? "  STOPPED: " : "",
+         lv->status ? lv->message : "");
+  for (int j = 0; j < lv->n_metrics; j++) print_metric(&lv->m[j]);
+  fflush(stdout);
+}
+
+enum wl_status wl_cli_validate(int argc, char **argv, struct wl_error *err) {
+  const int n_cases = wl_validate_n_cases();
+  int *sel = calloc((size_t)n_cases, sizeof(int));
+  if (!sel) return wl_error_set(err, WL_ENOMEM, "validate: no memory");
+  struct wl_validate_opts opts = {0};
+  const char *out_dir = "validation-results";
+  int any = 0;
+  enum wl_status st = WL_OK;
+  for (int i = 1; i < argc && !st; i++) {
+    const char *a = argv[i];
+    if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
+      help();
+      free(sel);
+      return WL_OK;
+    } else if (!strcmp(a, "--list")) {
+      for (int c = 0; c < n_cases; c++)
+        printf("%-20s %s\n", wl_validate_case_name(c), wl_validate_case_title(c));
+      free(sel);
+      return WL_OK;
+    } else if (!strcmp(a, "--quick")) {
+      opts.quick = 1;
+    } else if (!strcmp(a, "-o") || !strcmp(a, "--ladder") || !strcmp(a, "--threads") ||
+               !strcmp(a, "--reference")) {
+      if (i + 1 >= argc) {
+        st = wl_error_set(err, WL_EUSAGE, "validate: %s needs a value\n%s", a, VALIDATE_USAGE);
+        break;
+      }
+      const char *v = argv[++i];
+      char *end;
+      if (!strcmp(a, "-o")) {
+        out_dir = v;
+      } else if (!strcmp(a, "--reference")) {
+        opts.reference_dir = v;
+      } else if (!strcmp(a, "--ladder")) {
+        long n = strtol(v, &end, 10);
+        if (*end || n < 1 || n > WL_VALIDATE_MAX_LEVELS)
+          st = wl_error_set(err, WL_EUSAGE, "validate: --ladder: found '%s'; expected 1 to %d", v,
+                            WL_VALIDATE_MAX_LEVELS);
+        opts.n_levels = (int)n;
+      } else {
+        long n = strtol(v, &end, 10);
+        if (*end || n < 1 || n > 4096)
+          st = wl_error_set(err, WL_EUSAGE, "validate: --threads: found '%s'; expected 1 to 4096", v);
+        opts.threads = (int)n;
+      }
+    } else if (a[0] == '-') {
+      st = wl_error_set(err, WL_EUSAGE,
+                        "validate: unknown option '%s'; valid: --ladder N, --quick, -o DIR, "
+                        "--threads N, --reference DIR, --list\n%s",
+                        a, VALIDATE_USAGE);
+    } else {
+      st = wl_validate_select(a, sel, err);
+      any = 1;
+    }
+  }
+  if (st) {
+    free(sel);
+    return st;
+  }
+  if (!any)
+    for (int i = 0; i < n_cases; i++) sel[i] = 1;
+  if (mkdir(out_dir, 0777) != 0 && errno != EEXIST) {
+    st = wl_error_set(err, WL_EIO, "validate: %s: cannot create the output directory (%s)", out_dir,
+                      strerror(errno));
+    free(sel);
+    return st;
+  }
+  struct wl_validate_result *res = calloc((size_t)n_cases, sizeof *res);
+  if (!res) {
+    free(sel);
+    return wl_error_set(err, WL_ENOMEM, "validate: no memory");
+  }
+  opts.on_level = on_level;
+  int n_done = 0;
+  for (int i = 0; i < n_cases && !st; i++) {
+    if (!sel[i]) continue;
+    printf("%s: %s\n", wl_validate_case_name(i), wl_validate_case_title(i));
+    fflush(stdout);
+    st = wl_validate_run(i, &opts, &res[n_done], err);
+    const struct wl_validate_result *r = &res[n_done];
+    if (st) break;
+    n_done++;
+    if (r->n_levels >= 3)
+      printf("  order p = %s%.2f%s, extrapolated primary error %s%.3g\n",
+             isfinite(r->order) ? "" : "n/a ", isfinite(r->order) ? r->order : 0.0,
+             r->order_ok ? "" : " (not meaningful: non-monotone or outside [0.5, 4])",
+             r->order_ok ? "" : "n/a ", r->order_ok ? r->extrapolated : 0.0);
+    else
+      printf("  order: needs 3 levels\n");
+    printf("  %s: %s\n\n", r->pass ? "PASS" : "FAIL", r->verdict);
+    fflush(stdout);
+  }
+  if (st) {
+    /* a bad reference or option: whatever ran is still worth writing */
+    struct wl_error e2;
+    wl_error_clear(&e2);
+    if (n_done) wl_validate_write(out_dir, res, n_done, &e2);
+    free(res);
+    free(sel);
+    return st;
+  }
+  st = wl_validate_write(out_dir, res, n_done, err);
+  if (!st) {
+    printf("%-20s %-6s %s\n", "case", "result", "finest level");
+    char failed[1024] = "";
+    int n_failed = 0;
+    for (int i = 0; i < n_done; i++) {
+      printf("%-20s %-6s %s\n", res[i].name, res[i].pass ? "pass" : "FAIL", res[i].verdict);
+      if (!res[i].pass) {
+        size_t u = strlen(failed);
+        snprintf(failed + u, sizeof failed - u, "%s%s", n_failed ? ", " : "", res[i].name);
+        n_failed++;
+      }
+    }
+    printf("\nvalidation table and plot in %s/ (validation.json, validation.csv, validation.pdf)\n",
+           out_dir);
+    if (n_failed)
+      st = wl_error_set(err, WL_ENUMERIC, "validate: %d of %d case(s) missed their tolerance: %s",
+                        n_failed, n_done, failed);
+  }
+  free(res);
+  free(sel);
+  return st;
+}
