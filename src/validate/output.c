@@ -263,14 +263,16 @@ static enum wl_status write_pdf(const char *path, const struct wl_validate_resul
         {"extrapolated", "-", WL_REPORT_ALIGN_AUTO, 3}, {"result", NULL, WL_REPORT_ALIGN_LEFT, 0}};
     enum { NC = 8 };
     struct wl_report_cell *cells = calloc((size_t)n * NC + 1, sizeof *cells);
-    if (!cells) {
+    char(*nl)[8] = calloc((size_t)n + 1, sizeof *nl);
+    if (!cells || !nl) {
       st = wl_error_set(err, WL_ENOMEM, "validate: no memory for the table");
     } else {
       for (int i = 0; i < n; i++) {
         struct wl_report_cell *row = cells + (size_t)i * NC;
         const struct wl_validate_level *f = r[i].n_levels ? &r[i].lv[r[i].n_levels - 1] : NULL;
         row[0].text = r[i].name;
-        row[1].value = r[i].n_levels;
+        snprintf(nl[i], sizeof nl[i], "%d", r[i].n_levels);
+        row[1].text = nl[i];
         row[2].value = f ? f->dp : NAN;
         row[3].value = f && f->n_metrics ? f->m[0].error : NAN;
         row[4].value = f && f->n_metrics ? f->m[0].tol : NAN;
@@ -280,8 +282,9 @@ static enum wl_status write_pdf(const char *path, const struct wl_validate_resul
       }
       struct wl_report_table t = {"Cases at the finest level (primary metric)", cols, NC, cells, n};
       st = wl_report_add_table(d, &t, err);
-      free(cells);
     }
+    free(cells);
+    free(nl);
   }
   /* per case: every level and metric */
   for (int i = 0; i < n && !st; i++) {
@@ -309,12 +312,13 @@ static enum wl_status write_pdf(const char *path, const struct wl_validate_resul
       break;
     }
     int k = 0;
+    static const char *lvl[WL_VALIDATE_MAX_LEVELS] = {"1", "2", "3", "4", "5", "6"};
     for (int l = 0; l < r[i].n_levels; l++) {
       const struct wl_validate_level *lv = &r[i].lv[l];
       for (int j = 0; j < lv->n_metrics; j++, k++) {
         struct wl_report_cell *row = cells + (size_t)k * MC;
         const struct wl_validate_metric *m = &lv->m[j];
-        row[0].value = l + 1;
+        row[0].text = lvl[l];
         row[1].value = lv->dp;
         row[2].value = lv->n_particles;
         row[3].value = lv->runtime_s;
