@@ -148,11 +148,15 @@ enum wl_status wl_cli_validate(int argc, char **argv, struct wl_error *err) {
     const struct wl_validate_result *r = &res[n_done];
     if (st) break;
     n_done++;
-    if (r->n_levels >= 3)
-      printf("  order p = %s%.2f%s, extrapolated primary error %s%.3g\n",
-             isfinite(r->order) ? "" : "n/a ", isfinite(r->order) ? r->order : 0.0,
-             r->order_ok ? "" : " (not meaningful: non-monotone or outside [0.5, 4])",
-             r->order_ok ? "" : "n/a ", r->order_ok ? r->extrapolated : 0.0);
+    if (r->n_levels >= 3 && !isfinite(r->order))
+      printf("  order: undefined (equal errors on the last levels)\n");
+    else if (r->n_levels >= 3 && r->order_ok)
+      printf("  order p = %.2f, Richardson-extrapolated primary error %.4g\n", r->order,
+             r->extrapolated);
+    else if (r->n_levels >= 3)
+      printf("  order p = %.2f (not meaningful: non-monotone or outside [%.1f, %.1f]); no "
+             "extrapolation\n",
+             r->order, WL_VALIDATE_ORDER_MIN, WL_VALIDATE_ORDER_MAX);
     else
       printf("  order: needs 3 levels\n");
     printf("  %s: %s\n\n", r->pass ? "PASS" : "FAIL", r->verdict);

@@ -377,31 +377,29 @@ struct zhou {
   struct wl_val_series s; /* t, h1, h2, p2 */
 };
 
-/* Water height at x: the top of the wet stretch that starts at the bed,
- * scanning up in steps of dp/10 while the Shepard sum is at least 0.4 (the
- * DualSPHysics 2D gauge criterion of sph/probe.h), interpolated between
- * samples. Unlike wl_sph_probe_elevation (the top of the highest wet
- * stretch) it does not read an overturning jet or spray above the gauge as
- * the water level. */
-static double column_top(const struct wl_sph_probe *pr, double x, double z_hi, double dp) {
+/* Water height at x as a wire gauge reads it: the wetted length of the
+ * vertical line, the sum of the stretches where the Shepard sum is at least
+ * 0.4 (the DualSPHysics 2D gauge criterion of sph/probe.h), sampled every
+ * dp/10. The kernel sum is truncated by the bed, so the line counts as wet
+ * from the bed up to the first wet sample when that lies within 3 dp of it.
+ * The top of the highest wet stretch (wl_sph_probe_elevation) would read an
+ * overturning jet passing above the gauge as the water level, and the top
+ * of the stretch from the bed would drop at an air pocket under a plunging
+ * bore; the wetted length does neither. */
+static double wetted_length(const struct wl_sph_probe *pr, double x, double z_hi, double dp) {
   const double lim = 0.4, dz = 0.1 * dp;
-  double zp[2] = {x, 0.0}, s_prev = 0;
+  double zp[2] = {x, 0.0}, len = 0;
   double z = 0.0;
-  /* the wet column begins within 3 dp of the bed (the kernel sum is
-   * truncated by the bed, so the first samples may read low) */
   for (; z <= 3 * dp; z += dz) {
     zp[1] = z;
-    s_prev = wl_sph_probe_shepard(pr, zp);
-    if (s_prev >= lim) break;
+    if (wl_sph_probe_shepard(pr, zp) >= lim) break;
   }
-  if (z > 3 * dp) return 0.0;
-  for (z += dz; z <= z_hi; z += dz) {
+  if (z <= 3 * dp) len = z;
+  for (; z <= z_hi; z += dz) {
     zp[1] = z;
-    const double s = wl_sph_probe_shepard(pr, zp);
-    if (s < lim) return z - dz + dz * (s_prev - lim) / (s_prev - s);
-    s_prev = s;
+    if (wl_sph_probe_shepard(pr, zp) >= lim) len += dz;
   }
-  return z_hi;
+  return len;
 }
 
 static enum wl_status zhou_out(void *user, struct wl_sph_sim *sim, double t, struct wl_error *err) {
@@ -411,8 +409,8 @@ static enum wl_status zhou_out(void *user, struct wl_sph_sim *sim, double t, str
   enum wl_status st = wl_sph_probe_index(z->probe, p, err);
   if (st) return st;
   double y[3];
-  y[0] = column_top(z->probe, ZHOU_X_H1, 3 * ZHOU_COL_H, z->dp);
-  y[1] = column_top(z->probe, ZHOU_X_H2, 3 * ZHOU_COL_H, z->dp);
+  y[0] = wetted_length(z->probe, ZHOU_X_H1, 3 * ZHOU_COL_H, z->dp);
+  y[1] = wetted_length(z->probe, ZHOU_X_H2, 3 * ZHOU_COL_H, z->dp);
   /* sensor: mean over its window, half a spacing off the face (assess's
    * probe placement); dry points read 0 */
   double ps = 0;

@@ -287,15 +287,20 @@ static enum wl_status write_pdf(const char *path, const struct wl_validate_resul
     free(nl);
   }
   /* per case: every level and metric */
+  if (!st) st = wl_report_add_heading(d, 1, "Cases, level by level", err);
   for (int i = 0; i < n && !st; i++) {
     char h[256];
     snprintf(h, sizeof h, "%s: %s", r[i].name, r[i].title);
     wl_report_add_heading(d, 2, h, err);
     char para[700];
-    snprintf(para, sizeof para, "Result: %s. Observed order %s%.2f%s.", r[i].verdict,
-             isfinite(r[i].order) ? "" : "n/a ", isfinite(r[i].order) ? r[i].order : 0.0,
-             r[i].order_ok ? " (meaningful; Richardson estimate in the table above)"
-                           : " (not meaningful: non-monotone or outside [0.5, 4])");
+    if (r[i].n_levels < 3)
+      snprintf(para, sizeof para, "Result: %s. Observed order: needs three levels.", r[i].verdict);
+    else if (!isfinite(r[i].order))
+      snprintf(para, sizeof para, "Result: %s. Observed order: undefined (equal errors).", r[i].verdict);
+    else
+      snprintf(para, sizeof para, "Result: %s. Observed order %.2f%s.", r[i].verdict, r[i].order,
+               r[i].order_ok ? " (meaningful; Richardson estimate in the table above)"
+                             : " (not meaningful: non-monotone or outside [0.5, 4])");
     st = wl_report_add_paragraph(d, para, err);
     static const struct wl_report_column mc[] = {
         {"level", NULL, WL_REPORT_ALIGN_AUTO, 0},   {"dp", "m", WL_REPORT_ALIGN_AUTO, 3},
@@ -313,6 +318,12 @@ static enum wl_status write_pdf(const char *path, const struct wl_validate_resul
     }
     int k = 0;
     static const char *lvl[WL_VALIDATE_MAX_LEVELS] = {"1", "2", "3", "4", "5", "6"};
+    char(*np)[16] = calloc((size_t)r[i].n_levels + 1, sizeof *np);
+    if (!np) {
+      free(cells);
+      st = wl_error_set(err, WL_ENOMEM, "validate: no memory for the table");
+      break;
+    }
     for (int l = 0; l < r[i].n_levels; l++) {
       const struct wl_validate_level *lv = &r[i].lv[l];
       for (int j = 0; j < lv->n_metrics; j++, k++) {
@@ -320,7 +331,8 @@ static enum wl_status write_pdf(const char *path, const struct wl_validate_resul
         const struct wl_validate_metric *m = &lv->m[j];
         row[0].text = lvl[l];
         row[1].value = lv->dp;
-        row[2].value = lv->n_particles;
+        snprintf(np[l], sizeof np[l], "%d", lv->n_particles);
+        row[2].text = np[l];
         row[3].value = lv->runtime_s;
         row[4].text = m->name;
         row[5].value = m->value;
@@ -333,6 +345,7 @@ static enum wl_status write_pdf(const char *path, const struct wl_validate_resul
     struct wl_report_table t = {NULL, mc, MC, cells, rows};
     if (!st) st = wl_report_add_table(d, &t, err);
     free(cells);
+    free(np);
   }
   if (!st) st = wl_report_doc_finish(d, err);
   wl_report_doc_free(d);
