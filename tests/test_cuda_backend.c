@@ -20,7 +20,11 @@
  * differences grow step by step. The tolerances below are therefore tight
  * after one step and looser after a few hundred, each stated with the
  * scale it is relative to. Both runs use the same fixed step (half the
- * first CFL step), so they reach the same times. */
+ * first CFL step), so they reach the same times. Measured on an H100
+ * (2026-11-23): after 300 (2D) and 100 (3D) steps max |dx| 3e-6 and 9e-7
+ * dp, rms |dv| 3e-6 and 1e-6 of max |v|, max |drho| 3e-7 rho0, kinetic
+ * energy 1e-6 relative; the tolerances leave a factor of about 100 for
+ * other compilers and GPUs. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -39,10 +43,10 @@
 /* After the run: positions in units of dp, velocities relative to the
  * largest velocity (RMS over particles), densities relative to rho0 (max),
  * kinetic energy relative (at every sample). */
-#define TOL_RUN_POS 0.05
-#define TOL_RUN_VEL_RMS 5e-3
-#define TOL_RUN_RHO 2e-3
-#define TOL_RUN_KE 5e-3
+#define TOL_RUN_POS 1e-3
+#define TOL_RUN_VEL_RMS 1e-4
+#define TOL_RUN_RHO 1e-5
+#define TOL_RUN_KE 1e-4
 
 struct scene_case {
   int dim;
