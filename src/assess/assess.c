@@ -391,11 +391,11 @@ enum wl_status wl_assess_run(const struct wl_scenario *s, const struct wl_plan *
     snprintf(res->out_dir, sizeof res->out_dir, "%s", opts->out_dir);
   else
     snprintf(res->out_dir, sizeof res->out_dir, "%s-results", s->name.text);
-  enum wl_status st = prepare_dir(res->out_dir, opts->force, err);
-  if (st) return st;
   const struct wl_backend_ops *ops;
-  if ((st = pick_backend(s, opts, &ops, err))) return st;
+  enum wl_status st = pick_backend(s, opts, &ops, err);
+  if (st) return st;
   snprintf(res->backend, sizeof res->backend, "%s", ops->name);
+  if ((st = prepare_dir(res->out_dir, opts->force, err))) return st;
 
   enum wl_load_case todo[2];
   int n = 0;
