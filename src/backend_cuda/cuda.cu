@@ -378,6 +378,7 @@ struct cand {
   double x[3];
   float xr[3];
   wl_real v[3], rho, p;
+  wl_real inv_rho, vol; /* wl_sph_pair_j of rho, once per staged candidate */
 };
 
 /* Add the pairs of the candidates marked in m (ascending: the order of j)
@@ -395,9 +396,7 @@ static __device__ __forceinline__ void tile_pairs(const struct wl_sph_const *k,
     const wl_real dx = (wl_real)(xi[0] - cj->x[0]);
     const wl_real dy = DIM == 3 ? (wl_real)(xi[1] - cj->x[1]) : WL_R(0.0);
     const wl_real dz = (wl_real)(xi[2] - cj->x[2]);
-    const wl_real rho_j = cj->rho, p_j = cj->p;
-    wl_real inv_rho_j, vol_j;
-    wl_sph_pair_j(k, rho_j, &inv_rho_j, &vol_j);
+    const wl_real rho_j = cj->rho, p_j = cj->p, inv_rho_j = cj->inv_rho, vol_j = cj->vol;
     const wl_real ux = vi[0] - cj->v[0];
     const wl_real uy = DIM == 3 ? vi[1] - cj->v[1] : WL_R(0.0);
     const wl_real uz = vi[2] - cj->v[2];
@@ -515,6 +514,7 @@ __global__ void __launch_bounds__(THREADS, WL_TILE_MIN_BLOCKS)
               cj.xr[2] = (float)(cj.x[2] - o2);
               cj.rho = e.rho[j];
               cj.p = e.press[j];
+              wl_sph_pair_j(&k, cj.rho, &cj.inv_rho, &cj.vol);
               sm[s] = cj;
             }
             __syncwarp();
