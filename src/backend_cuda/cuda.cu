@@ -8,9 +8,10 @@
  *             fields gathered into sorted order; begin[key] = first sorted
  *             index of each key by binary search (every entry written, no
  *             memset, no atomics)
- *   forces    one thread per particle, wl_sph_gather (sph/gather.h) at the
- *             step start; predictor (sph/integrate.h) and the gather again
- *             at the half step
+ *   forces    one thread per particle, the pair physics of sph/interact.h
+ *             summed as wl_sph_gather (sph/gather.h) does (three loops,
+ *             below) at the step start; predictor (sph/integrate.h) and the
+ *             forces again at the half step
  *   corrector and guard (sph/guard.h) in one kernel; the first faulty
  *             particle (lowest sorted index) by an atomic min
  *   dt        max |a|^2, max |v|^2 of fluid particles and max h|v.r|/(r^2 +
@@ -36,11 +37,10 @@
  *    every candidate, because one of its 32 particles nearly always has it
  *    inside the support;
  *  - "tile" (default in 3D; "fast" is the 2D default): the warp walks the
- *    candidates of its particles'
- *    rows together, staging 64 at a time in shared memory (coalesced loads,
- *    broadcast reads); each thread marks the candidates inside its support
- *    in a bit mask (a float test with a safe margin) and then
- *    evaluates only those (k_gather_tile).
+ *    candidates of its particles' rows together, staging 64 at a time in
+ *    shared memory (coalesced loads, broadcast reads); each thread marks
+ *    the candidates inside its support in a bit mask (a float test with a
+ *    safe margin) and then evaluates only those (k_gather_tile).
  * The bookkeeping of wl_sph_gather_block (fluid then boundary sums, the
  * DDT2 switch, gravity) is mirrored in k_gather_fast and k_gather_tile: a
  * change there must be made here too (the test's comparison with the
@@ -956,7 +956,14 @@ static enum wl_status cuda_init(void **ctx, const struct wl_sph_config *cfg,
   const size_t need = per * (size_t)n + sizeof(int) * (size_t)(n_keys + 1) + c->sort_tmp_bytes +
                       sizeof(struct dmeta) + sizeof(struct dstats);
   size_t free_b = 0, total_b = 0;
-  if (cudaMemGetInfo(&free_b, &total_b) != cudaSuccess) free_b = 0;
+  {
+    const cudaError_t e = cudaMemGetInfo(&free_b, &total_b);
+    if (e != cudaSuccess) {
+      cuda_free(c);
+      return wl_error_set(err, WL_EIO, "cuda backend: cudaMemGetInfo failed: %s",
+                          cudaGetErrorString(e));
+    }
+  }
   /* leave a margin for the runtime and allocation granularity */
   const size_t margin = 64u << 20;
   if (need + margin > free_b) {
