@@ -12,7 +12,34 @@
  *
  * Every file is written atomically. An unstable or interrupted case keeps
  * its results up to the stop, and its status says where and why it stopped;
- * the other cases still run (after an interruption, none does). */
+ * the other cases still run (after an interruption, none does).
+ *
+ * Convergence ladder. When the scenario has resolution.convergence (dp
+ * factors, decreasing, e.g. [1, 0.71, 0.5]), every load case runs at each
+ * level, coarse to fine, with dp_k = dp x factor_k (the scenario re-planned
+ * at that spacing). The last level run is the case's main result, written
+ * as without a ladder (series, snapshots, CSV, peaks). Per level the driver
+ * keeps dp, particles, steps, runtime, particle-steps/s and the scalar loads
+ * (peak force from the filtered probe and boundary-particle series, impulse,
+ * peak moment, maximum run-up), and after each level estimates the relative
+ * error of the peak force (probes) and of the impulse with
+ * wl_loads_convergence (loads.h) from the last three levels run:
+ *
+ *   observed order p = ln((f1 - f2)/(f2 - f3)) / ln r (r = h1/h2 = h2/h3;
+ *     with slightly unequal ratios the general equation of loads.h),
+ *   Richardson value f_ext = f3 + (f3 - f2)/(r^p - 1),
+ *   error estimate |f3 - f_ext| / |f_ext| of the finest level run;
+ *
+ * when the differences change sign or vanish, or p lies outside
+ * [WL_LOADS_ORDER_MIN, WL_LOADS_ORDER_MAX] = [0.5, 4], there is no
+ * extrapolation and the error estimate is the last change |f3 - f2|/|f3|
+ * (with two levels, too). The case's error estimate is the larger of the
+ * two quantities'. When resolution.target_error is written in the scenario,
+ * refining stops once that estimate (available from the second level on) is
+ * below the target; the levels not run are listed as skipped. Without it the
+ * whole ladder runs and the estimate is compared with the default target
+ * (5 %). Stored in results.h5 under /convergence/<case>/, in summary.json
+ * (cases.<case>.convergence) and in convergence.csv. */
 #ifndef WALLLOAD_ASSESS_H
 #define WALLLOAD_ASSESS_H
 
@@ -72,14 +99,54 @@ struct wl_case_result {
   struct wl_case_loads loads;
 };
 
+enum { WL_ASSESS_MAX_LEVELS = WL_SCENARIO_MAX_LEVELS };
+
+/* One level of a convergence ladder: the run and its scalar loads. */
+struct wl_assess_level {
+  double factor;            /* of the scenario's dp [-] */
+  double dp;                /* [m] */
+  enum wl_status status;    /* of the run (WL_OK: complete) */
+  int n_particles;          /* fluid and boundary */
+  long steps;
+  double runtime_s;         /* wall-clock [s] */
+  double rate;              /* particle-steps per second [1/s] */
+  double t_reached;         /* [s] */
+  double peak_force;        /* filtered, pressure probes [N/m] */
+  double peak_force_bound;  /* filtered, boundary particles [N/m] */
+  double impulse;           /* int (F - F_static) dt, probes [N s/m] */
+  double peak_moment;       /* filtered, about the toe [N m/m] */
+  double runup;             /* max water level at the wall above still water [m] */
+  double error;             /* estimated relative error of this level: the larger of peak
+                               force and impulse, |f_k - f_ref|/|f_ref| with f_ref the
+                               Richardson value when the order is meaningful, else the
+                               finest level run; the finest level gets the case's estimate */
+};
+
+/* The ladder of one load case. */
+struct wl_assess_convergence {
+  int n_planned;            /* levels in the scenario (0: no ladder) */
+  int n_levels;             /* levels run */
+  struct wl_assess_level lv[WL_ASSESS_MAX_LEVELS];
+  struct wl_loads_convergence force, impulse; /* of peak force (probes) and impulse */
+  double error_estimate;    /* max(force.error, impulse.error) [-]; NaN: none */
+  double target;            /* resolution.target_error [-] (its default when not given) */
+  int target_given;         /* 1: written in the scenario: the ladder may stop early */
+  int target_met;           /* error_estimate <= target */
+  int stopped_early;        /* 1: target met before the last level */
+  char note[320];           /* one sentence: how the ladder ended */
+};
+
 struct wl_assess_result {
   int n_cases;
   struct wl_case_result cases[2];
+  struct wl_assess_convergence conv[2]; /* per case; n_planned 0 without a ladder */
   char out_dir[512];
   char backend[32];
   int threads;
 };
 
+/* Progress of a running case: case_name is the case ("solitary"), or with a
+ * ladder the case and its level ("solitary, level 2/3, dp = 0.0141 m"). */
 typedef void (*wl_assess_progress_fn)(void *user, const char *case_name,
                                       const struct wl_sph_progress *pr);
 

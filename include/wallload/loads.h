@@ -66,4 +66,55 @@ struct wl_peak {
  * WL_LOADS_THRESHOLD; value is the peak of x itself. n >= 1. */
 void wl_loads_peak(const double *t, const double *x, size_t n, double base, struct wl_peak *pk);
 
+/* ---- convergence over a resolution ladder --------------------------------- */
+
+/* Meaningful observed orders: outside [MIN, MAX] the three levels are not in
+ * the asymptotic range (or the quantity is noise-dominated) and no
+ * Richardson extrapolation is made. */
+#define WL_LOADS_ORDER_MIN 0.5
+#define WL_LOADS_ORDER_MAX 4.0
+
+/* How the error estimate of a ladder was obtained. */
+enum wl_loads_estimate {
+  WL_LOADS_EST_NONE,        /* fewer than two levels (or non-finite values): no estimate */
+  WL_LOADS_EST_LAST_CHANGE, /* |f_n - f_(n-1)| / |f_n|: two levels, or the order not meaningful */
+  WL_LOADS_EST_RICHARDSON,  /* |f_n - f_ext| / |f_ext| with the observed order */
+};
+
+/* Observed order, Richardson extrapolation and error estimate of a quantity
+ * f computed at spacings h (any length unit), from the LAST three levels
+ * (1 coarsest, 3 finest of those three; h1 > h2 > h3):
+ *
+ *   r21 = h1/h2, r32 = h2/h3 (refinement ratios)
+ *   with f = f* + C h^p:  (f1 - f2)/(f2 - f3) = r32^p (r21^p - 1)/(r32^p - 1),
+ *   which for a constant ratio r is r^p, so p = ln((f1 - f2)/(f2 - f3)) / ln r;
+ *   for unequal ratios (the ladder 1, 0.71, 0.5 has 1.408 and 1.42) the
+ *   equation is solved for p by bisection (its right side increases with p).
+ *   f_ext = f3 + (f3 - f2)/(r32^p - 1)                 (Richardson)
+ *   error = |f3 - f_ext| / |f_ext|                      (relative, of the finest level)
+ *
+ * The order is "meaningful" (order_ok) when the two differences have the
+ * same sign (monotone convergence) and WL_LOADS_ORDER_MIN <= p <=
+ * WL_LOADS_ORDER_MAX. Otherwise (differences of opposite sign: oscillating;
+ * a zero difference; p out of range) there is no extrapolation and the
+ * error estimate is the last change |f3 - f2| / |f3|; the order is still
+ * reported when it is defined (NaN when the differences change sign or one
+ * is zero). With two levels the estimate is the last change; with one, none.
+ * Pure function; never fails. */
+struct wl_loads_convergence {
+  int n_used;            /* levels used: min(n, 3) */
+  double r21, r32;       /* refinement ratios of the last three levels (NaN when absent) */
+  double order;          /* observed order p (NaN when undefined) */
+  int order_ok;          /* 1: monotone and p in [WL_LOADS_ORDER_MIN, WL_LOADS_ORDER_MAX] */
+  double extrapolated;   /* f_ext (NaN unless order_ok) */
+  double error;          /* relative error estimate of the finest value (NaN: none) */
+  enum wl_loads_estimate basis;
+};
+
+void wl_loads_convergence(const double *h, const double *f, int n,
+                          struct wl_loads_convergence *out);
+
+/* "Richardson", "last change" or "none". */
+const char *wl_loads_estimate_name(enum wl_loads_estimate e);
+
 #endif

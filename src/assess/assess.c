@@ -410,7 +410,9 @@ enum wl_status wl_assess_run(const struct wl_scenario *s, const struct wl_plan *
     snprintf(snap, sizeof snap, "%s/particles_%s.h5", res->out_dir, wl_flume_case_name(todo[i]));
     struct wl_error cerr;
     wl_error_clear(&cerr);
-    enum wl_status cst = wl_assess_case(s, plan, todo[i], opts, snap, c, &cerr);
+    enum wl_status cst = s->resolution.n_levels > 0
+                             ? ladder_run(s, plan, todo[i], opts, snap, c, &res->conv[i], &cerr)
+                             : wl_assess_case(s, plan, todo[i], opts, snap, c, &cerr);
     res->threads = c->flume.cfg.n_threads > 0 ? c->flume.cfg.n_threads : omp_get_max_threads();
     if (cst != WL_OK && cst != WL_EUNSTABLE && cst != WL_EINTERRUPTED && c->rec.n == 0) {
       *err = cerr; /* the case could not even start */

@@ -12,6 +12,19 @@ void case_loads_clear(struct wl_case_loads *l);
 /* Filtered series, impulse, peaks and run-up of a case's record. */
 enum wl_status case_loads_compute(struct wl_case_result *c, struct wl_error *err);
 
+/* ladder.c */
+/* Run load case `load` on the scenario's convergence ladder into c (the last
+ * level run, as wl_assess_case fills it) and cv (every level, the estimate
+ * and how the ladder ended). Returns the last level's status (a level that
+ * cannot be planned or built returns its error, c keeping the level before
+ * when there was one). */
+enum wl_status ladder_run(const struct wl_scenario *s, const struct wl_plan *plan,
+                          enum wl_load_case load, const struct wl_assess_opts *opts,
+                          const char *snapshots, struct wl_case_result *c,
+                          struct wl_assess_convergence *cv, struct wl_error *err);
+/* Order, extrapolation and error estimates of the levels run so far. */
+void ladder_estimate(struct wl_assess_convergence *cv);
+
 /* output.c */
 /* Write results.h5, summary.json and the CSV files of all cases. */
 enum wl_status write_results(const struct wl_scenario *s, const struct wl_plan *plan,

@@ -2,6 +2,7 @@
  * written atomically (store module). Layout documented in README.md. */
 #include <math.h>
 #include <stdarg.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -91,6 +92,215 @@ static const char *status_word(enum wl_status st) {
   }
 }
 
+/* ---- convergence ladder ------------------------------------------------------ */
+
+/* The per-level quantities of a ladder: name (HDF5 dataset, JSON key, CSV
+ * column stem), unit, description, and where the value is. */
+struct level_field {
+  const char *name, *unit, *desc;
+  size_t offset;
+  int kind; /* 0 double, 1 int, 2 long, 3 status word */
+};
+#define LF(m) offsetof(struct wl_assess_level, m)
+static const struct level_field LEVEL_FIELDS[] = {
+    {"factor", "1", "level's factor of the scenario's dp", LF(factor), 0},
+    {"dp", "m", "particle spacing of the level", LF(dp), 0},
+    {"particles", "1", "fluid and boundary particles", LF(n_particles), 1},
+    {"steps", "1", "time steps", LF(steps), 2},
+    {"runtime", "s", "wall-clock time of the level's run", LF(runtime_s), 0},
+    {"particle_steps_per_second", "1/s", "particles x steps / runtime", LF(rate), 0},
+    {"time_reached", "s", "simulated time reached", LF(t_reached), 0},
+    {"peak_force", "N/m", "peak of the filtered pressure-probe force", LF(peak_force), 0},
+    {"peak_force_boundary", "N/m", "peak of the filtered boundary-particle force",
+     LF(peak_force_bound), 0},
+    {"impulse", "N s/m", "integral of (probe force - static force) dt to the end", LF(impulse), 0},
+    {"peak_moment", "N m/m", "peak of the filtered overturning moment about the toe",
+     LF(peak_moment), 0},
+    {"max_runup", "m", "highest water level at the wall face above still water", LF(runup), 0},
+    {"estimated_error", "1",
+     "relative error estimate of the level: larger of peak force and impulse, against the "
+     "Richardson value (or the finest level); the finest level's is the case's estimate",
+     LF(error), 0},
+    {"status", "", "complete, unstable, interrupted or failed", LF(status), 3},
+};
+#undef LF
+enum { N_LEVEL_FIELDS = sizeof LEVEL_FIELDS / sizeof LEVEL_FIELDS[0] };
+
+static double level_value(const struct wl_assess_level *lv, const struct level_field *f) {
+  const char *p = (const char *)lv + f->offset;
+  switch (f->kind) {
+  case 1: return (double)*(const int *)(const void *)p;
+  case 2: return (double)*(const long *)(const void *)p;
+  case 3: return (double)*(const enum wl_status *)(const void *)p;
+  default: return *(const double *)(const void *)p;
+  }
+}
+
+static const char *bool_word(int b) { return b ? "true" : "false"; }
+
+static void json_estimate(struct text *t, const char *key, const struct wl_loads_convergence *e,
+                          int last) {
+  put(t, "        ");
+  jstr(t, key);
+  put(t, ": { \"order\": ");
+  jnum(t, e->order);
+  put(t, ", \"order_meaningful\": %s, \"extrapolated\": ", bool_word(e->order_ok));
+  jnum(t, e->extrapolated);
+  put(t, ", \"error_estimate\": ");
+  jnum(t, e->error);
+  put(t, ", \"basis\": ");
+  jstr(t, wl_loads_estimate_name(e->basis));
+  put(t, " }%s\n", last ? "" : ",");
+}
+
+static void json_convergence(struct text *t, const struct wl_assess_convergence *cv) {
+  put(t, "      \"convergence\": {\n        \"units\": {");
+  for (int k = 0; k < N_LEVEL_FIELDS; k++) {
+    if (LEVEL_FIELDS[k].kind == 3) continue;
+    put(t, "%s", k ? ", " : " ");
+    jstr(t, LEVEL_FIELDS[k].name);
+    put(t, ": ");
+    jstr(t, LEVEL_FIELDS[k].unit);
+  }
+  put(t, " },\n        \"levels\": [\n");
+  for (int l = 0; l < cv->n_levels; l++) {
+    const struct wl_assess_level *lv = &cv->lv[l];
+    put(t, "          {");
+    for (int k = 0; k < N_LEVEL_FIELDS; k++) {
+      const struct level_field *f = &LEVEL_FIELDS[k];
+      put(t, "%s", k ? ", " : " ");
+      jstr(t, f->name);
+      put(t, ": ");
+      if (f->kind == 3)
+        jstr(t, status_word(lv->status));
+      else
+        jnum(t, level_value(lv, f));
+    }
+    put(t, " }%s\n", l + 1 < cv->n_levels ? "," : "");
+  }
+  put(t, "        ],\n        \"levels_planned\": %d,\n", cv->n_planned);
+  put(t, "        \"ratio\": ");
+  jnum(t, cv->force.r32);
+  put(t, ",\n        \"order\": { \"peak_force\": ");
+  jnum(t, cv->force.order);
+  put(t, ", \"impulse\": ");
+  jnum(t, cv->impulse.order);
+  put(t, " },\n");
+  json_estimate(t, "peak_force", &cv->force, 0);
+  json_estimate(t, "impulse", &cv->impulse, 0);
+  put(t, "        \"error_estimate\": ");
+  jnum(t, cv->error_estimate);
+  put(t, ",\n        \"target\": ");
+  jnum(t, cv->target);
+  put(t, ",\n        \"target_given\": %s,\n        \"target_met\": %s,\n"
+         "        \"stopped_early\": %s,\n        \"note\": ",
+      bool_word(cv->target_given), bool_word(cv->target_met), bool_word(cv->stopped_early));
+  jstr(t, cv->note);
+  put(t, "\n      }\n");
+}
+
+static enum wl_status write_convergence_h5(struct wl_store *h5, const struct wl_case_result *c,
+                                           const struct wl_assess_convergence *cv,
+                                           struct wl_error *err) {
+  char g[64], p[160];
+  snprintf(g, sizeof g, "convergence/%s", c->name);
+  size_t n = (size_t)cv->n_levels;
+  double col[WL_ASSESS_MAX_LEVELS];
+  enum wl_status st = WL_OK;
+  for (int k = 0; !st && k < N_LEVEL_FIELDS; k++) {
+    const struct level_field *f = &LEVEL_FIELDS[k];
+    snprintf(p, sizeof p, "%s/%s", g, f->name);
+    if (f->kind == 3) {
+      int code[WL_ASSESS_MAX_LEVELS];
+      for (size_t l = 0; l < n; l++) code[l] = (int)cv->lv[l].status;
+      st = wl_store_write_vector_i(h5, p, code, n,
+                                   "run status per level: 0 complete, else the failure code "
+                                   "(enum wl_status: unstable, interrupted, ...)",
+                                   err);
+      continue;
+    }
+    for (size_t l = 0; l < n; l++) col[l] = level_value(&cv->lv[l], f);
+    st = wl_store_write_vector(h5, p, col, n, f->unit, f->desc, err);
+  }
+  struct {
+    const char *name;
+    double v;
+    const char *unit;
+  } attrs[] = {
+      {"levels_planned", cv->n_planned, "1"},
+      {"levels_run", cv->n_levels, "1"},
+      {"ratio", cv->force.r32, "1"},
+      {"peak_force_order", cv->force.order, "1"},
+      {"peak_force_order_meaningful", cv->force.order_ok, "1"},
+      {"peak_force_extrapolated", cv->force.extrapolated, "N/m"},
+      {"peak_force_error_estimate", cv->force.error, "1"},
+      {"impulse_order", cv->impulse.order, "1"},
+      {"impulse_order_meaningful", cv->impulse.order_ok, "1"},
+      {"impulse_extrapolated", cv->impulse.extrapolated, "N s/m"},
+      {"impulse_error_estimate", cv->impulse.error, "1"},
+      {"error_estimate", cv->error_estimate, "1"},
+      {"target", cv->target, "1"},
+      {"target_given", cv->target_given, "1"},
+      {"target_met", cv->target_met, "1"},
+      {"stopped_early", cv->stopped_early, "1"},
+  };
+  for (size_t i = 0; !st && i < sizeof attrs / sizeof attrs[0]; i++)
+    st = wl_store_attr_double(h5, g, attrs[i].name, attrs[i].v, attrs[i].unit, err);
+  if (!st)
+    st = wl_store_attr_text(h5, g, "peak_force_basis", wl_loads_estimate_name(cv->force.basis), err);
+  if (!st)
+    st = wl_store_attr_text(h5, g, "impulse_basis", wl_loads_estimate_name(cv->impulse.basis), err);
+  if (!st) st = wl_store_attr_text(h5, g, "note", cv->note, err);
+  return st;
+}
+
+/* convergence.csv: one row per case and level. */
+static enum wl_status write_convergence_csv(const struct wl_assess_result *res,
+                                            struct wl_error *err) {
+  struct text t = {0};
+  put(&t, "case,level");
+  for (int k = 0; k < N_LEVEL_FIELDS; k++) {
+    const struct level_field *f = &LEVEL_FIELDS[k];
+    if (f->kind == 3 || !strcmp(f->unit, "1")) {
+      put(&t, ",%s", f->name);
+      continue;
+    }
+    /* units as the other CSV files spell them: N/m -> N_per_m, N s/m -> Ns_per_m */
+    put(&t, ",%s_", f->name);
+    const char *u = f->unit;
+    if (!strncmp(u, "1/", 2)) {
+      put(&t, "per_");
+      u += 2;
+    }
+    for (; *u; u++)
+      if (*u == '/')
+        put(&t, "_per_");
+      else if (*u != ' ')
+        put(&t, "%c", *u);
+  }
+  put(&t, "\n");
+  for (int i = 0; i < res->n_cases; i++) {
+    const struct wl_assess_convergence *cv = &res->conv[i];
+    for (int l = 0; l < cv->n_levels; l++) {
+      put(&t, "%s,%d", res->cases[i].name, l + 1);
+      for (int k = 0; k < N_LEVEL_FIELDS; k++) {
+        const struct level_field *f = &LEVEL_FIELDS[k];
+        if (f->kind == 3)
+          put(&t, ",%s", status_word(cv->lv[l].status));
+        else
+          put(&t, ",%.10g", level_value(&cv->lv[l], f));
+      }
+      put(&t, "\n");
+    }
+  }
+  char path[600];
+  snprintf(path, sizeof path, "%s/convergence.csv", res->out_dir);
+  enum wl_status st = t.failed ? wl_error_set(err, WL_ENOMEM, "%s: no memory", path)
+                               : wl_store_write_text(path, t.s, t.len, err);
+  free(t.s);
+  return st;
+}
+
 static enum wl_status write_summary(const struct wl_scenario *s, const struct wl_plan *plan,
                                     const struct wl_assess_result *res, struct wl_error *err) {
   struct text t = {0};
@@ -144,7 +354,8 @@ static enum wl_status write_summary(const struct wl_scenario *s, const struct wl
     jval(&t, "runtime", c->runtime_s, "s", "wall clock", 0);
     jval(&t, "particle_steps_per_second",
          c->runtime_s > 0 ? (double)c->n_particles * (double)c->steps / c->runtime_s : NAN, "1/s",
-         NULL, 1);
+         NULL, res->conv[i].n_levels == 0);
+    if (res->conv[i].n_levels) json_convergence(&t, &res->conv[i]);
     put(&t, "    }%s\n", i + 1 < res->n_cases ? "," : "");
   }
   put(&t, "  }");
@@ -308,6 +519,8 @@ enum wl_status write_results(const struct wl_scenario *s, const struct wl_plan *
   if (!st) st = wl_store_attr_double(h5, "/", "threads", res->threads, "1", err);
   if (!st) st = wl_store_attr_double(h5, "/", "dp", plan->dp, "m", err);
   for (int i = 0; !st && i < res->n_cases; i++) st = write_case_h5(h5, &res->cases[i], err);
+  for (int i = 0; !st && i < res->n_cases; i++)
+    if (res->conv[i].n_levels) st = write_convergence_h5(h5, &res->cases[i], &res->conv[i], err);
   struct wl_error cerr;
   wl_error_clear(&cerr);
   enum wl_status st2 = wl_store_close(h5, st == WL_OK, &cerr);
@@ -316,6 +529,9 @@ enum wl_status write_results(const struct wl_scenario *s, const struct wl_plan *
     st = st2;
   }
   for (int i = 0; !st && i < res->n_cases; i++) st = write_csv(res, &res->cases[i], err);
+  int ladder = 0;
+  for (int i = 0; i < res->n_cases; i++) ladder |= res->conv[i].n_levels > 0;
+  if (!st && ladder) st = write_convergence_csv(res, err);
   if (!st) st = write_summary(s, plan, res, err);
   return st;
 }

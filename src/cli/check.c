@@ -101,6 +101,24 @@ static void print_case(const struct wl_case_result *c) {
   printf("  %-34s %12.5g s\n", "load duration", l->force_peak.duration);
 }
 
+static void print_convergence(const struct wl_case_result *c,
+                              const struct wl_assess_convergence *cv) {
+  if (!cv->n_levels) return;
+  printf("  convergence ladder (%d of %d levels):\n", cv->n_levels, cv->n_planned);
+  printf("    %5s %10s %10s %9s %14s %14s %10s\n", "level", "dp [m]", "particles", "runtime",
+         "peak F [kN/m]", "impulse [kN s/m]", "est. error");
+  for (int k = 0; k < cv->n_levels; k++) {
+    const struct wl_assess_level *lv = &cv->lv[k];
+    printf("    %5d %10.4g %10d %8.1fs %14.5g %14.5g %9.3g%%%s\n", k + 1, lv->dp, lv->n_particles,
+           lv->runtime_s, lv->peak_force / 1e3, lv->impulse / 1e3, 100 * lv->error,
+           lv->status == WL_OK ? "" : "  (stopped)");
+  }
+  printf("    observed order: peak force %.3g%s, impulse %.3g%s\n", cv->force.order,
+         cv->force.order_ok ? "" : " (not meaningful)", cv->impulse.order,
+         cv->impulse.order_ok ? "" : " (not meaningful)");
+  printf("    %s: %s\n", c->name, cv->note);
+}
+
 enum wl_status wl_cli_assess(int argc, char **argv, struct wl_error *err) {
   const char *path = NULL;
   struct wl_assess_opts opts = {0};
@@ -156,6 +174,15 @@ enum wl_status wl_cli_assess(int argc, char **argv, struct wl_error *err) {
     opts.user = &ps;
     fprintf(stderr, "wallload: %s: dp = %g m, about %ld particles, est. %.0f s on the CPU\n",
             path, plan.dp, plan.n_fluid + plan.n_boundary, plan.cpu_seconds);
+    if (s.resolution.n_levels) {
+      fprintf(stderr, "wallload: convergence ladder of %d levels, dp x", s.resolution.n_levels);
+      for (int k = 0; k < s.resolution.n_levels; k++)
+        fprintf(stderr, "%s %s", k ? "," : "", s.resolution.levels[k].text);
+      if (s.resolution.target_error.given)
+        fprintf(stderr, "; stops once the estimated error is below %s",
+                s.resolution.target_error.text);
+      fputc('\n', stderr);
+    }
   }
   opts.interrupted = &interrupted;
   struct sigaction sa, old;
@@ -165,7 +192,10 @@ enum wl_status wl_cli_assess(int argc, char **argv, struct wl_error *err) {
   struct wl_assess_result res;
   st = wl_assess_run(&s, &plan, &opts, &res, err);
   sigaction(SIGINT, &old, NULL);
-  for (int i = 0; i < res.n_cases; i++) print_case(&res.cases[i]);
+  for (int i = 0; i < res.n_cases; i++) {
+    print_case(&res.cases[i]);
+    print_convergence(&res.cases[i], &res.conv[i]);
+  }
   if (res.n_cases) printf("\nresults in %s/ (results.h5, summary.json, CSV, particle snapshots)\n", res.out_dir);
   wl_assess_result_clear(&res);
   wl_scenario_clear(&s);

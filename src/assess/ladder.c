@@ -1,0 +1,182 @@
+/* ladder.c: the convergence ladder of a load case (resolution.convergence):
+ * the case run at dp x factor for each level, coarse to fine, its scalar
+ * loads kept per level, the observed order, Richardson value and error
+ * estimate of peak force and impulse after each level (wl_loads_convergence),
+ * and the early stop at resolution.target_error. Definitions in assess.h. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "assess_private.h"
+
+/* Progress of a level: the case name with the level, passed to the caller's
+ * progress function. */
+struct ladder_progress {
+  const struct wl_assess_opts *opts;
+  char label[96];
+};
+
+static void ladder_on_progress(void *user, const char *case_name,
+                               const struct wl_sph_progress *pr) {
+  struct ladder_progress *lp = user;
+  (void)case_name;
+  lp->opts->progress(lp->opts->user, lp->label, pr);
+}
+
+static double rel_change(double f, double ref) { return fabs(f - ref) / fabs(ref); }
+
+void ladder_estimate(struct wl_assess_convergence *cv) {
+  double h[WL_ASSESS_MAX_LEVELS], fo[WL_ASSESS_MAX_LEVELS], im[WL_ASSESS_MAX_LEVELS];
+  int idx[WL_ASSESS_MAX_LEVELS], m = 0;
+  /* only complete levels: a stopped run's peaks are not the event's */
+  for (int k = 0; k < cv->n_levels; k++) {
+    cv->lv[k].error = NAN;
+    if (cv->lv[k].status != WL_OK) continue;
+    h[m] = cv->lv[k].dp;
+    fo[m] = cv->lv[k].peak_force;
+    im[m] = cv->lv[k].impulse;
+    idx[m++] = k;
+  }
+  wl_loads_convergence(h, fo, m, &cv->force);
+  wl_loads_convergence(h, im, m, &cv->impulse);
+  cv->error_estimate = (isnan(cv->force.error) || isnan(cv->impulse.error))
+                           ? NAN
+                           : fmax(cv->force.error, cv->impulse.error);
+  cv->target_met = isfinite(cv->error_estimate) && cv->error_estimate <= cv->target;
+  if (m < 2) return;
+  /* each coarser level against the best value known: Richardson's when the
+   * order is meaningful, else the finest complete level */
+  double ref_f = cv->force.order_ok ? cv->force.extrapolated : fo[m - 1];
+  double ref_i = cv->impulse.order_ok ? cv->impulse.extrapolated : im[m - 1];
+  for (int j = 0; j + 1 < m; j++)
+    cv->lv[idx[j]].error = fmax(rel_change(fo[j], ref_f), rel_change(im[j], ref_i));
+  cv->lv[idx[m - 1]].error = cv->error_estimate;
+}
+
+static void level_from_case(struct wl_assess_level *lv, const struct wl_case_result *c) {
+  const struct wl_case_loads *l = &c->loads;
+  int have = c->rec.n > 0 && l->force_filtered;
+  lv->status = c->status;
+  lv->n_particles = c->n_particles;
+  lv->steps = c->steps;
+  lv->runtime_s = c->runtime_s;
+  lv->rate = c->runtime_s > 0 ? (double)c->n_particles * (double)c->steps / c->runtime_s : NAN;
+  lv->t_reached = c->t_reached;
+  lv->peak_force = have ? l->force_peak.value : NAN;
+  lv->peak_force_bound = have ? l->force_bound_peak.value : NAN;
+  lv->impulse = have ? l->impulse_total : NAN;
+  lv->peak_moment = have ? l->moment_peak.value : NAN;
+  lv->runup = have ? l->runup : NAN;
+  lv->error = NAN;
+}
+
+static const char *pct(double v, char *buf, size_t size) {
+  if (isfinite(v))
+    snprintf(buf, size, "%.3g %%", 100.0 * v);
+  else
+    snprintf(buf, size, "not available");
+  return buf;
+}
+
+static void ladder_note(struct wl_assess_convergence *cv, const char *stop_word) {
+  char e[32], t[32];
+  pct(cv->error_estimate, e, sizeof e);
+  pct(cv->target, t, sizeof t);
+  const char *basis = cv->force.basis == WL_LOADS_EST_RICHARDSON &&
+                              cv->impulse.basis == WL_LOADS_EST_RICHARDSON
+                          ? "Richardson"
+                      : cv->force.basis == WL_LOADS_EST_NONE ? "none"
+                      : cv->force.basis == WL_LOADS_EST_RICHARDSON ||
+                              cv->impulse.basis == WL_LOADS_EST_RICHARDSON
+                          ? "Richardson and last change"
+                          : "last change";
+  const struct wl_assess_level *last = &cv->lv[cv->n_levels - 1];
+  if (stop_word)
+    snprintf(cv->note, sizeof cv->note,
+             "level %d of %d (dp = %.4g m) %s, so the ladder stopped there; estimated error %s "
+             "(%s) from the complete levels",
+             cv->n_levels, cv->n_planned, last->dp, stop_word, e, basis);
+  else if (cv->stopped_early)
+    snprintf(cv->note, sizeof cv->note,
+             "stopped refining after level %d of %d (dp = %.4g m): the estimated error %s (%s) "
+             "is below the target %s",
+             cv->n_levels, cv->n_planned, last->dp, e, basis, t);
+  else if (cv->target_given)
+    snprintf(cv->note, sizeof cv->note,
+             "ran all %d levels; the estimated error %s (%s) is %s the target %s%s", cv->n_levels, e,
+             basis, cv->target_met ? "below" : "above", t,
+             cv->target_met ? "" : ": a finer level is needed to meet it");
+  else
+    snprintf(cv->note, sizeof cv->note,
+             "ran all %d levels (resolution.target_error not set, so no early stop); the "
+             "estimated error %s (%s) is %s the default target %s",
+             cv->n_levels, e, basis, cv->target_met ? "below" : "above", t);
+}
+
+enum wl_status ladder_run(const struct wl_scenario *s, const struct wl_plan *plan,
+                          enum wl_load_case load, const struct wl_assess_opts *opts,
+                          const char *snapshots, struct wl_case_result *c,
+                          struct wl_assess_convergence *cv, struct wl_error *err) {
+  memset(cv, 0, sizeof *cv);
+  memset(c, 0, sizeof *c);
+  int n = s->resolution.n_levels;
+  if (n > WL_ASSESS_MAX_LEVELS) n = WL_ASSESS_MAX_LEVELS;
+  cv->n_planned = n;
+  cv->target = s->resolution.target_error.q.si;
+  cv->target_given = s->resolution.target_error.given;
+  cv->error_estimate = NAN;
+  for (int k = 0; k < n; k++) {
+    cv->lv[k].factor = s->resolution.levels[k].q.si;
+    cv->lv[k].dp = plan->dp * cv->lv[k].factor;
+  }
+  /* each level is the scenario with dp set to dp x factor, planned again */
+  struct wl_scenario *sl = malloc(sizeof *sl);
+  struct wl_plan *pl = malloc(sizeof *pl);
+  if (!sl || !pl) {
+    free(sl), free(pl);
+    return wl_error_set(err, WL_ENOMEM, "convergence ladder: no memory");
+  }
+  enum wl_status st = WL_OK;
+  const char *stop_word = NULL;
+  for (int k = 0; k < n; k++) {
+    struct wl_assess_level *lv = &cv->lv[k];
+    *sl = *s; /* shallow: the text stays the caller's; sl is never cleared */
+    sl->resolution.dp.is_auto = 0;
+    sl->resolution.dp.given = 1;
+    sl->resolution.dp.q.si = lv->dp;
+    if ((st = wl_plan_make(sl, pl, err))) {
+      wl_error_prefix(err, "convergence level %d/%d (dp = %g m): ", k + 1, n, lv->dp);
+      break;
+    }
+    struct ladder_progress lp = {opts, ""};
+    snprintf(lp.label, sizeof lp.label, "%s, level %d/%d, dp = %.4g m", wl_flume_case_name(load),
+             k + 1, n, lv->dp);
+    struct wl_assess_opts lo = *opts;
+    if (opts->progress) {
+      lo.progress = ladder_on_progress;
+      lo.user = &lp;
+    }
+    if (k > 0) wl_assess_case_clear(c); /* the finer level replaces the coarser one */
+    /* every level writes the snapshots file; the last level run keeps it */
+    st = wl_assess_case(sl, pl, load, &lo, snapshots, c, err);
+    level_from_case(lv, c);
+    cv->n_levels = k + 1;
+    ladder_estimate(cv);
+    if (st) {
+      if (c->rec.n == 0 && st != WL_EUNSTABLE && st != WL_EINTERRUPTED) break; /* no run */
+      stop_word = st == WL_EUNSTABLE      ? "went unstable"
+                  : st == WL_EINTERRUPTED ? "was interrupted"
+                                          : "failed";
+      break;
+    }
+    if (cv->target_given && k + 1 < n && cv->target_met) {
+      cv->stopped_early = 1;
+      break;
+    }
+  }
+  if (cv->n_levels) ladder_note(cv, stop_word);
+  free(sl);
+  free(pl);
+  return st;
+}
