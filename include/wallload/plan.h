@@ -84,6 +84,7 @@ struct wl_plan {
   struct wl_plan_solitary solitary;
   struct wl_plan_explosion explosion;
   double dp;                        /* particle spacing [m] */
+  double coefh;                     /* resolved numerics.coefh [-] (auto: WL_PLAN_COEFH_2D/3D) */
   double h_sml;                     /* smoothing length h = coefh sqrt(dim) dp [m] */
   double c0;                        /* numerical speed of sound [m/s] */
   double dt;                        /* estimated time step, CFL condition [s] */
@@ -96,6 +97,17 @@ struct wl_plan {
   int n_notes;
   char notes[WL_PLAN_MAX_NOTES][320]; /* warnings and assumptions worth reading */
 };
+
+/* Default coefh (numerics.coefh: auto), chosen so that h is about 1.7 dp in
+ * both dimensions. In 2D, DualSPHysics' coefh 1 (h = 1.41 dp) lets a
+ * travelling solitary wave feed particle noise that the viscosity then
+ * dissipates: H/h = 0.4 on h = 0.2 m at dp = 0.01 m lost 22 % of its energy
+ * in 2 s with coefh 1 and artificial viscosity, 12.5 % with coefh 1 and
+ * laminar viscosity, 2.5 % with coefh 1.2 and laminar viscosity (measured
+ * 2026-11-23, README "Numerical choices"). 3D's coefh 1 already gives
+ * h = 1.73 dp. */
+#define WL_PLAN_COEFH_2D 1.2
+#define WL_PLAN_COEFH_3D 1.0
 
 /* Reference throughput used for runtime estimates [particle-steps/s]; the
  * measured values are in BENCHMARKS.md. */

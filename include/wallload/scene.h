@@ -105,6 +105,15 @@ typedef void (*wl_scene_vel_fn)(const double *x, double *v, void *user);
 /* Set the velocity of every fluid particle from fn. */
 void wl_scene_fluid_velocity(struct wl_scene *sc, wl_scene_vel_fn fn, void *user);
 
+/* Pressure correction dp(x) [Pa] to the stacked (hydrostatic) pressure of a
+ * fluid particle at x[0..dim-1] [m]. */
+typedef double (*wl_scene_dp_fn)(const double *x, void *user);
+
+/* Add fn's pressure to every fluid particle: rho <- rho(p(rho) + dp(x)) by
+ * the Tait equation. For initial conditions whose pressure is not
+ * hydrostatic (a solitary wave's, from Bernoulli's equation). */
+void wl_scene_fluid_add_pressure(struct wl_scene *sc, wl_scene_dp_fn fn, void *user);
+
 /* Emit the particles into out (allocated here with wl_particles_alloc, state
  * fields only; clear it with wl_particles_clear): boundary particles first,
  * then fluid, ids 0.. in that order. WL_EINPUT when there is no particle,

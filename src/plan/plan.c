@@ -282,8 +282,9 @@ static void plan_resolution(const struct wl_scenario *s, struct wl_plan *p) {
   if (!s->resolution.dp.is_auto && smallest / p->dp < 4)
     note(p, "dp = %g m gives only %.1f particles over the smallest wave height (%.3g m)", p->dp,
          smallest / p->dp, smallest);
-  double coefh = s->numerics.coefh.q.si;
-  p->h_sml = coefh * sqrt((double)p->dims) * p->dp;
+  p->coefh = s->numerics.coefh.is_auto ? (p->dims == 2 ? WL_PLAN_COEFH_2D : WL_PLAN_COEFH_3D)
+                                        : s->numerics.coefh.q.si;
+  p->h_sml = p->coefh * sqrt((double)p->dims) * p->dp;
   double h_max = p->h;
   if (p->solitary.present) h_max += p->solitary.wave.H;
   if (p->explosion.present) h_max = fmax(h_max, p->h + p->explosion.eta0);

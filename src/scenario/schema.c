@@ -126,8 +126,9 @@ static const struct wl_key run_keys[] = {
     {0}};
 
 static const struct wl_key numerics_keys[] = {
-    {"coefh", KT_QTY, WL_DIM_NONE, OFF(numerics.coefh), NULL, 0.5, 2.0, 0, 0, "1.0", NULL, NO_FLAG,
-     0, "h = coefh*sqrt(dim)*dp (DualSPHysics convention)"},
+    {"coefh", KT_QTY_OR_AUTO, WL_DIM_NONE, OFF(numerics.coefh), NULL, 0.5, 2.0, 0, 0, "auto",
+     NULL, NO_FLAG, 0,
+     "h = coefh*sqrt(dim)*dp (DualSPHysics convention), or auto: 1.2 in 2D, 1.0 in 3D (h = 1.7 dp)"},
     {"coefsound", KT_QTY, WL_DIM_NONE, OFF(numerics.coefsound), NULL, 5, 100, 0, 0, "10", NULL,
      NO_FLAG, 0, "c0 = coefsound*sqrt(g*h_max)"},
     {"cfl", KT_QTY, WL_DIM_NONE, OFF(numerics.cfl), NULL, 0, 1, 1, 0, "0.2", NULL, NO_FLAG, 0,
@@ -135,7 +136,7 @@ static const struct wl_key numerics_keys[] = {
     {"alpha", KT_QTY, WL_DIM_NONE, OFF(numerics.alpha), NULL, 0, 1, 0, 0, "0.01", NULL, NO_FLAG, 0,
      "artificial viscosity coefficient"},
     {"viscosity", KT_ENUM, WL_DIM_NONE, OFF(numerics.viscosity), viscosity_choices, NONE, NONE, 0,
-     0, "artificial", NULL, NO_FLAG, 0, "viscosity model"},
+     0, "laminar", NULL, NO_FLAG, 0, "viscosity model"},
     {"nu", KT_QTY, WL_DIM_NONE, OFF(numerics.nu), NULL, 0, 1, 0, 0, "1e-6", NULL, NO_FLAG, 0,
      "kinematic viscosity for the laminar model [m^2/s]"},
     {"density_diffusion", KT_QTY, WL_DIM_NONE, OFF(numerics.density_diffusion), NULL, 0, 1, 0, 0,

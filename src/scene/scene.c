@@ -333,6 +333,15 @@ void wl_scene_fluid_velocity(struct wl_scene *sc, wl_scene_vel_fn fn, void *user
     fn(&sc->pos[1][(size_t)i * sc->dim], &sc->vel[1][(size_t)i * sc->dim], user);
 }
 
+void wl_scene_fluid_add_pressure(struct wl_scene *sc, wl_scene_dp_fn fn, void *user) {
+  const struct wl_sph_const *k = &sc->k;
+  for (int i = 0; i < sc->n[1]; i++) {
+    const double r = sc->rho[1][i] / (double)k->rho0, r2 = r * r;
+    const double p = (double)k->B * (r2 * r2 * r2 * r - 1.0);
+    sc->rho[1][i] = wl_sph_eos_rho_of_p(k->rho0, k->B, p + fn(&sc->pos[1][(size_t)i * sc->dim], user));
+  }
+}
+
 enum wl_status wl_scene_build(const struct wl_scene *sc, struct wl_particles *out,
                               struct wl_error *err) {
   const int dim = sc->dim, n = sc->n[0] + sc->n[1];
