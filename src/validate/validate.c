@@ -64,6 +64,19 @@ static const char *kind_word(enum wl_validate_kind k) {
   return "?";
 }
 
+int wl_validate_order(double q1, double q2, double q3, double r, double *p, double *q_inf) {
+  *p = NAN;
+  *q_inf = NAN;
+  const double d12 = q1 - q2, d23 = q2 - q3;
+  if (!isfinite(d12) || !isfinite(d23) || d23 == 0 || d12 == 0 || !(r > 1)) return 0;
+  *p = log(fabs(d12 / d23)) / log(r);
+  if (d12 * d23 > 0 && *p >= WL_VALIDATE_ORDER_MIN && *p <= WL_VALIDATE_ORDER_MAX) {
+    *q_inf = q3 + (q3 - q2) / (pow(r, *p) - 1);
+    return 1;
+  }
+  return 0;
+}
+
 /* Convergence order and extrapolation of the primary metric over the last
  * three levels. */
 static void convergence(struct wl_validate_result *r) {
@@ -73,14 +86,8 @@ static void convergence(struct wl_validate_result *r) {
   if (r->n_levels < 3) return;
   const struct wl_validate_level *l1 = &r->lv[r->n_levels - 3], *l2 = l1 + 1, *l3 = l1 + 2;
   if (l1->n_metrics < 1 || l2->n_metrics < 1 || l3->n_metrics < 1) return;
-  const double q1 = l1->m[0].error, q2 = l2->m[0].error, q3 = l3->m[0].error;
-  const double d12 = q1 - q2, d23 = q2 - q3;
-  if (!isfinite(d12) || !isfinite(d23) || d23 == 0 || d12 == 0) return;
-  r->order = log(fabs(d12 / d23)) / log(r->ratio);
-  if (d12 * d23 > 0 && r->order >= WL_VALIDATE_ORDER_MIN && r->order <= WL_VALIDATE_ORDER_MAX) {
-    r->order_ok = 1;
-    r->extrapolated = q3 + (q3 - q2) / (pow(r->ratio, r->order) - 1);
-  }
+  r->order_ok = wl_validate_order(l1->m[0].error, l2->m[0].error, l3->m[0].error, r->ratio,
+                                  &r->order, &r->extrapolated);
 }
 
 static void verdict(struct wl_validate_result *r) {
