@@ -427,6 +427,94 @@ static enum wl_status read_case(hid_t file, const char *file_name, int index,
   return st;
 }
 
+/* /convergence/<case>/ of case index i into *cv (left absent when the group
+ * is not there). Returns WL_OK, WL_EIO (a dataset that cannot be read) or
+ * WL_ENOMEM. */
+static enum wl_status read_convergence(hid_t file, const char *file_name, int i,
+                                       struct wl_report_convergence *cv, struct wl_error *err) {
+  char g[64], p[160];
+  snprintf(g, sizeof g, "convergence/%s", wl_report_case_name(i));
+  memset(cv, 0, sizeof *cv);
+  if (!exists(file, g))
+    return WL_OK;
+  hid_t grp = H5Gopen2(file, g, H5P_DEFAULT);
+  if (grp < 0)
+    return wl_error_set(err, WL_EIO, "%s: /%s: cannot open the group", file_name, g);
+  cv->present = 1;
+  struct {
+    const char *name;
+    double *v;
+  } attrs[] = {
+      {"levels_planned", &cv->levels_planned},
+      {"ratio", &cv->ratio},
+      {"peak_force_order", &cv->force_order},
+      {"peak_force_order_meaningful", &cv->force_order_ok},
+      {"peak_force_extrapolated", &cv->force_extrapolated},
+      {"peak_force_error_estimate", &cv->force_error},
+      {"impulse_order", &cv->impulse_order},
+      {"impulse_order_meaningful", &cv->impulse_order_ok},
+      {"impulse_extrapolated", &cv->impulse_extrapolated},
+      {"impulse_error_estimate", &cv->impulse_error},
+      {"error_estimate", &cv->error_estimate},
+      {"target", &cv->target},
+      {"target_given", &cv->target_given},
+      {"target_met", &cv->target_met},
+      {"stopped_early", &cv->stopped_early},
+  };
+  for (size_t k = 0; k < sizeof attrs / sizeof attrs[0]; k++)
+    *attrs[k].v = attr_double(grp, attrs[k].name);
+  attr_text(grp, "peak_force_basis", cv->force_basis, sizeof cv->force_basis);
+  attr_text(grp, "impulse_basis", cv->impulse_basis, sizeof cv->impulse_basis);
+  attr_text(grp, "note", cv->note, sizeof cv->note);
+  H5Gclose(grp);
+  struct {
+    const char *name;
+    double *v;
+  } series[] = {
+      {"factor", cv->factor},
+      {"dp", cv->dp},
+      {"particles", cv->particles},
+      {"steps", cv->steps},
+      {"runtime", cv->runtime},
+      {"particle_steps_per_second", cv->rate},
+      {"peak_force", cv->peak_force},
+      {"peak_force_boundary", cv->peak_force_b},
+      {"impulse", cv->impulse},
+      {"peak_moment", cv->peak_moment},
+      {"max_runup", cv->runup},
+      {"estimated_error", cv->error},
+  };
+  enum wl_status st = WL_OK;
+  for (int l = 0; l < WL_REPORT_MAX_LEVELS; l++)
+    for (size_t k = 0; k < sizeof series / sizeof series[0]; k++)
+      series[k].v[l] = NAN;
+  for (size_t k = 0; !st && k < sizeof series / sizeof series[0]; k++) {
+    void *data;
+    size_t rows, cols;
+    snprintf(p, sizeof p, "%s/%s", g, series[k].name);
+    st = read_dataset(file, file_name, p, H5T_NATIVE_DOUBLE, sizeof(double), &data, &rows, &cols,
+                      err);
+    if (st || !data)
+      continue;
+    if (rows > WL_REPORT_MAX_LEVELS)
+      rows = WL_REPORT_MAX_LEVELS;
+    memcpy(series[k].v, data, rows * sizeof(double));
+    if (k == 0 || (int)rows < cv->n_levels)
+      cv->n_levels = (int)rows; /* the levels every dataset has */
+    free(data);
+  }
+  if (!st) {
+    void *data;
+    size_t rows, cols;
+    snprintf(p, sizeof p, "%s/status", g);
+    st = read_dataset(file, file_name, p, H5T_NATIVE_INT, sizeof(int), &data, &rows, &cols, err);
+    for (size_t l = 0; !st && data && l < rows && l < WL_REPORT_MAX_LEVELS; l++)
+      cv->status[l] = ((int *)data)[l];
+    free(data);
+  }
+  return st;
+}
+
 /* Re-parse and re-plan the stored scenario; a failure is a note. */
 static void replan(struct wl_report_results *r) {
   if (!r->scenario_text || !*r->scenario_text) {
@@ -518,6 +606,8 @@ enum wl_status wl_report_results_load(const char *path, struct wl_report_results
     if (r->cases[i].present)
       r->n_cases++;
   }
+  for (int i = 0; !st && r->has_convergence && i < WL_REPORT_N_CASES; i++)
+    st = read_convergence(file, path, i, &r->conv[i], err);
   H5Fclose(file);
   if (st) {
     wl_report_results_clear(r);

@@ -71,6 +71,31 @@ struct wl_report_case {
   double runup, runup_time;              /* max eta of the wall gauge [m], when [s] */
 };
 
+enum { WL_REPORT_MAX_LEVELS = 8 }; /* convergence levels read per case */
+
+/* The convergence ladder of one case as stored under /convergence/<case>/
+ * (definitions in include/wallload/assess.h). Values NAN when absent. */
+struct wl_report_convergence {
+  int present;  /* 1: the group exists */
+  int n_levels; /* levels stored (at most WL_REPORT_MAX_LEVELS) */
+  double factor[WL_REPORT_MAX_LEVELS], dp[WL_REPORT_MAX_LEVELS];         /* [-], [m] */
+  double particles[WL_REPORT_MAX_LEVELS], steps[WL_REPORT_MAX_LEVELS];   /* counts */
+  double runtime[WL_REPORT_MAX_LEVELS], rate[WL_REPORT_MAX_LEVELS];      /* [s], [1/s] */
+  double peak_force[WL_REPORT_MAX_LEVELS], peak_force_b[WL_REPORT_MAX_LEVELS]; /* [N/m] */
+  double impulse[WL_REPORT_MAX_LEVELS];                                  /* [N s/m] */
+  double peak_moment[WL_REPORT_MAX_LEVELS];                              /* [N m/m] */
+  double runup[WL_REPORT_MAX_LEVELS];                                    /* [m] */
+  double error[WL_REPORT_MAX_LEVELS];   /* estimated relative error of each level [-] */
+  int status[WL_REPORT_MAX_LEVELS];     /* 0 complete, else the run's failure code */
+  /* attributes */
+  double levels_planned, ratio;
+  double force_order, force_order_ok, force_extrapolated, force_error;
+  double impulse_order, impulse_order_ok, impulse_extrapolated, impulse_error;
+  double error_estimate, target, target_given, target_met, stopped_early;
+  char force_basis[32], impulse_basis[32]; /* "Richardson", "last change", "none" */
+  char note[WL_REPORT_ATTR_MAX];           /* how the ladder ended */
+};
+
 /* Everything the report reads. */
 struct wl_report_results {
   char path[1024]; /* results.h5 as given */
@@ -82,6 +107,7 @@ struct wl_report_results {
   char digest[65];     /* SHA-256 of scenario_text, lower-case hex */
   double threads, dp;  /* root attributes (NAN when absent) */
   int has_convergence; /* 1: a /convergence group exists */
+  struct wl_report_convergence conv[WL_REPORT_N_CASES]; /* per case index */
   struct wl_report_case cases[WL_REPORT_N_CASES];
   int n_cases; /* cases present */
   /* the stored scenario, re-parsed and re-planned */

@@ -442,6 +442,174 @@ enum wl_status wl_report_render_peaks(struct wl_report_ctx *c, const struct wl_r
 
 /* ---- convergence ----------------------------------------------------------------------- */
 
+/* Relative change [%] from a to b; NAN when undefined. */
+static double change_pct(double b, double a) {
+  double r = 100.0 * (b - a) / fabs(a);
+  return isfinite(r) ? r : NAN;
+}
+
+/* One case's ladder: level by level, with the change between levels. */
+static enum wl_status convergence_case_table(struct wl_report_ctx *c, int i, int dg,
+                                             struct wl_error *err) {
+  const struct wl_report_convergence *cv = &c->res->conv[i];
+  static const struct wl_report_column cols0[] = {
+      {"level", NULL, WL_REPORT_ALIGN_RIGHT, 0},
+      {"dp", "m", WL_REPORT_ALIGN_AUTO, 0},
+      {"particles", NULL, WL_REPORT_ALIGN_RIGHT, 0},
+      {"runtime", "s", WL_REPORT_ALIGN_AUTO, 0},
+      {"peak force", "kN/m", WL_REPORT_ALIGN_AUTO, 0},
+      {"change", "%", WL_REPORT_ALIGN_AUTO, 2},
+      {"impulse", "kN s/m", WL_REPORT_ALIGN_AUTO, 0},
+      {"change", "%", WL_REPORT_ALIGN_AUTO, 2},
+      {"est. error", "%", WL_REPORT_ALIGN_AUTO, 2},
+      {"status", NULL, WL_REPORT_ALIGN_LEFT, 0},
+  };
+  enum { NC = 10 };
+  struct wl_report_column cols[NC];
+  memcpy(cols, cols0, sizeof cols);
+  cols[1].sig = cols[3].sig = cols[4].sig = cols[6].sig = dg;
+  struct wl_report_cell cells[WL_REPORT_MAX_LEVELS * NC];
+  char txt[WL_REPORT_MAX_LEVELS][2][32];
+  for (int l = 0; l < cv->n_levels; l++) {
+    struct wl_report_cell *row = &cells[l * NC];
+    snprintf(txt[l][0], sizeof txt[l][0], "%d", l + 1);
+    snprintf(txt[l][1], sizeof txt[l][1], "%.0f", cv->particles[l]);
+    row[0] = (struct wl_report_cell){txt[l][0], 0};
+    row[1] = (struct wl_report_cell){NULL, cv->dp[l]};
+    row[2] = (struct wl_report_cell){txt[l][1], 0};
+    row[3] = (struct wl_report_cell){NULL, cv->runtime[l]};
+    row[4] = (struct wl_report_cell){NULL, cv->peak_force[l] / KILO};
+    row[5] = (struct wl_report_cell){l ? NULL : "", l ? change_pct(cv->peak_force[l], cv->peak_force[l - 1]) : 0};
+    row[6] = (struct wl_report_cell){NULL, cv->impulse[l] / KILO};
+    row[7] = (struct wl_report_cell){l ? NULL : "", l ? change_pct(cv->impulse[l], cv->impulse[l - 1]) : 0};
+    row[8] = (struct wl_report_cell){NULL, 100.0 * cv->error[l]};
+    row[9] = (struct wl_report_cell){cv->status[l] == 0 ? "complete" : "stopped", 0};
+  }
+  char caption[160];
+  snprintf(caption, sizeof caption, "Convergence ladder of the %s case (peak force from the "
+           "filtered probe force; change from the level above)", c->res->cases[i].name[0] ? c->res->cases[i].name : wl_report_case_name(i));
+  struct wl_report_table t = {caption, cols, NC, cells, cv->n_levels};
+  return wl_report_add_table(c->doc, &t, err);
+}
+
+/* Order, extrapolated value and error estimate of every case. */
+static enum wl_status convergence_summary_table(struct wl_report_ctx *c, int dg,
+                                                struct wl_error *err) {
+  const struct wl_report_results *r = c->res;
+  static const struct wl_report_column cols0[] = {
+      {"case", NULL, WL_REPORT_ALIGN_LEFT, 0},
+      {"levels", NULL, WL_REPORT_ALIGN_RIGHT, 0},
+      {"p (force)", NULL, WL_REPORT_ALIGN_AUTO, 3},
+      {"extrapolated", "kN/m", WL_REPORT_ALIGN_AUTO, 0},
+      {"force error", "%", WL_REPORT_ALIGN_AUTO, 2},
+      {"p (impulse)", NULL, WL_REPORT_ALIGN_AUTO, 3},
+      {"extrapolated", "kN s/m", WL_REPORT_ALIGN_AUTO, 0},
+      {"impulse error", "%", WL_REPORT_ALIGN_AUTO, 2},
+      {"estimate", "%", WL_REPORT_ALIGN_AUTO, 2},
+      {"target", "%", WL_REPORT_ALIGN_AUTO, 2},
+      {"target met", NULL, WL_REPORT_ALIGN_LEFT, 0},
+  };
+  enum { NC = 11 };
+  struct wl_report_column cols[NC];
+  memcpy(cols, cols0, sizeof cols);
+  cols[3].sig = cols[6].sig = dg;
+  struct wl_report_cell cells[WL_REPORT_N_CASES * NC];
+  char lv[WL_REPORT_N_CASES][16];
+  int rows = 0;
+  for (int i = 0; i < WL_REPORT_N_CASES; i++) {
+    const struct wl_report_convergence *cv = &r->conv[i];
+    if (!cv->present)
+      continue;
+    struct wl_report_cell *row = &cells[rows * NC];
+    if (isfinite(cv->levels_planned))
+      snprintf(lv[rows], sizeof lv[rows], "%d of %.0f", cv->n_levels, cv->levels_planned);
+    else
+      snprintf(lv[rows], sizeof lv[rows], "%d", cv->n_levels);
+    row[0] = (struct wl_report_cell){wl_report_case_name(i), 0};
+    row[1] = (struct wl_report_cell){lv[rows], 0};
+    row[2] = (struct wl_report_cell){NULL, cv->force_order};
+    row[3] = (struct wl_report_cell){NULL, cv->force_extrapolated / KILO};
+    row[4] = (struct wl_report_cell){NULL, 100.0 * cv->force_error};
+    row[5] = (struct wl_report_cell){NULL, cv->impulse_order};
+    row[6] = (struct wl_report_cell){NULL, cv->impulse_extrapolated / KILO};
+    row[7] = (struct wl_report_cell){NULL, 100.0 * cv->impulse_error};
+    row[8] = (struct wl_report_cell){NULL, 100.0 * cv->error_estimate};
+    row[9] = (struct wl_report_cell){NULL, 100.0 * cv->target};
+    row[10] = (struct wl_report_cell){
+        !isfinite(cv->error_estimate) ? "n/a" : cv->target_met > 0 ? "yes" : "no", 0};
+    rows++;
+  }
+  struct wl_report_table t = {"Observed order, Richardson value and relative error estimate of "
+                              "the finest level run (n/a: not meaningful, no extrapolation)",
+                              cols, NC, cells, rows};
+  return wl_report_add_table(c->doc, &t, err);
+}
+
+/* Estimated error of each level against its runtime, log-log, a line per case. */
+static enum wl_status convergence_plot(struct wl_report_ctx *c, struct wl_error *err) {
+  const struct wl_report_results *r = c->res;
+  struct wl_report_series ser[WL_REPORT_N_CASES];
+  double x[WL_REPORT_N_CASES][WL_REPORT_MAX_LEVELS], y[WL_REPORT_N_CASES][WL_REPORT_MAX_LEVELS];
+  int n = 0, drawable = 0;
+  double target = NAN;
+  for (int i = 0; i < WL_REPORT_N_CASES; i++) {
+    const struct wl_report_convergence *cv = &r->conv[i];
+    if (!cv->present)
+      continue;
+    memset(&ser[n], 0, sizeof ser[n]);
+    for (int l = 0; l < cv->n_levels; l++) {
+      x[n][l] = cv->runtime[l] > 0 ? cv->runtime[l] : NAN;
+      y[n][l] = cv->error[l] > 0 ? 100.0 * cv->error[l] : NAN;
+      drawable += isfinite(x[n][l]) && isfinite(y[n][l]);
+    }
+    ser[n].label = wl_report_case_label(i);
+    ser[n].x = x[n];
+    ser[n].y = y[n];
+    ser[n].n = (size_t)cv->n_levels;
+    ser[n].marker = WL_REPORT_MARKER_AUTO;
+    ser[n].colour = i + 1;
+    if (isfinite(cv->target))
+      target = 100.0 * cv->target;
+    n++;
+  }
+  if (!drawable)
+    return wl_report_add_paragraph(
+        c->doc,
+        "No error-against-runtime plot: no level has an error estimate (it needs two complete "
+        "levels of a case).",
+        err);
+  char tl[64];
+  snprintf(tl, sizeof tl, "target %.3g %%", target);
+  struct wl_report_refline ref = {target, tl, 0};
+  struct wl_report_plot p;
+  memset(&p, 0, sizeof p);
+  p.title = "Estimated error against runtime (each point a ladder level)";
+  p.x.label = "runtime of the level";
+  p.x.unit = "s";
+  p.x.log = 1;
+  p.y.label = "estimated relative error";
+  p.y.unit = "%";
+  p.y.log = 1;
+  p.series = ser;
+  p.n_series = n;
+  p.refs = &ref;
+  p.n_refs = isfinite(target) && target > 0 ? 1 : 0;
+  p.legend = WL_REPORT_LEGEND_AUTO;
+  struct wl_report_rect area;
+  enum wl_status st = wl_report_begin_figure(c->doc, 260, &area, err);
+  if (!st)
+    st = wl_report_draw_plot(c->doc, &p, area, err);
+  if (!st)
+    st = wl_report_end_figure(
+        c->doc,
+        "Speed against error: the estimated relative error of each level (the larger of peak "
+        "force and impulse, against the Richardson value where the order is meaningful, else "
+        "against the finest level; the finest level's is the case's estimate) against the "
+        "wall-clock runtime of that level, log-log.",
+        err);
+  return st;
+}
+
 enum wl_status wl_report_render_convergence(struct wl_report_ctx *c,
                                             const struct wl_report_section *s,
                                             struct wl_error *err) {
@@ -455,19 +623,56 @@ enum wl_status wl_report_render_convergence(struct wl_report_ctx *c,
       put(&b, "%s%s", i ? ", " : "", r->scenario.resolution.levels[i].text);
     put(&b, "]");
   }
+  int n_conv = 0;
+  for (int i = 0; i < WL_REPORT_N_CASES; i++)
+    n_conv += r->conv[i].present;
+  if (n_conv) {
+    int dg = s->digits > 0 ? s->digits : DEFAULT_DIGITS;
+    if (!st)
+      st = wl_report_paragraphf(
+          c->doc, err,
+          "Each load case was run on a ladder of particle spacings%s%s (dp times each factor, "
+          "coarse to fine); the finest level run is the case's result on the other pages. From "
+          "the last three levels (spacings h1 > h2 > h3, refinement ratio r) the observed order "
+          "is p = ln((f1 - f2)/(f2 - f3)) / ln r, the Richardson value f_ext = f3 + (f3 - f2)/"
+          "(r^p - 1) and the error estimate of the finest level |f3 - f_ext| / |f_ext|. Where "
+          "the two differences change sign or vanish, or p lies outside [0.5, 4], the levels "
+          "are not in the asymptotic range: no extrapolation is made and the error estimate is "
+          "the last change |f3 - f2| / |f3| (also with two levels). A case's estimate is the "
+          "larger of those of the peak force and the impulse.",
+          asked[0] ? " " : "", asked);
+    for (int i = 0; !st && i < WL_REPORT_N_CASES; i++)
+      if (r->conv[i].present)
+        st = convergence_case_table(c, i, dg, err);
+    if (!st)
+      st = convergence_summary_table(c, dg, err);
+    for (int i = 0; !st && i < WL_REPORT_N_CASES; i++)
+      if (r->conv[i].present && r->conv[i].note[0])
+        st = wl_report_paragraphf(c->doc, err, "The %s case: %s.", wl_report_case_name(i),
+                                  r->conv[i].note);
+    if (!st)
+      st = convergence_plot(c, err);
+    for (int i = 0; !st && i < WL_REPORT_N_CASES; i++)
+      if (r->cases[i].present && !r->conv[i].present)
+        st = wl_report_paragraphf(c->doc, err,
+                                  "The %s case holds no convergence ladder (it ran at a single "
+                                  "resolution, dp = %g m).",
+                                  wl_report_case_name(i), r->cases[i].dp);
+    return st;
+  }
   if (!st && r->has_convergence)
     st = wl_report_add_paragraph(c->doc,
-                                 "These results hold a /convergence group, but this version of "
-                                 "the report does not read it yet; nothing from it is shown.",
+                                 "These results hold a /convergence group, but no case in it "
+                                 "that this version of the report reads; nothing from it is shown.",
                                  err);
   if (!st && asked[0])
     st = wl_report_paragraphf(
         c->doc, err,
         "The scenario asks for a convergence ladder (resolution.convergence: %s), but these "
-        "results hold a single resolution (dp = %g m): this version of wallload assess does not "
-        "run ladders yet. No convergence plot is drawn; the numerical error is indicated only "
-        "by the difference between the probe and boundary-particle wall forces (see the peak "
-        "loads).",
+        "results hold a single resolution (dp = %g m): they were written by a version of "
+        "wallload assess that did not run ladders. No convergence plot is drawn; the numerical "
+        "error is indicated only by the difference between the probe and boundary-particle "
+        "wall forces (see the peak loads).",
         asked, r->dp);
   else if (!st && !r->has_convergence)
     st = wl_report_paragraphf(
