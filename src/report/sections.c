@@ -492,55 +492,58 @@ static enum wl_status convergence_case_table(struct wl_report_ctx *c, int i, int
   return wl_report_add_table(c->doc, &t, err);
 }
 
-/* Order, extrapolated value and error estimate of every case. */
+/* Order, extrapolated value and error estimate of every case: a row per
+ * quantity and one for the case's estimate against the target. */
 static enum wl_status convergence_summary_table(struct wl_report_ctx *c, int dg,
                                                 struct wl_error *err) {
   const struct wl_report_results *r = c->res;
   static const struct wl_report_column cols0[] = {
       {"case", NULL, WL_REPORT_ALIGN_LEFT, 0},
-      {"levels", NULL, WL_REPORT_ALIGN_RIGHT, 0},
-      {"p (force)", NULL, WL_REPORT_ALIGN_AUTO, 3},
-      {"extrapolated", "kN/m", WL_REPORT_ALIGN_AUTO, 0},
-      {"force error", "%", WL_REPORT_ALIGN_AUTO, 2},
-      {"p (impulse)", NULL, WL_REPORT_ALIGN_AUTO, 3},
-      {"extrapolated", "kN s/m", WL_REPORT_ALIGN_AUTO, 0},
-      {"impulse error", "%", WL_REPORT_ALIGN_AUTO, 2},
-      {"estimate", "%", WL_REPORT_ALIGN_AUTO, 2},
+      {"quantity", NULL, WL_REPORT_ALIGN_LEFT, 0},
+      {"order p", NULL, WL_REPORT_ALIGN_AUTO, 3},
+      {"extrapolated", NULL, WL_REPORT_ALIGN_AUTO, 0},
+      {"error estimate", "%", WL_REPORT_ALIGN_AUTO, 2},
+      {"from", NULL, WL_REPORT_ALIGN_LEFT, 0},
       {"target", "%", WL_REPORT_ALIGN_AUTO, 2},
-      {"target met", NULL, WL_REPORT_ALIGN_LEFT, 0},
+      {"met", NULL, WL_REPORT_ALIGN_LEFT, 0},
   };
-  enum { NC = 11 };
+  enum { NC = 8, ROWS = 3 };
   struct wl_report_column cols[NC];
   memcpy(cols, cols0, sizeof cols);
-  cols[3].sig = cols[6].sig = dg;
-  struct wl_report_cell cells[WL_REPORT_N_CASES * NC];
-  char lv[WL_REPORT_N_CASES][16];
+  cols[3].sig = dg;
+  struct wl_report_cell cells[WL_REPORT_N_CASES * ROWS * NC];
+  static const struct wl_report_cell blank = {"", 0};
   int rows = 0;
   for (int i = 0; i < WL_REPORT_N_CASES; i++) {
     const struct wl_report_convergence *cv = &r->conv[i];
     if (!cv->present)
       continue;
-    struct wl_report_cell *row = &cells[rows * NC];
-    if (isfinite(cv->levels_planned))
-      snprintf(lv[rows], sizeof lv[rows], "%d of %.0f", cv->n_levels, cv->levels_planned);
-    else
-      snprintf(lv[rows], sizeof lv[rows], "%d", cv->n_levels);
-    row[0] = (struct wl_report_cell){wl_report_case_name(i), 0};
-    row[1] = (struct wl_report_cell){lv[rows], 0};
-    row[2] = (struct wl_report_cell){NULL, cv->force_order};
-    row[3] = (struct wl_report_cell){NULL, cv->force_extrapolated / KILO};
-    row[4] = (struct wl_report_cell){NULL, 100.0 * cv->force_error};
-    row[5] = (struct wl_report_cell){NULL, cv->impulse_order};
-    row[6] = (struct wl_report_cell){NULL, cv->impulse_extrapolated / KILO};
-    row[7] = (struct wl_report_cell){NULL, 100.0 * cv->impulse_error};
-    row[8] = (struct wl_report_cell){NULL, 100.0 * cv->error_estimate};
-    row[9] = (struct wl_report_cell){NULL, 100.0 * cv->target};
-    row[10] = (struct wl_report_cell){
-        !isfinite(cv->error_estimate) ? "n/a" : cv->target_met > 0 ? "yes" : "no", 0};
-    rows++;
+    struct wl_report_cell *a = &cells[rows * NC], *b = a + NC, *e = b + NC;
+    for (int k = 0; k < ROWS * NC; k++)
+      a[k] = blank;
+    a[0] = (struct wl_report_cell){wl_report_case_name(i), 0};
+    a[1] = (struct wl_report_cell){"peak force [kN/m]", 0};
+    a[2] = (struct wl_report_cell){NULL, cv->force_order};
+    a[3] = (struct wl_report_cell){NULL, cv->force_extrapolated / KILO};
+    a[4] = (struct wl_report_cell){NULL, 100.0 * cv->force_error};
+    a[5] = (struct wl_report_cell){cv->force_basis[0] ? cv->force_basis : "?", 0};
+    b[1] = (struct wl_report_cell){"impulse [kN s/m]", 0};
+    b[2] = (struct wl_report_cell){NULL, cv->impulse_order};
+    b[3] = (struct wl_report_cell){NULL, cv->impulse_extrapolated / KILO};
+    b[4] = (struct wl_report_cell){NULL, 100.0 * cv->impulse_error};
+    b[5] = (struct wl_report_cell){cv->impulse_basis[0] ? cv->impulse_basis : "?", 0};
+    e[1] = (struct wl_report_cell){"case (the larger)", 0};
+    e[4] = (struct wl_report_cell){NULL, 100.0 * cv->error_estimate};
+    e[6] = (struct wl_report_cell){NULL, 100.0 * cv->target};
+    e[7] = (struct wl_report_cell){!isfinite(cv->error_estimate) ? "n/a"
+                                   : cv->target_met > 0          ? "yes"
+                                                                 : "no",
+                                   0};
+    rows += ROWS;
   }
   struct wl_report_table t = {"Observed order, Richardson value and relative error estimate of "
-                              "the finest level run (n/a: not meaningful, no extrapolation)",
+                              "the finest level run (order and extrapolation n/a where not "
+                              "defined or not meaningful)",
                               cols, NC, cells, rows};
   return wl_report_add_table(c->doc, &t, err);
 }

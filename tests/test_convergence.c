@@ -1,0 +1,286 @@
+/* test_convergence.c: the convergence ladder's arithmetic (wl_loads_convergence)
+ * and its storage (assess writes, the report reads back).
+ *
+ * References from outside the code under test:
+ *  - synthetic sequences f(h) = f* + C h^p with p, f*, C chosen here, so
+ *    the observed order is p, the Richardson value f* and the error of the
+ *    finest level |C h3^p| / |f*|, written out below; with the ladder
+ *    factors 1, 0.71, 0.5 (unequal ratios 1.408, 1.42) and with a constant
+ *    ratio sqrt 2;
+ *  - the fallback cases by hand: oscillating values (no order, last change),
+ *    an order outside [0.5, 4] (reported, no extrapolation), two levels
+ *    (last change), one level (no estimate);
+ *  - storage: a tiny assessment with a 3-level ladder, its /convergence
+ *    group read back through the report's HDF5 reader (a second code path)
+ *    and summary.json's numbers parsed from the text; both must equal what
+ *    the driver held in memory. */
+#define _POSIX_C_SOURCE 200809L /* mkdtemp */
+
+#include "wallload/assess.h"
+#include "wallload/loads.h"
+#include "wallload/plan.h"
+#include "wallload/scenario.h"
+
+#include "../src/report/results.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+static int failures;
+
+static void check(int ok, const char *what) {
+  printf("%s %s\n", ok ? "PASS" : "FAIL", what);
+  if (!ok) failures++;
+}
+
+static int close_rel(double a, double b, double tol) {
+  if (isnan(a) && isnan(b)) return 1;
+  return fabs(a - b) <= tol * fmax(fabs(a), fabs(b));
+}
+
+/* f = fstar + C h^p at the spacings h[0..n) */
+static void power_law(const double *h, int n, double fstar, double C, double p, double *f) {
+  for (int k = 0; k < n; k++) f[k] = fstar + C * pow(h[k], p);
+}
+
+static void test_synthetic(void) {
+  char msg[256];
+  struct wl_loads_convergence cv;
+  const double dp = 0.02;
+  /* the ladder of the scenarios: factors 1, 0.71, 0.5 (ratios 1.408, 1.42) */
+  double h[3] = {dp, 0.71 * dp, 0.5 * dp}, f[3];
+  const double ps[] = {1.0, 2.0, 3.5};
+  for (int i = 0; i < 3; i++) {
+    double p = ps[i], fstar = 1234.5, C = -8.0e4;
+    power_law(h, 3, fstar, C, p, f);
+    wl_loads_convergence(h, f, 3, &cv);
+    /* error of the finest level by hand: |C h3^p| / |f*| */
+    double err = fabs(C * pow(h[2], p)) / fstar;
+    snprintf(msg, sizeof msg,
+             "f = f* + C h^p, p = %.1f, ladder 1/0.71/0.5: order %.12g (%.1f), f_ext %.12g "
+             "(f* %.1f), error %.6g (|C h3^p|/f* = %.6g), Richardson",
+             p, cv.order, p, cv.extrapolated, fstar, cv.error, err);
+    check(cv.order_ok && close_rel(cv.order, p, 1e-9) && close_rel(cv.extrapolated, fstar, 1e-9) &&
+              close_rel(cv.error, err, 1e-7) && cv.basis == WL_LOADS_EST_RICHARDSON,
+          msg);
+  }
+  /* constant ratio sqrt 2: the closed form p = ln((f1-f2)/(f2-f3))/ln r */
+  double hs[4] = {0.04, 0.04 / sqrt(2.0), 0.02, 0.02 / sqrt(2.0)}, fs[4];
+  power_law(hs, 4, 50.0, 3.0e3, 2.0, fs);
+  wl_loads_convergence(hs, fs, 4, &cv); /* uses the last three */
+  double r = sqrt(2.0);
+  double p_hand = log((fs[1] - fs[2]) / (fs[2] - fs[3])) / log(r);
+  double ext_hand = fs[3] + (fs[3] - fs[2]) / (pow(r, p_hand) - 1);
+  snprintf(msg, sizeof msg,
+           "constant ratio sqrt 2, 4 levels (last three used): p %.12g = hand %.12g = 2, f_ext "
+           "%.12g = %.12g = 50",
+           cv.order, p_hand, cv.extrapolated, ext_hand);
+  check(cv.n_used == 3 && close_rel(cv.order, 2.0, 1e-9) && close_rel(cv.order, p_hand, 1e-12) &&
+            close_rel(cv.extrapolated, 50.0, 1e-9) && close_rel(cv.extrapolated, ext_hand, 1e-12),
+        msg);
+
+  /* oscillating: differences of opposite sign -> no order, last change */
+  double fo[3] = {100.0, 90.0, 95.0};
+  wl_loads_convergence(h, fo, 3, &cv);
+  snprintf(msg, sizeof msg,
+           "oscillating 100, 90, 95: no order (%g), no extrapolation, error = |95-90|/95 = %.6g "
+           "(%.6g), last change",
+           cv.order, 5.0 / 95.0, cv.error);
+  check(isnan(cv.order) && !cv.order_ok && isnan(cv.extrapolated) &&
+            close_rel(cv.error, 5.0 / 95.0, 1e-12) && cv.basis == WL_LOADS_EST_LAST_CHANGE,
+        msg);
+
+  /* order out of range: p = 6 is reported, not used */
+  power_law(h, 3, 10.0, 1.0e9, 6.0, f);
+  wl_loads_convergence(h, f, 3, &cv);
+  double last = fabs(f[2] - f[1]) / fabs(f[2]);
+  snprintf(msg, sizeof msg,
+           "p = 6 > 4: order reported (%.6g), not meaningful, error = last change %.6g (%.6g)",
+           cv.order, last, cv.error);
+  check(close_rel(cv.order, 6.0, 1e-9) && !cv.order_ok && isnan(cv.extrapolated) &&
+            close_rel(cv.error, last, 1e-12) && cv.basis == WL_LOADS_EST_LAST_CHANGE,
+        msg);
+
+  /* p = 0.3 < 0.5: slow, not in the asymptotic range */
+  power_law(h, 3, 10.0, 5.0, 0.3, f);
+  wl_loads_convergence(h, f, 3, &cv);
+  snprintf(msg, sizeof msg, "p = 0.3 < 0.5: order %.6g reported, not meaningful, last change",
+           cv.order);
+  check(close_rel(cv.order, 0.3, 1e-9) && !cv.order_ok && cv.basis == WL_LOADS_EST_LAST_CHANGE,
+        msg);
+
+  /* two levels: the last change; one level: nothing */
+  double f2[2] = {200.0, 210.0};
+  wl_loads_convergence(h, f2, 2, &cv);
+  snprintf(msg, sizeof msg, "two levels 200, 210: error = 10/210 = %.6g (%.6g), no order",
+           10.0 / 210.0, cv.error);
+  check(close_rel(cv.error, 10.0 / 210.0, 1e-12) && isnan(cv.order) &&
+            cv.basis == WL_LOADS_EST_LAST_CHANGE,
+        msg);
+  wl_loads_convergence(h, f2, 1, &cv);
+  check(isnan(cv.error) && cv.basis == WL_LOADS_EST_NONE, "one level: no estimate");
+  /* converged exactly: zero differences -> no order, error 0 */
+  double fc[3] = {7.0, 7.0, 7.0};
+  wl_loads_convergence(h, fc, 3, &cv);
+  check(isnan(cv.order) && cv.error == 0.0, "equal values: no order, error 0 (last change)");
+}
+
+/* The number after "key": at or after `from` in the JSON text. */
+static double json_number(const char *from, const char *key) {
+  char pat[96];
+  snprintf(pat, sizeof pat, "\"%s\": ", key);
+  const char *p = strstr(from, pat);
+  if (!p) return NAN;
+  p += strlen(pat);
+  if (!strncmp(p, "null", 4)) return NAN;
+  return strtod(p, NULL);
+}
+
+static void test_storage(void) {
+  char dir[] = "/tmp/wl_convergence_XXXXXX";
+  if (!mkdtemp(dir)) {
+    check(0, "temporary directory");
+    return;
+  }
+  char yaml[600], out[600];
+  snprintf(yaml, sizeof yaml, "%s/ladder.yaml", dir);
+  snprintf(out, sizeof out, "%s/out", dir);
+  FILE *fp = fopen(yaml, "w");
+  if (!fp) {
+    check(0, "write the scenario");
+    return;
+  }
+  fputs("scenario: ladder\n"
+        "water: {depth: 0.2 m}\n"
+        "domain: {length: 3.5 m}\n"
+        "wall: {x: 3 m, height: 0.4 m, probes: 10}\n"
+        "gauges: [{name: G1, x: 2.5 m}]\n"
+        "loads:\n"
+        "  solitary: {height: 0.06 m, generation: initial, at: 2.5 m}\n"
+        "resolution: {dp: 0.03 m, convergence: [1, 0.71, 0.5]}\n"
+        "run: {output_interval: 0.01 s}\n",
+        fp);
+  fclose(fp);
+  struct wl_error err;
+  wl_error_clear(&err);
+  struct wl_scenario s;
+  struct wl_plan plan;
+  wl_scenario_init(&s);
+  enum wl_status st = wl_scenario_load(yaml, &s, &err);
+  if (!st) st = wl_plan_make(&s, &plan, &err);
+  struct wl_assess_opts opts = {0};
+  opts.out_dir = out;
+  opts.threads = 1;
+  opts.end_time = 0.15;
+  struct wl_assess_result res;
+  memset(&res, 0, sizeof res);
+  if (!st) st = wl_assess_run(&s, &plan, &opts, &res, &err);
+  char msg[300];
+  snprintf(msg, sizeof msg, "assess with a 3-level ladder runs (%s)", st ? err.msg : "ok");
+  check(st == WL_OK, msg);
+  const struct wl_assess_convergence *cv = &res.conv[0];
+  snprintf(msg, sizeof msg, "3 levels run, dp %g, %g, %g m", cv->lv[0].dp, cv->lv[1].dp,
+           cv->lv[2].dp);
+  check(res.n_cases == 1 && cv->n_levels == 3 && close_rel(cv->lv[1].dp, 0.71 * 0.03, 1e-12) &&
+            res.cases[0].dp == cv->lv[2].dp,
+        msg);
+
+  /* results.h5 through the report's reader */
+  char h5[700];
+  snprintf(h5, sizeof h5, "%s/results.h5", out);
+  struct wl_report_results *rr = malloc(sizeof *rr);
+  wl_error_clear(&err);
+  st = rr ? wl_report_results_load(h5, rr, &err) : WL_ENOMEM;
+  check(st == WL_OK && rr->conv[0].present && rr->conv[0].n_levels == 3,
+        "results.h5 holds /convergence/solitary with 3 levels");
+  if (st == WL_OK && cv->n_levels == 3) {
+    const struct wl_report_convergence *rc = &rr->conv[0];
+    int same = 1;
+    for (int l = 0; l < 3; l++) {
+      const struct wl_assess_level *lv = &cv->lv[l];
+      same &= rc->dp[l] == lv->dp && rc->factor[l] == lv->factor &&
+              rc->particles[l] == lv->n_particles && rc->steps[l] == (double)lv->steps &&
+              rc->runtime[l] == lv->runtime_s && rc->peak_force[l] == lv->peak_force &&
+              rc->peak_force_b[l] == lv->peak_force_bound && rc->impulse[l] == lv->impulse &&
+              rc->peak_moment[l] == lv->peak_moment && rc->runup[l] == lv->runup &&
+              close_rel(rc->error[l], lv->error, 0) && rc->status[l] == (int)lv->status;
+    }
+    check(same, "every level's dp, particles, steps, runtime, peaks, impulse, run-up, error "
+                "read back bit for bit");
+    snprintf(msg, sizeof msg,
+             "attributes read back: force order %g, impulse order %g, error estimate %g, target "
+             "%g, target met %g",
+             rc->force_order, rc->impulse_order, rc->error_estimate, rc->target, rc->target_met);
+    check(close_rel(rc->force_order, cv->force.order, 0) &&
+              close_rel(rc->impulse_order, cv->impulse.order, 0) &&
+              close_rel(rc->force_extrapolated, cv->force.extrapolated, 0) &&
+              close_rel(rc->error_estimate, cv->error_estimate, 0) && rc->target == cv->target &&
+              rc->target_met == cv->target_met && !strcmp(rc->note, cv->note),
+          msg);
+    /* the stored per-level values give the stored estimate again */
+    double h[3], f[3];
+    for (int l = 0; l < 3; l++) h[l] = rc->dp[l], f[l] = rc->peak_force[l];
+    struct wl_loads_convergence again;
+    wl_loads_convergence(h, f, 3, &again);
+    check(close_rel(again.error, rc->force_error, 1e-15),
+          "the peak-force estimate recomputed from the stored levels equals the stored one");
+  }
+  if (rr) {
+    wl_report_results_clear(rr);
+    free(rr);
+  }
+
+  /* summary.json: the same numbers as printed (%.10g) */
+  char js[700];
+  snprintf(js, sizeof js, "%s/summary.json", out);
+  FILE *jf = fopen(js, "r");
+  char *text = calloc(1, 1 << 20);
+  if (jf && text) {
+    size_t n = fread(text, 1, (1 << 20) - 1, jf);
+    text[n] = '\0';
+  }
+  if (jf) fclose(jf);
+  const char *conv = text ? strstr(text, "\"convergence\"") : NULL;
+  check(conv != NULL, "summary.json has cases.solitary.convergence");
+  if (conv && cv->n_levels == 3) {
+    const char *p = strstr(conv, "\"levels\": ["); /* after the units object */
+    int same = p != NULL;
+    for (int l = 0; same && l < 3; l++) {
+      p = strstr(p, "{ \"factor\"");
+      if (!p) {
+        same = 0;
+        break;
+      }
+      same &= close_rel(json_number(p, "dp"), cv->lv[l].dp, 1e-9) &&
+              close_rel(json_number(p, "peak_force"), cv->lv[l].peak_force, 1e-9) &&
+              close_rel(json_number(p, "impulse"), cv->lv[l].impulse, 1e-9) &&
+              close_rel(json_number(p, "estimated_error"), cv->lv[l].error, 1e-9);
+      p++;
+    }
+    const char *tail = strstr(conv, "\"error_estimate\": ");
+    /* the case's estimate follows the two per-quantity objects */
+    const char *last = NULL;
+    for (const char *q = conv; (q = strstr(q, "\"error_estimate\": ")); q++) last = q;
+    same &= tail != NULL && last != NULL &&
+            close_rel(json_number(last, "error_estimate"), cv->error_estimate, 1e-9) &&
+            close_rel(json_number(conv, "target"), cv->target, 1e-9);
+    check(same, "summary.json's levels, error estimate and target equal the stored values (to "
+                "its 10 digits)");
+  }
+  free(text);
+  wl_assess_result_clear(&res);
+  wl_scenario_clear(&s);
+  char cmd[700];
+  snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+  if (system(cmd) != 0) printf("note: could not remove %s\n", dir);
+}
+
+int main(void) {
+  test_synthetic();
+  test_storage();
+  printf("%s: %d failure(s)\n", failures ? "FAIL" : "PASS", failures);
+  return failures ? 1 : 0;
+}
