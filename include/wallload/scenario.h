@@ -44,7 +44,9 @@ enum wl_energy_basis_choice { WL_BASIS_PER_WIDTH, WL_BASIS_SEED001 };
 enum wl_explosion_model_choice { WL_MODEL_CRATER, WL_MODEL_THROWN_MASS };
 enum wl_backend_choice { WL_BACKEND_AUTO, WL_BACKEND_CPU, WL_BACKEND_CUDA };
 enum wl_viscosity_choice { WL_VISCOSITY_ARTIFICIAL, WL_VISCOSITY_LAMINAR };
-enum wl_far_end_choice { WL_FAR_END_WALL, WL_FAR_END_BEACH, WL_FAR_END_DAMPING };
+/* What closes the flume behind the seawall: a wall, or a damping zone over
+ * the far half of the land that brings overtopping water to rest. */
+enum wl_far_end_choice { WL_FAR_END_WALL, WL_FAR_END_DAMPING };
 
 struct wl_scenario_bed {
   struct wl_scenario_value from;  /* x where this segment starts [m] */

@@ -170,6 +170,14 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
   }
 
   set_params(s, plan, depth + rise, &f->cfg);
+  if (s->domain.far_end.choice == WL_FAR_END_DAMPING && plan->land_length > 0) {
+    /* over the far half of the land, at a rate that stops water arriving at
+     * the long-wave speed within about a tenth of the zone's crossing time */
+    const double x_end = s->wall.x.q.si + plan->land_length, zone = 0.5 * plan->land_length;
+    f->cfg.prm.damp_x0 = x_end - zone;
+    f->cfg.prm.damp_x1 = x_end;
+    f->cfg.prm.damp_rate = 10.0 * sqrt(plan->g * depth) / zone;
+  }
   struct wl_sph_const k;
   enum wl_status st = wl_sph_const_make(&f->cfg.prm, &k, err);
   if (st) return st;

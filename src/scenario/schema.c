@@ -23,7 +23,7 @@ static const char *const model_choices[] = {"crater", "thrown-mass", NULL};
 static const char *const backend_choices[] = {"auto", "cpu", "cuda", NULL};
 static const char *const viscosity_choices[] = {"artificial", "laminar", NULL};
 static const char *const onoff_choices[] = {"off", "on", NULL};
-static const char *const far_end_choices[] = {"wall", "beach", "damping", NULL};
+static const char *const far_end_choices[] = {"wall", "damping", NULL};
 
 /* Ranges are in SI. lo_open/hi_open: the bound itself is excluded. */
 
@@ -44,7 +44,9 @@ static const struct wl_key domain_keys[] = {
     {"width", KT_QTY, WL_DIM_LENGTH, OFF(domain.width), NULL, 0, NONE, 1, 0, "1 m", NULL, NO_FLAG,
      0, "flume width (3D runs; totals per wall in 2D)"},
     {"far_end", KT_ENUM, WL_DIM_NONE, OFF(domain.far_end), far_end_choices, NONE, NONE, 0, 0,
-     "wall", NULL, NO_FLAG, 0, "what closes the flume behind the seawall"},
+     "wall", NULL, NO_FLAG, 0,
+     "what closes the flume behind the seawall: wall, or damping (overtopping water is brought "
+     "to rest over the far half of the land)"},
     {0}};
 
 static const struct wl_key wall_keys[] = {

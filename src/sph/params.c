@@ -60,6 +60,10 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
     return bad(err, "rho_min_factor", prm->rho_min_factor, "must be in [0, 1)");
   if (!(prm->rho_max_factor > 1)) return bad(err, "rho_max_factor", prm->rho_max_factor, "must be > 1");
   if (!(prm->penetration > 0)) return bad(err, "penetration", prm->penetration, "must be > 0 (units of dp)");
+  if (!(prm->damp_rate >= 0 && isfinite(prm->damp_rate)))
+    return bad(err, "damp_rate", prm->damp_rate, "must be >= 0 and finite [1/s]");
+  if (prm->damp_rate > 0 && !(fabs(prm->damp_x1 - prm->damp_x0) > 0))
+    return bad(err, "damp_x1", prm->damp_x1, "must differ from damp_x0 (the zone's length)");
 
   memset(k, 0, sizeof *k);
   const int dim = prm->dim;
@@ -99,6 +103,11 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
   k->rho_min = prm->rho_min_factor * prm->rho0;
   k->rho_max = prm->rho_max_factor * prm->rho0;
   k->penetration = prm->penetration * prm->dp;
+  if (prm->damp_rate > 0) {
+    k->damp_x0 = prm->damp_x0;
+    k->damp_inv_len = 1.0 / (prm->damp_x1 - prm->damp_x0);
+    k->damp_rate = prm->damp_rate;
+  }
   return WL_OK;
 }
 

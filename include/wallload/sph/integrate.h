@@ -13,7 +13,13 @@
  * way, clamped to rho >= rho0 as DualSPHysics does (a wall never sucks fluid
  * in). Fixed ones never move; moving ones (paddle) move with the velocity
  * of their body over the step, v_body = (X(t + dt) - X(t))/dt, which lands
- * them exactly on the prescribed trajectory X(t). */
+ * them exactly on the prescribed trajectory X(t).
+ *
+ * Damping zone (DualSPHysics' Damping; Altomare et al. 2017, Coast. Eng.
+ * 127:37): after the corrector, a fluid particle's velocity is multiplied by
+ * max(0, 1 - dt rate w^2), w = clamp((x - x0)/(x1 - x0), 0, 1), so waves and
+ * overtopping water entering the zone come to rest there instead of
+ * reflecting. */
 #ifndef WALLLOAD_SPH_INTEGRATE_H
 #define WALLLOAD_SPH_INTEGRATE_H
 
@@ -60,6 +66,13 @@ WL_HD static WL_INLINE void wl_sph_correct(const int dim, const struct wl_sph_co
       const wl_real v = p->vel[a][i] + (wl_real)dt * p->ace[a][i];
       p->vel[a][i] = v;
       p->pos[a][i] = p->pos_h[a][i] + 0.5 * dt * (double)v;
+    }
+    if (k->damp_rate > 0) {
+      double w = (p->pos[0][i] - k->damp_x0) * k->damp_inv_len;
+      w = w < 0 ? 0 : w > 1 ? 1 : w;
+      double f = 1.0 - dt * k->damp_rate * w * w;
+      f = f < 0 ? 0 : f;
+      for (int a = 0; a < dim; a++) p->vel[a][i] = (wl_real)(f * (double)p->vel[a][i]);
     }
   } else {
     p->rho[i] = rho > k->rho0 ? rho : k->rho0;

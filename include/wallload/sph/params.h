@@ -56,6 +56,12 @@ struct wl_sph_params {
   double rho_max_factor;    /* ... above rho_max_factor rho0 (DualSPHysics RhopOut); 1.3 */
   double penetration;       /* fluid depth behind a wall face that counts as crossing
                                it, in units of dp [-]; default 0.5 */
+  /* Damping zone along x (DualSPHysics "Damping"): fluid velocities are
+   * relaxed towards rest at the rate damp_rate w^2, w rising linearly from 0
+   * at x = damp_x0 to 1 at x = damp_x1 (either order) and 1 beyond. Off when
+   * damp_rate is 0 (the default). */
+  double damp_x0, damp_x1;  /* [m] */
+  double damp_rate;         /* full-strength relaxation rate [1/s]; 0: no zone */
 };
 
 /* Derived constants (host computes, both backends read). Float members are
@@ -88,6 +94,8 @@ struct wl_sph_const {
   double cfl;         /* [-] */
   double dt_collapse, rho_min, rho_max; /* guard thresholds ([-], kg/m^3, kg/m^3) */
   double penetration; /* guard: crossing depth [m] */
+  double damp_x0, damp_inv_len, damp_rate; /* damping zone: start [m], 1/(x1 - x0) [1/m]
+                                              (signed), rate [1/s] (0: none) */
 };
 
 #endif
