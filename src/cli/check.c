@@ -22,6 +22,50 @@ static enum wl_status load_and_plan(const char *path, struct wl_scenario *s, str
   return st;
 }
 
+/* The cost of the convergence ladder: each level re-planned at dp x factor
+ * (as assess runs it). Prints one line per level and the total to out (or
+ * only the total line when `brief`); returns the total estimated CPU seconds
+ * (NAN without a ladder or when a level cannot be planned). */
+static double ladder_cost(const struct wl_scenario *s, const struct wl_plan *plan, int brief,
+                          FILE *out) {
+  int n = s->resolution.n_levels;
+  if (n == 0) return NAN;
+  struct wl_scenario *sl = malloc(sizeof *sl);
+  struct wl_plan *pl = malloc(sizeof *pl);
+  double total = 0.0, steps = 0.0;
+  if (!brief) fprintf(out, "\nConvergence ladder (resolution.convergence), coarse to fine\n");
+  for (int k = 0; sl && pl && k < n; k++) {
+    *sl = *s; /* shallow copy: only read by the plan */
+    sl->resolution.dp.is_auto = 0;
+    sl->resolution.dp.given = 1;
+    sl->resolution.dp.q.si = plan->dp * s->resolution.levels[k].q.si;
+    struct wl_error e;
+    wl_error_clear(&e);
+    if (wl_plan_make(sl, pl, &e) != WL_OK) {
+      if (!brief) fprintf(out, "  level %d: cannot be planned: %s\n", k + 1, e.msg);
+      total = NAN;
+      break;
+    }
+    total += pl->cpu_seconds;
+    steps += pl->particle_steps;
+    if (!brief) {
+      char dps[32];
+      snprintf(dps, sizeof dps, "%.4g m", pl->dp);
+      fprintf(out, "  level %d  dp x %-5s = %-10s %8ld particles  %10.3e particle-steps  %6.0f s\n",
+              k + 1, s->resolution.levels[k].text, dps, pl->n_fluid + pl->n_boundary,
+              pl->particle_steps, pl->cpu_seconds);
+    }
+  }
+  if (!sl || !pl) total = NAN;
+  if (!brief && isfinite(total))
+    fprintf(out, "  all levels: %.3e particle-steps, about %.0f s on the CPU%s\n", steps, total,
+            s->resolution.target_error.given ? " (less when target_error stops the ladder early)"
+                                             : "");
+  free(sl);
+  free(pl);
+  return total;
+}
+
 enum wl_status wl_cli_check(int argc, char **argv, struct wl_error *err) {
   if (argc != 2 || argv[1][0] == '-')
     return wl_error_set(err, WL_EUSAGE, "usage: wallload check FILE.yaml");
@@ -33,6 +77,7 @@ enum wl_status wl_cli_check(int argc, char **argv, struct wl_error *err) {
          s.name.text, s.path);
   wl_scenario_write_resolved(&s, stdout);
   wl_plan_write(&plan, stdout);
+  ladder_cost(&s, &plan, 0, stdout);
   wl_scenario_clear(&s);
   return WL_OK;
 }
@@ -178,6 +223,7 @@ enum wl_status wl_cli_assess(int argc, char **argv, struct wl_error *err) {
       fprintf(stderr, "wallload: convergence ladder of %d levels, dp x", s.resolution.n_levels);
       for (int k = 0; k < s.resolution.n_levels; k++)
         fprintf(stderr, "%s %s", k ? "," : "", s.resolution.levels[k].text);
+      fprintf(stderr, "; est. %.0f s on the CPU in all", ladder_cost(&s, &plan, 1, stderr));
       if (s.resolution.target_error.given)
         fprintf(stderr, "; stops once the estimated error is below %s",
                 s.resolution.target_error.text);
