@@ -209,6 +209,30 @@ static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
     }
     put(&b, "; the two ways of measuring the wall load differ by about that much. ");
   }
+  /* the convergence ladder's estimate, where one was run */
+  for (int i = 0; i < WL_REPORT_N_CASES; i++) {
+    const struct wl_report_convergence *cv = &r->conv[i];
+    if (!cv->present || cv->n_levels < 1)
+      continue;
+    char ef[64], ei[64], dpf[64];
+    wl_report_fmt(100.0 * cv->force_error, SHARE_DIGITS, ef, sizeof ef);
+    wl_report_fmt(100.0 * cv->impulse_error, SHARE_DIGITS, ei, sizeof ei);
+    wl_report_fmt(cv->dp[cv->n_levels - 1], 3, dpf, sizeof dpf);
+    if (!isfinite(cv->error_estimate))
+      put(&b,
+          "The %s case's convergence ladder ran %d level%s (finest dp = %s m): too few complete "
+          "levels for an error estimate. ",
+          wl_report_case_name(i), cv->n_levels,
+          cv->n_levels == 1 ? "" : "s", dpf);
+    else
+      put(&b,
+          "Convergence ladder of the %s case (%d levels, finest dp = %s m): estimated relative "
+          "error %s %% of the peak force (%s) and %s %% of the impulse (%s)%s. ",
+          wl_report_case_name(i), cv->n_levels, dpf, ef, cv->force_basis, ei, cv->impulse_basis,
+          !isfinite(cv->target)     ? ""
+          : cv->target_met > 0      ? ", within the target"
+                                    : ", above the target");
+  }
   for (int i = 0; i < WL_REPORT_N_CASES; i++) {
     if (!cs[i].present || !strcmp(cs[i].status, "complete"))
       continue;
