@@ -41,6 +41,9 @@ struct eval_stats {
   double ace2_max, vel2_max, visc_max;
 };
 
+/* Particles per thread below which automatic threading uses fewer threads. */
+#define WL_CPU_PARTICLES_PER_THREAD 4000
+
 static int threads(const struct cpu *c) {
   return c->n_threads > 0 ? c->n_threads : omp_get_max_threads();
 }
@@ -381,6 +384,17 @@ static enum wl_status cpu_init(void **ctx, const struct wl_sph_config *cfg,
   c->cfg = *cfg;
   c->k = *k;
   c->n_threads = cfg->n_threads;
+  if (c->n_threads <= 0) {
+    /* Automatic: no more threads than the particles keep busy. A step has
+     * four parallel regions; below a few thousand particles per thread the
+     * barriers cost more than the work they split, and on a machine shared
+     * with other jobs each barrier can wait a whole scheduler slice for a
+     * descheduled partner (60 s of still water with 980 particles ran 70x
+     * slower on 2 threads than its work needs, 2026-11-23). */
+    const int by_work = host->n / WL_CPU_PARTICLES_PER_THREAD;
+    const int most = omp_get_max_threads();
+    c->n_threads = by_work < 1 ? 1 : by_work > most ? most : by_work;
+  }
   c->block = select_block(dim, k->visc == WL_SPH_VISC_LAMINAR, &c->isa);
   /* the grid: cells of side 2h over the domain box */
   struct wl_sph_grid *g = &c->grid;
