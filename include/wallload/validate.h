@@ -73,25 +73,14 @@ struct wl_validate_result {
   /* convergence of the primary metric (m[0]) over the last three levels */
   double ratio;       /* refinement ratio between levels (sqrt 2) */
   double order;       /* observed order p; NaN when fewer than 3 levels */
-  int order_ok;       /* 1: p in [WL_VALIDATE_ORDER_MIN, WL_VALIDATE_ORDER_MAX] and
-                         the differences keep their sign (monotone) */
+  int order_ok;       /* 1: p in [WL_LOADS_ORDER_MIN, WL_LOADS_ORDER_MAX] and
+                         the differences keep their sign (monotone); the
+                         arithmetic is wl_loads_convergence's, as assess's */
   double extrapolated;/* Richardson-extrapolated primary error (NaN unless order_ok) */
   int pass;           /* every judged metric met at the finest level, every level ran */
   char verdict[512];  /* "pass", or which metric missed by how much */
 };
 
-/* Meaningful observed orders for a Richardson estimate. */
-#define WL_VALIDATE_ORDER_MIN 0.5
-#define WL_VALIDATE_ORDER_MAX 4.0
-
-/* Observed order and Richardson extrapolation from three values q1, q2, q3
- * of a quantity on grids refined by the constant ratio r > 1 (coarse to
- * fine): p = ln((q1 - q2) / (q2 - q3)) / ln r; when (q1 - q2) and (q2 - q3)
- * have the same sign and p is in [WL_VALIDATE_ORDER_MIN,
- * WL_VALIDATE_ORDER_MAX], *q_inf = q3 + (q3 - q2) / (r^p - 1) and 1 is
- * returned; otherwise *q_inf = NaN and 0 is returned (*p is NaN when a
- * difference is zero or not finite). */
-int wl_validate_order(double q1, double q2, double q3, double r, double *p, double *q_inf);
 
 /* Progress after each level (the CLI prints it; the library never does). */
 typedef void (*wl_validate_level_fn)(void *user, const struct wl_validate_result *r, int level);

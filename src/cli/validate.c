@@ -13,6 +13,7 @@
 
 #include "cli.h"
 #include "wallload/error.h"
+#include "wallload/loads.h"
 #include "wallload/validate.h"
 
 #define VALIDATE_USAGE                                                                            \
@@ -156,7 +157,7 @@ enum wl_status wl_cli_validate(int argc, char **argv, struct wl_error *err) {
     else if (r->n_levels >= 3)
       printf("  order p = %.2f (not meaningful: non-monotone or outside [%.1f, %.1f]); no "
              "extrapolation\n",
-             r->order, WL_VALIDATE_ORDER_MIN, WL_VALIDATE_ORDER_MAX);
+             r->order, WL_LOADS_ORDER_MIN, WL_LOADS_ORDER_MAX);
     else
       printf("  order: needs 3 levels\n");
     printf("  %s: %s\n\n", r->pass ? "PASS" : "FAIL", r->verdict);

@@ -2,13 +2,13 @@
  * ladder (dp0, dp0/sqrt2, dp0/2, ...), pass/fail at the finest level, and
  * the observed convergence order with a Richardson-extrapolated error.
  *
- * Order from three levels with constant refinement ratio r (Roache 1998,
- * "Verification and Validation in Computational Science and Engineering",
- * the grid convergence index method): with q1, q2, q3 the primary metric
- * from coarse to fine (signed relative error, or RMSE),
- *   p = ln((q1 - q2) / (q2 - q3)) / ln r,
+ * Order from three levels (Roache 1998, "Verification and Validation in
+ * Computational Science and Engineering", the grid convergence index
+ * method; wl_loads_convergence, shared with assess's ladder): with q1, q2,
+ * q3 the primary metric from coarse to fine (signed relative error, or
+ * RMSE) and a constant ratio r, p = ln((q1 - q2) / (q2 - q3)) / ln r,
  * meaningful when (q1 - q2) and (q2 - q3) have the same sign and p is in
- * [WL_VALIDATE_ORDER_MIN, WL_VALIDATE_ORDER_MAX]; then
+ * [WL_LOADS_ORDER_MIN, WL_LOADS_ORDER_MAX]; then
  *   q_inf = q3 + (q3 - q2) / (r^p - 1)
  * is the error the method would keep at infinite resolution (model error:
  * physics, boundary treatment, the reference's own uncertainty). */
@@ -18,6 +18,7 @@
 
 #include "internal.h"
 #include "wallload/config.h"
+#include "wallload/loads.h"
 
 #ifndef WL_VALIDATE_REFERENCE_DIR
 #define WL_VALIDATE_REFERENCE_DIR "reference"
@@ -64,19 +65,6 @@ static const char *kind_word(enum wl_validate_kind k) {
   return "?";
 }
 
-int wl_validate_order(double q1, double q2, double q3, double r, double *p, double *q_inf) {
-  *p = NAN;
-  *q_inf = NAN;
-  const double d12 = q1 - q2, d23 = q2 - q3;
-  if (!isfinite(d12) || !isfinite(d23) || d23 == 0 || d12 == 0 || !(r > 1)) return 0;
-  *p = log(fabs(d12 / d23)) / log(r);
-  if (d12 * d23 > 0 && *p >= WL_VALIDATE_ORDER_MIN && *p <= WL_VALIDATE_ORDER_MAX) {
-    *q_inf = q3 + (q3 - q2) / (pow(r, *p) - 1);
-    return 1;
-  }
-  return 0;
-}
-
 /* Convergence order and extrapolation of the primary metric over the last
  * three levels. */
 static void convergence(struct wl_validate_result *r) {
@@ -86,8 +74,14 @@ static void convergence(struct wl_validate_result *r) {
   if (r->n_levels < 3) return;
   const struct wl_validate_level *l1 = &r->lv[r->n_levels - 3], *l2 = l1 + 1, *l3 = l1 + 2;
   if (l1->n_metrics < 1 || l2->n_metrics < 1 || l3->n_metrics < 1) return;
-  r->order_ok = wl_validate_order(l1->m[0].error, l2->m[0].error, l3->m[0].error, r->ratio,
-                                  &r->order, &r->extrapolated);
+  /* the same arithmetic as assess's convergence ladder (loads.h) */
+  const double h[3] = {l1->dp, l2->dp, l3->dp};
+  const double f[3] = {l1->m[0].error, l2->m[0].error, l3->m[0].error};
+  struct wl_loads_convergence c;
+  wl_loads_convergence(h, f, 3, &c);
+  r->order = c.order;
+  r->order_ok = c.order_ok;
+  r->extrapolated = c.extrapolated;
 }
 
 static void verdict(struct wl_validate_result *r) {
