@@ -11,8 +11,10 @@
  *  - front speed: the least-squares slope dZ/dT within 5 % of the table's;
  *  - front position after the best single time shift dT (|dT| <= 0.35):
  *    within 5 % in Z at every point.
- * The brief's check, the position as is within 5 %, fails today and lives
- * in test_sph_dambreak_front (an accuracy test, run with ctest -L accuracy).
+ * The brief's check, the position as is within 5 %, fails today: it is
+ * this program with the argument `front` (ctest sph_dambreak_front, an
+ * accuracy test run with ctest -L accuracy), which stops at T = 3.4, the
+ * end of the data, and checks the unshifted position only.
  * Why the shift: an inviscid model with a free-slip bed runs ahead of
  * Martin & Moyce by a nearly constant 0.2-0.3 in T that builds up for
  * T < 1.2, while the column is released (their gate/diaphragm) and the
@@ -45,6 +47,7 @@
 #define T_FORMED 1.5    /* front formed (brief) */
 #define Z_BEFORE_WALL 3.6
 #define TAU_END 8.0     /* t sqrt(g/H) */
+#define T_END_MM 3.4    /* T = t sqrt(2g/a): the end of the front data (`front` run) */
 
 struct front_log {
   int n, cap;
@@ -81,7 +84,8 @@ static double interp(const double *x, const double *y, int n, double xq) {
   return y[n - 1];
 }
 
-int main(void) {
+int main(int argc, char **argv) {
+  const int front_only = argc > 1 && !strcmp(argv[1], "front");
   const double dp = A / N_A, H = 2 * A, L = 4 * A, g = 9.81;
   const int layers = 3;
   struct wl_error err;
@@ -134,7 +138,7 @@ int main(void) {
   lg.dp = dp;
   const double t_scale = sqrt(2 * g / A); /* T = t sqrt(2g/a) */
   struct wl_sph_run_opts opts = {0};
-  opts.t_end = TAU_END * sqrt(H / g);
+  opts.t_end = front_only ? T_END_MM / t_scale : TAU_END * sqrt(H / g);
   opts.output_dt = 0.02 / t_scale; /* every 0.02 in T */
   opts.output = on_output;
   opts.user = &lg;
@@ -144,9 +148,11 @@ int main(void) {
   printf("run: status %s%s%s, t = %g s, %ld steps, cpu %.1f s, wall ~%ld s\n",
          wl_error_status_name(st), st ? ": " : "", st ? err.msg : "", wl_sph_sim_time(sim),
          wl_sph_sim_steps(sim), (double)(clock() - c0) / CLOCKS_PER_SEC, (long)(time(NULL) - w0));
-  CHECK_TRUE(st == WL_OK, "run to t sqrt(g/H) = 8 through the wall impact without a guard fault");
+  CHECK_TRUE(st == WL_OK, front_only ? "run through the front phase without a guard fault"
+                                     : "run to t sqrt(g/H) = 8 through the wall impact without a "
+                                       "guard fault");
   CHECK_TRUE(lg.nonfinite == 0, "all fluid positions and densities finite at every output");
-  CHECK_ABS(wl_sph_sim_time(sim) * sqrt(g / H), TAU_END, 1e-9, "end time reached");
+  if (!front_only) CHECK_ABS(wl_sph_sim_time(sim) * sqrt(g / H), TAU_END, 1e-9, "end time reached");
 
   /* Martin & Moyce Table 2 (n^2 = 2), from the shared validation data */
   char path[1024];
@@ -183,6 +189,17 @@ int main(void) {
   }
   fclose(f);
   CHECK_TRUE(n >= 6, "enough Martin & Moyce points in the checked range");
+  if (front_only) {
+    for (int i = 0; i < n; i++)
+      CHECK_REL(interp(T, Z, lg.n, te[i]), ze[i], TOL_Z,
+                "Martin & Moyce (1952) Table 2 surge front, unshifted (brief: 5 % in Z)");
+    free(T);
+    free(Z);
+    free(lg.t);
+    free(lg.x);
+    wl_sph_sim_free(sim);
+    return TEST_RESULT();
+  }
   /* front speed: least-squares slopes over the same T points */
   double sT = 0, sze = 0, szs = 0, stt = 0, stze = 0, stzs = 0;
   for (int i = 0; i < n; i++) {
