@@ -42,6 +42,13 @@ pages=$(pdfinfo x.pdf 2>/dev/null | awk '/^Pages:/ {print $2}')
 [ "${pages:-0}" -ge 8 ] && ok "x.pdf has $pages pages (pdfinfo)" || bad "x.pdf has ${pages:-no} pages"
 pdftotext -layout x.pdf - 2>/dev/null | tr -s ' \n' '  ' > x.txt
 grep -q "tiny" x.txt && ok "scenario name in the PDF" || bad "scenario name missing"
+# the re-rendered report says what the one written by assess said
+pdftotext -layout run/report.pdf - 2>/dev/null | tr -s ' \n' '  ' > assess.txt
+if [ -s assess.txt ] && cmp -s assess.txt x.txt; then
+  ok "report from results.h5 alone has the text of assess's report.pdf"
+else
+  bad "report text differs from assess's report.pdf: $(diff <(tr ' ' '\n' < assess.txt) <(tr ' ' '\n' < x.txt) | head -5 | tr '\n' ' ')"
+fi
 
 # Each case's peaks-table row starts "<case> <peak force> <time> <impulse>",
 # values from summary.json formatted to 3 significant digits in kN units.
