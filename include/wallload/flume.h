@@ -15,7 +15,22 @@
  *     wave reflected there from reaching the wall within the run.
  * Wall probes sit half a particle spacing seaward of the face, at the
  * centres of n equal strips of the face: there the interpolated pressure is
- * the fluid's (a probe inside the wall reads nothing). */
+ * the fluid's (a probe inside the wall reads nothing).
+ *
+ * 3D (domain.dimensions: 3): the flume is y in [0, width], the width
+ * rounded to a whole number of lattice rows (`width` below; the scenario's
+ * domain.width within dp/2). The 2D bed / wall / land / end-wall polyline
+ * is extruded over the width and under the side walls; side walls of
+ * boundary layers at y < 0 and y > width close the flume from the bed to
+ * the top of the domain. Waves and plane craters are long-crested (the 2D
+ * field, v = 0); the axisymmetric craters (and the lip-less quadratic) are
+ * centred at y = width/2, eta(r) with r the distance from the axis. Gauges
+ * stand at y = width/2; wall probes form a grid of the heights below times
+ * n_probe_y positions across (centres of equal strips of the width). The
+ * penetration guard covers the extruded faces (bed, ends, seawall, land);
+ * a particle that escapes through a side wall is caught by the domain box
+ * (its y bounds lie just behind the side walls' layers). The seawall body
+ * is the extruded polyline behind the face plane (side walls excluded). */
 #ifndef WALLLOAD_FLUME_H
 #define WALLLOAD_FLUME_H
 
@@ -31,10 +46,12 @@ enum wl_load_case { WL_CASE_SOLITARY, WL_CASE_EXPLOSION, WL_CASE_STILL };
 #define WL_FLUME_BODY_PADDLE 1
 #define WL_FLUME_BODY_WALL 2
 
-enum { WL_FLUME_MAX_PROBES = 1000, WL_FLUME_PADDLE_SAMPLES = 4001 };
+enum { WL_FLUME_MAX_PROBES = 1000, WL_FLUME_PADDLE_SAMPLES = 4001, WL_FLUME_MAX_PROBES_Y = 16 };
 
 struct wl_flume {
   enum wl_load_case load;
+  int dims;                        /* 2 or 3 */
+  double width;                    /* 3D: modelled flume width [m] (0 in 2D) */
   struct wl_sph_config cfg;        /* parameters, domain box, walls for the guard */
   struct wl_particles particles;   /* initial state (state fields only); owned */
   int has_paddle;
@@ -50,6 +67,9 @@ struct wl_flume {
   int n_probes;
   double probe_x;                  /* [m] */
   double probe_z[WL_FLUME_MAX_PROBES];
+  int n_probe_y;                   /* 3D: probe positions across the width (0 in 2D) */
+  double probe_y[WL_FLUME_MAX_PROBES_Y]; /* [m] */
+  double gauge_y;                  /* 3D: y of every gauge [m] (width/2) */
   int n_gauges;
   double gauge_x[WL_SCENARIO_MAX_GAUGES + 1]; /* scenario gauges, then one at the wall face */
   double gauge_bed[WL_SCENARIO_MAX_GAUGES + 1]; /* bed height under each gauge [m] */

@@ -112,6 +112,10 @@ struct wl_plan {
 /* Reference throughput used for runtime estimates [particle-steps/s]; the
  * measured values are in BENCHMARKS.md. */
 #define WL_PLAN_CPU_RATE 3.0e6
+/* The same in 3D (about 100 neighbours per particle instead of 20, and a
+ * flume's side walls): test_flume3d's still-water flume (16k particles)
+ * ran at about 3e5 particle-steps/s on the 2-core development machine. */
+#define WL_PLAN_CPU_RATE_3D 3.0e5
 
 /* Build the plan of a validated scenario. Returns WL_OK; WL_EINPUT when a
  * formula's validity is exceeded (message names the scenario key);

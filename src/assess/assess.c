@@ -42,15 +42,18 @@ static double now_s(void) {
 
 /* Horizontal force [N/m] of the fluid on the seawall's boundary particles:
  * minus the momentum-equation force of the wall particles on each fluid
- * particle (the solver's own pair term, sph/interact.h), summed. */
+ * particle (the solver's own pair term, sph/interact.h), summed. 3D: the
+ * sum is the force on the whole wall [N], returned per metre of it (over
+ * the modelled width); likewise the moment. */
 static enum wl_status boundary_force(struct run_ctx *rc, const struct wl_particles *p,
                                      const struct wl_sph_const *k, double *force, double *moment,
                                      struct wl_error *err) {
   const struct wl_flume *f = &rc->c->flume;
   const double reach = 2.0 * k->h_d;
+  const int d3 = p->dim == 3, az = p->dim - 1;
   size_t n_near = 0;
   for (int i = p->n_bound; i < p->n; i++) {
-    double x = p->pos[0][i], z = p->pos[1][i];
+    double x = p->pos[0][i], z = p->pos[az][i];
     if (x > f->x_wall - reach && z > f->z_toe - reach) {
       if (n_near == rc->near_cap) {
         size_t cap = rc->near_cap ? 2 * rc->near_cap : 4096;
@@ -70,11 +73,16 @@ static enum wl_status boundary_force(struct run_ctx *rc, const struct wl_particl
     for (size_t a = 0; a < n_near; a++) {
       int i = rc->near[a];
       wl_real dx = (wl_real)(p->pos[0][i] - p->pos[0][j]);
-      wl_real dz = (wl_real)(p->pos[1][i] - p->pos[1][j]);
-      wl_real r2 = dx * dx + dz * dz;
+      wl_real dz = (wl_real)(p->pos[az][i] - p->pos[az][j]);
+      wl_real r2 = dx * dx + dz * dz, dy = 0;
+      if (d3) {
+        dy = (wl_real)(p->pos[1][i] - p->pos[1][j]);
+        r2 += dy * dy;
+      }
       if (r2 >= k->support2) continue;
-      wl_real vx = p->vel[0][i] - p->vel[0][j], vz = p->vel[1][i] - p->vel[1][j];
+      wl_real vx = p->vel[0][i] - p->vel[0][j], vz = p->vel[az][i] - p->vel[az][j];
       wl_real rho_i = p->rho[i], p_i = wl_sph_eos_p(k, rho_i), rv = dx * vx + dz * vz;
+      if (d3) rv += dy * (p->vel[1][i] - p->vel[1][j]);
       wl_real inv_rho_j, vol_j;
       wl_sph_pair_j(k, rho_j, &inv_rho_j, &vol_j);
       /* the solver's own fluid-boundary pair term (no density diffusion) */
@@ -88,8 +96,12 @@ static enum wl_status boundary_force(struct run_ctx *rc, const struct wl_particl
       fx += fij;
       /* the pair force acts between the two particles; what pushes on the
        * foundation below the toe has no lever arm about it */
-      my += fij * fmax(0.0, 0.5 * (p->pos[1][i] + p->pos[1][j]) - f->z_toe);
+      my += fij * fmax(0.0, 0.5 * (p->pos[az][i] + p->pos[az][j]) - f->z_toe);
     }
+  }
+  if (d3) { /* per wall -> per metre */
+    fx /= f->width;
+    my /= f->width;
   }
   *force = fx;
   *moment = my;
@@ -120,8 +132,15 @@ static enum wl_status write_snapshot(struct run_ctx *rc, const struct wl_particl
   } else {
     for (size_t i = 0; i < n; i++) {
       /* 2D (x, z) is written as (x, 0, z) for ParaView */
-      pos[3 * i] = p->pos[0][i], pos[3 * i + 1] = 0.0, pos[3 * i + 2] = p->pos[1][i];
-      vel[3 * i] = (float)p->vel[0][i], vel[3 * i + 1] = 0.0f, vel[3 * i + 2] = (float)p->vel[1][i];
+      if (p->dim == 3) {
+        for (int a = 0; a < 3; a++) {
+          pos[3 * i + a] = p->pos[a][i];
+          vel[3 * i + a] = (float)p->vel[a][i];
+        }
+      } else {
+        pos[3 * i] = p->pos[0][i], pos[3 * i + 1] = 0.0, pos[3 * i + 2] = p->pos[1][i];
+        vel[3 * i] = (float)p->vel[0][i], vel[3 * i + 1] = 0.0f, vel[3 * i + 2] = (float)p->vel[1][i];
+      }
       rho[i] = (float)p->rho[i];
       prs[i] = (float)wl_sph_eos_p(k, p->rho[i]);
       kind[i] = p->kind[i];
@@ -175,19 +194,29 @@ static enum wl_status on_output(void *user, struct wl_sph_sim *sim, double t,
   for (int g = 0; g < f->n_gauges; g++) {
     double x = f->gauge_x[g];
     /* scan up from the bed: a dry gauge reads the bed, not the domain's floor */
-    double z = wl_sph_probe_elevation(rc->probe, x, 0.0, f->gauge_bed[g], cfg->hi[1], 0.0);
+    double z = wl_sph_probe_elevation(rc->probe, x, f->dims == 3 ? f->gauge_y : 0.0,
+                                      f->gauge_bed[g], cfg->hi[cfg->prm.dim - 1], 0.0);
     r->eta[row * (size_t)r->n_gauges + (size_t)g] = z - f->depth;
   }
   /* Wall probes read the fluid below the free surface at the wall (the
    * last gauge); above it the face is dry and the pressure 0. Shepard
    * interpolation just above the surface would otherwise report the
-   * pressure of the water below. The profile ends at (surface, 0). */
+   * pressure of the water below. The profile ends at (surface, 0). 3D:
+   * each height's pressure is the mean over the probes across the width
+   * (flume.h), so the profile integrates to the force per metre. */
   double *pr = &r->pressure[row * (size_t)r->n_probes];
   double z_surface = f->depth + r->eta[row * (size_t)r->n_gauges + (size_t)(f->n_gauges - 1)];
   int n_wet = 0;
   for (int k = 0; k < f->n_probes; k++) {
     double x[2] = {f->probe_x, f->probe_z[k]}, pk = 0.0;
-    if (f->probe_z[k] >= z_surface || !wl_sph_probe_interp(rc->probe, x, NULL, &pk)) pk = 0.0;
+    if (f->dims == 3) {
+      for (int j = 0; j < f->n_probe_y && f->probe_z[k] < z_surface; j++) {
+        double x3[3] = {f->probe_x, f->probe_y[j], f->probe_z[k]}, pj = 0.0;
+        if (wl_sph_probe_interp(rc->probe, x3, NULL, &pj)) pk += pj / f->n_probe_y;
+      }
+    } else if (f->probe_z[k] >= z_surface || !wl_sph_probe_interp(rc->probe, x, NULL, &pk)) {
+      pk = 0.0;
+    }
     pr[k] = pk;
     if (f->probe_z[k] < z_surface) {
       rc->prof_z[n_wet] = f->probe_z[k];
@@ -214,10 +243,16 @@ static enum wl_status on_output(void *user, struct wl_sph_sim *sim, double t,
   if ((st = boundary_force(rc, p, k, &r->force_bound[row], &r->moment_bound[row], err)))
     return st;
   double kin = 0.0, pot = 0.0;
+  const int az = p->dim - 1;
   for (int i = p->n_bound; i < p->n; i++) {
     double v2 = (double)p->vel[0][i] * p->vel[0][i] + (double)p->vel[1][i] * p->vel[1][i];
+    if (az == 2) v2 += (double)p->vel[2][i] * p->vel[2][i];
     kin += 0.5 * (double)k->mass * v2;
-    pot += (double)k->mass * (-k->gravity[1]) * p->pos[1][i];
+    pot += (double)k->mass * (-k->gravity[az]) * p->pos[az][i];
+  }
+  if (az == 2) { /* 3D: per metre of width, as in 2D */
+    kin /= f->width;
+    pot /= f->width;
   }
   r->kinetic[row] = kin;
   r->potential[row] = pot;

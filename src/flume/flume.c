@@ -3,6 +3,8 @@
 #include "wallload/flume.h"
 
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "wallload/explosion.h"
@@ -10,7 +12,8 @@
 #include "wallload/units.h"
 #include "wallload/waves.h"
 
-/* Free surface of the initial condition, z = depth + eta(x). */
+/* Free surface of the initial condition, z = depth + eta(x) (3D: eta(x, y)
+ * at the lattice row y of the current call). */
 struct surface {
   enum wl_load_case load;
   double depth;
@@ -19,6 +22,9 @@ struct surface {
   enum wl_crater_shape shape; /* explosion */
   double eta0, r0, xc;
   double rho; /* water density [kg/m^3] */
+  int dim;    /* 2 or 3: z is x[dim - 1] */
+  int radial; /* 3D axisymmetric crater: r from the axis (xc, yc) */
+  double y, yc; /* 3D: the row being filled, the crater's axis [m] */
 };
 
 static double surface_z(double x, void *user) {
@@ -29,19 +35,22 @@ static double surface_z(double x, void *user) {
   } else if (s->load == WL_CASE_EXPLOSION) {
     struct wl_error ignore;
     wl_error_clear(&ignore);
-    wl_explosion_eta(s->shape, s->eta0, s->r0, fabs(x - s->xc), &eta, &ignore);
+    const double r = s->radial ? hypot(x - s->xc, s->y - s->yc) : fabs(x - s->xc);
+    wl_explosion_eta(s->shape, s->eta0, s->r0, r, &eta, &ignore);
   }
   return s->depth + eta;
 }
 
 /* Velocity of the solitary wave's field; z measured up from the flume
- * floor, which is the wave's bed where it is placed (over the flat part). */
+ * floor, which is the wave's bed where it is placed (over the flat part).
+ * 3D: long-crested, v = 0. */
 static void solitary_velocity(const double *x, double *v, void *user) {
   const struct surface *s = user;
   double u, w;
-  wl_waves_solitary_velocity(s->wave, x[0] - s->crest_x, x[1], &u, &w);
+  wl_waves_solitary_velocity(s->wave, x[0] - s->crest_x, x[s->dim - 1], &u, &w);
   v[0] = u;
-  v[1] = w;
+  if (s->dim == 3) v[1] = 0.0;
+  v[s->dim - 1] = w;
 }
 
 /* Non-hydrostatic part of the solitary wave's pressure [Pa]. The flow is
@@ -58,7 +67,7 @@ static double solitary_dynamic_pressure(const double *x, void *user) {
   const struct surface *s = user;
   const double X = x[0] - s->crest_x;
   double u, w;
-  wl_waves_solitary_velocity(s->wave, X, x[1], &u, &w);
+  wl_waves_solitary_velocity(s->wave, X, x[s->dim - 1], &u, &w);
   const double eta = wl_waves_solitary_eta(s->wave, X);
   return s->rho * (s->wave->c * u - 0.5 * (u * u + w * w) - s->wave->g * eta);
 }
@@ -96,13 +105,59 @@ static void set_params(const struct wl_scenario *s, const struct wl_plan *plan, 
   if (!s->run.threads.is_auto) cfg->n_threads = (int)s->run.threads.q.si;
 }
 
+/* Distance from (x, z) to the polyline. */
+static double polyline_dist(const double *vx, const double *vz, int n, double x, double z) {
+  double best = INFINITY;
+  for (int i = 0; i + 1 < n; i++) {
+    const double tx = vx[i + 1] - vx[i], tz = vz[i + 1] - vz[i];
+    const double len2 = tx * tx + tz * tz;
+    double u = len2 > 0 ? ((x - vx[i]) * tx + (z - vz[i]) * tz) / len2 : 0;
+    u = u < 0 ? 0 : u > 1 ? 1 : u;
+    best = fmin(best, hypot(x - (vx[i] + u * tx), z - (vz[i] + u * tz)));
+  }
+  return best;
+}
+
+/* 3D side walls: the (x, z) lattice points inside the flume's profile (the
+ * boundary polyline vx, vz: above the bed, seaward of the wall face or
+ * above the land, below z_top, between its end faces) at least dp/2 from
+ * the polyline, as layers behind y = 0 and y = width (box3d.c). The
+ * extruded polyline's layers fill the edges under them. */
+static enum wl_status side_walls(struct wl_scene *sc, const double *vx, const double *vz, int nv,
+                                 double xw, double z_crest, const struct wl_scenario *s,
+                                 double z_top, double width, int layers, struct wl_error *err) {
+  const double dp = sc->dp, tol = 1e-9 * dp;
+  const double x0 = vx[0], x1 = vx[nv - 1];
+  double zmin = vz[0];
+  for (int i = 1; i < nv; i++) zmin = fmin(zmin, vz[i]);
+  const int nx = (int)floor((x1 - x0) / dp + 1e-9), nz = (int)floor((z_top - zmin) / dp + 1e-9);
+  double *xz = malloc(sizeof(double) * 2 * (size_t)nx * (size_t)(nz > 0 ? nz : 1));
+  if (!xz) return wl_error_set(err, WL_ENOMEM, "flume side walls: out of memory");
+  int n = 0;
+  for (int i = 0; i < nx; i++) {
+    const double x = x0 + (i + 0.5) * dp;
+    const double floor_z = x < xw ? wl_scenario_bed_z(s, x) : z_crest;
+    for (int j = 0; j < nz; j++) {
+      const double z = zmin + (j + 0.5) * dp;
+      if (z <= floor_z || polyline_dist(vx, vz, nv, x, z) < 0.5 * dp - tol) continue;
+      xz[2 * n] = x;
+      xz[2 * n + 1] = z;
+      n++;
+    }
+  }
+  enum wl_status st = wl_scene_box3d_sides(sc, xz, n, 0.0, width, layers, err);
+  free(xz);
+  return st;
+}
+
 enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan *plan,
                               enum wl_load_case load, struct wl_flume *f, struct wl_error *err) {
   memset(f, 0, sizeof *f);
   f->load = load;
-  if (plan->dims != 2)
-    return wl_error_set(err, WL_EUNSUPPORTED,
-                        "%s: domain.dimensions: 3D flumes are not built yet; use 2", s->path);
+  const int dim = plan->dims;
+  f->dims = dim;
+  if (dim != 2 && dim != 3)
+    return wl_error_set(err, WL_EINPUT, "%s: domain.dimensions: %d; valid 2 or 3", s->path, dim);
   if (s->numerics.shifting.choice != 0)
     return wl_error_set(err, WL_EUNSUPPORTED,
                         "%s: numerics.shifting: on is not implemented yet; use off", s->path);
@@ -113,6 +168,13 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
 
   const double dp = plan->dp, depth = plan->h;
   const double xw = s->wall.x.q.si;
+  /* 3D: the width as a whole number of lattice rows (flume.h) */
+  int n_rows = 1;
+  if (dim == 3) {
+    n_rows = (int)floor(s->domain.width.q.si / dp + 0.5);
+    if (n_rows < 1) n_rows = 1;
+    f->width = n_rows * dp;
+  }
   f->depth = depth;
   f->x_wall = xw;
   f->z_toe = wl_scenario_bed_z(s, xw);
@@ -123,7 +185,7 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
 
   /* What rises above still water decides c0 and the top of the domain. */
   double rise = 0.0, thrown_top = 0.0;
-  struct surface surf = {load, depth, NULL, 0, 0, 0, 0, 0, plan->rho};
+  struct surface surf = {load, depth, NULL, 0, 0, 0, 0, 0, plan->rho, dim, 0, 0, 0};
   const struct wl_plan_solitary *ps = &plan->solitary;
   const struct wl_plan_explosion *px = &plan->explosion;
   double x_left = 0.0; /* where the modelled flume starts (plan) */
@@ -141,6 +203,10 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
     surf.eta0 = px->eta0;
     surf.r0 = px->r0;
     surf.xc = px->x_center;
+    /* 3D: the plane shapes are long-crested, the others axisymmetric */
+    surf.radial = dim == 3 && surf.shape != WL_CRATER_SHAPE_QUADRATIC_LIP_PLANE &&
+                  surf.shape != WL_CRATER_SHAPE_QUARTIC_LIP_PLANE;
+    surf.yc = 0.5 * f->width;
     rise = 2.0 * px->eta0; /* a lip of up to 2 eta0 (plane lip) */
     x_left = px->x_left;
     f->t_end = px->end_time;
@@ -150,6 +216,10 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
 
   struct wl_explosion_part parts[WL_EXPLOSION_PARTS_MAX];
   int n_parts = 0;
+  if (load == WL_CASE_EXPLOSION && px->model_thrown && dim == 3)
+    return wl_error_set(err, WL_EUNSUPPORTED,
+                        "%s: loads.explosion: the thrown-mass model is 2D only; use "
+                        "domain.dimensions: 2, or a crater shape without thrown mass", s->path);
   if (load == WL_CASE_EXPLOSION && px->model_thrown) {
     double mass, rc;
     enum wl_status st = wl_explosion_thrown_mass(WL_CRATER_SHAPE_QUADRATIC, 2, plan->rho, px->eta0,
@@ -188,11 +258,17 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
   f->x_left = x_left;
   f->cfg.lo[0] = x_left - thick - 2 * dp;
   f->cfg.hi[0] = xw + plan->land_length + thick + 2 * dp;
-  f->cfg.lo[1] = -thick - 2 * dp;
-  f->cfg.hi[1] = z_top + thick + 2 * dp;
+  f->cfg.lo[dim - 1] = -thick - 2 * dp;
+  f->cfg.hi[dim - 1] = z_top + thick + 2 * dp;
+  if (dim == 3) { /* just behind the side walls' layers (flume.h: guard) */
+    f->cfg.lo[1] = -thick - 2 * dp;
+    f->cfg.hi[1] = f->width + thick + 2 * dp;
+  }
 
+  /* 3D: the polyline's extrusion runs on the fluid's y lattice, (j + 1/2)
+   * dp, from under the left side wall's last layer to under the right's */
   struct wl_scene sc;
-  wl_scene_init(&sc, &k, 0.0, 0.0);
+  wl_scene_init(&sc, &k, -(layers - 0.5) * dp, f->width + (layers - 0.5) * dp);
 
   /* Fixed boundary: (left wall,) bed with its bathymetry, wall face, land
    * at crest level, end wall; one polyline so its corners are mitred. */
@@ -217,8 +293,14 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
   vx[nv] = x_end, vz[nv++] = f->z_crest;
   vx[nv] = x_end, vz[nv++] = z_top;
   st = wl_scene_boundary_polyline(&sc, vx, vz, nv, layers, WL_KIND_FIXED, 0, &f->cfg, err);
-  if (!st && f->has_paddle)
+  const int n_extruded = sc.n[0]; /* the seawall body is tagged among these */
+  if (!st && dim == 3) st = side_walls(&sc, vx, vz, nv, xw, f->z_crest, s, z_top, f->width, layers, err);
+  if (!st && f->has_paddle) {
+    /* 3D: the piston spans the fluid rows only, inside the side walls */
+    sc.y0 = 0.5 * dp;
+    sc.y1 = f->width - 0.5 * dp;
     st = wl_scene_piston(&sc, 0.0, 0.0, z_top, layers, WL_FLUME_BODY_PADDLE, err);
+  }
 
   /* Fluid between the left end and the wall, under the initial surface. */
   double bx[WL_SCENARIO_MAX_BED + 2], bz[WL_SCENARIO_MAX_BED + 2];
@@ -230,7 +312,17 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
     bx[nb] = xb, bz[nb++] = wl_scenario_bed_z(s, xb);
   }
   bx[nb] = xw, bz[nb++] = f->z_toe;
-  if (!st) st = wl_scene_fluid_surface(&sc, x_left, xw, bx, bz, nb, surface_z, &surf, err);
+  if (dim == 2) {
+    if (!st) st = wl_scene_fluid_surface(&sc, x_left, xw, bx, bz, nb, surface_z, &surf, err);
+  } else {
+    /* one lattice row across at a time, so that eta may depend on y */
+    for (int j = 0; !st && j < n_rows; j++) {
+      sc.y0 = j * dp;
+      sc.y1 = (j + 1) * dp;
+      surf.y = (j + 0.5) * dp;
+      st = wl_scene_fluid_surface(&sc, x_left, xw, bx, bz, nb, surface_z, &surf, err);
+    }
+  }
   if (!st && surf.wave) {
     wl_scene_fluid_velocity(&sc, solitary_velocity, &surf);
     wl_scene_fluid_add_pressure(&sc, solitary_dynamic_pressure, &surf);
@@ -238,7 +330,7 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
   for (int i = 0; !st && i < n_parts; i++) {
     const struct wl_explosion_part *pt = &parts[i];
     double lo[2] = {px->x_center + pt->s_in, depth + pt->z - 0.5 * pt->height};
-    double hi[2] = {px->x_center + pt->s_out, depth + pt->z + 0.5 * pt->height};
+    double hi[2] = {px->x_center + pt->s_out, depth + pt->z + 0.5 * pt->height}; /* 2D only */
     int before = sc.n[1];
     st = wl_scene_fluid_block(&sc, lo, hi, hi[1], err);
     for (int j = before; !st && j < sc.n[1]; j++) {
@@ -250,8 +342,8 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
   /* The structure: every fixed boundary particle behind the face plane,
    * including the bed layers under the toe, since fluid at the toe corner
    * pushes on those too (leaving them out loses a few % of the force). */
-  for (int j = 0; !st && j < sc.n[0]; j++) {
-    double x = sc.pos[0][2 * j];
+  for (int j = 0; !st && j < n_extruded; j++) {
+    double x = sc.pos[0][(size_t)dim * j];
     if (sc.kind[0][j] == WL_KIND_FIXED && x > xw) sc.body[0][j] = WL_FLUME_BODY_WALL;
   }
   if (!st) st = wl_scene_build(&sc, &f->particles, err);
@@ -278,6 +370,13 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
   f->probe_x = xw - 0.5 * dp;
   for (int i = 0; i < n_probes; i++)
     f->probe_z[i] = f->z_toe + (i + 0.5) * (f->z_crest - f->z_toe) / n_probes;
+  if (dim == 3) {
+    /* across: centres of equal strips, at most one per lattice row */
+    int ny = n_rows < 5 ? n_rows : 5;
+    f->n_probe_y = ny;
+    for (int j = 0; j < ny; j++) f->probe_y[j] = (j + 0.5) * f->width / ny;
+    f->gauge_y = 0.5 * f->width;
+  }
   for (int i = 0; i < s->n_gauges; i++) {
     f->gauge_x[i] = s->gauges[i].x.q.si;
     f->gauge_bed[i] = wl_scenario_bed_z(s, f->gauge_x[i]);

@@ -258,7 +258,7 @@ static double wet_area(const struct wl_scenario *s, double h, double x0) {
 /* Particles of one case whose flume starts at x_left, and its
  * particle-steps to t_end. */
 static void case_cost(const struct wl_scenario *s, struct wl_plan *p, double x_left, double t_end,
-                      long *n_fluid, long *n_boundary, double *particle_steps) {
+                      double rise, long *n_fluid, long *n_boundary, double *particle_steps) {
   double xw = s->wall.x.q.si;
   double area = wet_area(s, p->h, x_left);
   double wall_top = wl_scenario_bed_z(s, xw) + s->wall.height.q.si;
@@ -267,6 +267,18 @@ static void case_cost(const struct wl_scenario *s, struct wl_plan *p, double x_l
   double across = p->dims == 3 ? s->domain.width.q.si / p->dp : 1.0;
   *n_fluid = (long)(area / (p->dp * p->dp) * across);
   *n_boundary = (long)(BOUNDARY_LAYERS * perimeter / p->dp * across);
+  if (p->dims == 3) {
+    /* flume.c: the polyline extruded under the side walls too, and the
+     * side walls over the flume's profile up to the domain's top */
+    const double layers = ceil(2.0 * p->h_sml / p->dp);
+    const double z_top = fmax(wall_top, p->h) + fmax(3.0 * rise, 0.5 * p->h);
+    const double x_end = xw + p->land_length;
+    double profile = (x_end - x_left) * z_top - p->land_length * wall_top -
+                     ((xw - x_left) * p->h - area);
+    if (profile < 0) profile = 0;
+    *n_boundary = (long)(layers * perimeter / p->dp * (across + 2.0 * layers) +
+                         2.0 * layers * profile / (p->dp * p->dp));
+  }
   *particle_steps = (double)(*n_fluid + *n_boundary) * t_end / p->dt;
 }
 
@@ -294,7 +306,8 @@ static void plan_resolution(const struct wl_scenario *s, struct wl_plan *p) {
   if (p->solitary.present) {
     struct wl_plan_solitary *ps = &p->solitary;
     if (!s->run.end_time.is_auto) ps->end_time = s->run.end_time.q.si;
-    case_cost(s, p, ps->x_left, ps->end_time, &ps->n_fluid, &ps->n_boundary, &ps->particle_steps);
+    case_cost(s, p, ps->x_left, ps->end_time, ps->wave.H, &ps->n_fluid, &ps->n_boundary,
+              &ps->particle_steps);
     p->particle_steps += ps->particle_steps;
     if (ps->n_fluid + ps->n_boundary > n_max) n_max = ps->n_fluid + ps->n_boundary;
     p->n_fluid = ps->n_fluid, p->n_boundary = ps->n_boundary;
@@ -302,13 +315,14 @@ static void plan_resolution(const struct wl_scenario *s, struct wl_plan *p) {
   if (p->explosion.present) {
     struct wl_plan_explosion *px = &p->explosion;
     if (!s->run.end_time.is_auto) px->end_time = s->run.end_time.q.si;
-    case_cost(s, p, px->x_left, px->end_time, &px->n_fluid, &px->n_boundary, &px->particle_steps);
+    case_cost(s, p, px->x_left, px->end_time, 2.0 * px->eta0, &px->n_fluid, &px->n_boundary,
+              &px->particle_steps);
     p->particle_steps += px->particle_steps;
     if (px->n_fluid + px->n_boundary > n_max)
       n_max = px->n_fluid + px->n_boundary, p->n_fluid = px->n_fluid, p->n_boundary = px->n_boundary;
   }
   p->memory_bytes = BYTES_PER_PARTICLE * (double)n_max;
-  p->cpu_seconds = p->particle_steps / WL_PLAN_CPU_RATE;
+  p->cpu_seconds = p->particle_steps / (p->dims == 3 ? WL_PLAN_CPU_RATE_3D : WL_PLAN_CPU_RATE);
 }
 
 enum wl_status wl_plan_make(const struct wl_scenario *s, struct wl_plan *p,
@@ -421,7 +435,7 @@ void wl_plan_write(const struct wl_plan *p, FILE *out) {
   fprintf(out, "  %-36s %12.4g MiB\n", "memory (estimate)", p->memory_bytes / 1048576.0);
   fprintf(out, "  %-36s %12.4g\n", "particle-steps, all cases", p->particle_steps);
   fprintf(out, "  %-36s %12.4g s      (at %.2g particle-steps/s)\n", "CPU runtime (estimate)",
-          p->cpu_seconds, WL_PLAN_CPU_RATE);
+          p->cpu_seconds, p->dims == 3 ? WL_PLAN_CPU_RATE_3D : WL_PLAN_CPU_RATE);
   if (p->n_notes) fprintf(out, "\nNotes\n");
   for (int i = 0; i < p->n_notes; i++) fprintf(out, "  - %s\n", p->notes[i]);
 }
