@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# assess_e2e.sh: `wallload assess` end to end on the device machine, CPU and
+# CUDA backends, for BENCHMARKS.md ("assess end to end, CPU vs CUDA").
+# The device machine has CUDA but no GSL, libyaml, HDF5 or cairo/pango, so
+# the full build is made here and carried with the shared libraries it needs.
+#
+#   bench/assess_e2e.sh pack   here: build build-e2e (-DWL_CUDA=ON) and fill
+#                              .e2e/ (binary, non-glibc libraries from ldd,
+#                              DejaVu fonts, fonts.conf, the wall scenario);
+#                              add /.e2e/ to .git/info/exclude; ~42 MiB
+#   bench/assess_e2e.sh run    there (device `run` with carry [".e2e"]):
+#                              both scenarios on both backends, one after the
+#                              other; $OUT/e2e.log, $OUT/e2e.tgz (summary.json
+#                              and CSV of each run), the GPU seawall report
+#   python3 bench/assess_compare.py DIR   here, on the unpacked e2e.tgz
+set -u
+root=$(cd "$(dirname "$0")/.." && pwd)
+E=$root/.e2e
+case ${1:-} in
+pack)
+  set -e
+  cd "$root"
+  cmake -S . -B build-e2e -DWL_CUDA=ON -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build build-e2e -j2 --target wallload >/dev/null
+  grep -qx '/.e2e/' .git/info/exclude || echo /.e2e/ >>.git/info/exclude
+  rm -rf "$E" && mkdir -p "$E/lib" "$E/fonts"
+  cp build-e2e/wallload "$E/"
+  ldd build-e2e/wallload | awk '$3 ~ /^\// {print $3}' |
+    grep -v -E '/(libc|libm|libdl|libpthread|librt|libresolv|ld-linux-x86-64)\.so' |
+    xargs -I{} cp -L {} "$E/lib/"
+  cp /usr/share/fonts/truetype/dejavu/DejaVuSans{,-Bold,Mono}.ttf "$E/fonts/"
+  cat >"$E/fonts.conf" <<'XML'
+<?xml version="1.0"?>
+<!DOCTYPE fontconfig SYSTEM "fonts.dtd">
+<fontconfig>
+  <dir prefix="relative">fonts</dir>
+  <cachedir>/tmp/wl-fontcache</cachedir>
+</fontconfig>
+XML
+  # solitary wave on a vertical wall, h = 0.2 m, H/h = 0.3, dp = 0.01 m
+  # (tests/test_solitary_wall.c: crest x0 = 0.55 L, wall x0 + 0.75 L, L = 6/K)
+  cat >"$E/solwall.yaml" <<'YAML'
+scenario: solwall
+water: {depth: 0.2 m}
+domain: {length: 3.787 m}
+wall: {x: 3.287 m, height: 0.6 m, probes: 40}
+gauges: [{name: G1, x: 2.5 m}, {name: G2, x: 3.2 m}]
+loads:
+  solitary: {height: 0.06 m, generation: initial, at: 1.392 m}
+resolution: {dp: 0.01 m}
+run: {output_interval: 0.005 s}
+YAML
+  du -sh "$E"
+  ;;
+run)
+  t0=$(date +%s)
+  R=/tmp/e2e; mkdir -p $R; out=${OUT:-/tmp}
+  export FONTCONFIG_FILE=$E/fonts.conf
+  one() { # name time-limit assess-arguments...; SIGINT at the limit keeps what was done
+    local n=$1 to=$2; shift 2
+    local a; a=$(date +%s.%N)
+    timeout -s INT -k 20 "$to" env LD_LIBRARY_PATH="$E/lib" "$E/wallload" assess "$@" --quiet \
+      -o $R/$n >$R/$n.log 2>&1
+    local rc=$? b; b=$(date +%s.%N)
+    echo "== $n rc=$rc wall=$(awk "BEGIN{print $b - $a}") s"; tail -40 $R/$n.log
+  }
+  {
+    echo "# $(date -u +%FT%TZ) $(nvidia-smi --query-gpu=name,memory.total,driver_version --format=csv,noheader 2>&1)"
+    echo "# host: $(lscpu | grep 'Model name' | sed 's/  */ /g'), $(nproc) cores"
+    env LD_LIBRARY_PATH="$E/lib" "$E/wallload" --version
+    one sol_cuda 120 "$E/solwall.yaml" --backend cuda
+    one sol_cpu 150 "$E/solwall.yaml" --backend cpu --threads 16
+    one sea_cuda 200 "$root/scenarios/seawall.yaml" --backend cuda
+    one sea_cpu $((470 - ($(date +%s) - t0))) "$root/scenarios/seawall.yaml" --backend cpu --threads 16
+  } 2>&1 | tee "$out/e2e.log"
+  (cd $R && tar czf "$out/e2e.tgz" */summary.json */*.csv *.log)
+  cp $R/sea_cuda/report.pdf "$out/sea_cuda_report.pdf" 2>/dev/null
+  ;;
+*) echo "usage: bench/assess_e2e.sh pack|run" >&2; exit 2 ;;
+esac
