@@ -43,6 +43,7 @@ struct wl_plan_solitary {
   int paddle;                          /* 1: Goring paddle; 0: initial condition */
   struct wl_goring goring;             /* the paddle motion when paddle = 1 */
   double crest_x0;                     /* initial crest position [m] (initial condition) */
+  int fits;                            /* 1: the crest starts seaward of the wall */
   double arrival_time;                 /* crest at the wall, estimated [s] */
   double end_time;                     /* simulated time of this case [s] */
   double x_left;                       /* the modelled flume starts here [m] */
@@ -125,5 +126,11 @@ enum wl_status wl_plan_make(const struct wl_scenario *s, struct wl_plan *plan,
 
 /* Print the plan: derived initial conditions with their sources, and cost. */
 void wl_plan_write(const struct wl_plan *plan, FILE *out);
+
+/* WL_OK when the plan's solitary case can run; WL_EINPUT, naming
+ * loads.solitary and the wall, when its automatic initial crest falls at
+ * or behind the wall (a flume shorter than the wave). */
+enum wl_status wl_plan_solitary_runnable(const struct wl_scenario *s, const struct wl_plan *p,
+                                         struct wl_error *err);
 
 #endif

@@ -430,6 +430,8 @@ enum wl_status wl_assess_run(const struct wl_scenario *s, const struct wl_plan *
   enum wl_status st = pick_backend(s, opts, &ops, err);
   if (st) return st;
   snprintf(res->backend, sizeof res->backend, "%s", ops->name);
+  /* input the plan found unusable is refused before anything is written */
+  if (plan->solitary.present && (st = wl_plan_solitary_runnable(s, plan, err))) return st;
   if ((st = prepare_dir(res->out_dir, opts->force, err))) return st;
 
   enum wl_load_case todo[2];

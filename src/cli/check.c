@@ -78,8 +78,10 @@ enum wl_status wl_cli_check(int argc, char **argv, struct wl_error *err) {
   wl_scenario_write_resolved(&s, stdout);
   wl_plan_write(&plan, stdout);
   ladder_cost(&s, &plan, 0, stdout);
+  /* printed in full above; a case that cannot run makes the scenario invalid */
+  if (plan.solitary.present) st = wl_plan_solitary_runnable(&s, &plan, err);
   wl_scenario_clear(&s);
-  return WL_OK;
+  return st;
 }
 
 /* Ctrl-C sets this; the running case stops at its next output time and

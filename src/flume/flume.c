@@ -163,6 +163,10 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
                         "%s: numerics.shifting: on is not implemented yet; use off", s->path);
   if (load == WL_CASE_SOLITARY && !plan->solitary.present)
     return wl_error_set(err, WL_EINPUT, "%s: the scenario has no solitary load case", s->path);
+  if (load == WL_CASE_SOLITARY && plan->solitary.present) {
+    enum wl_status fst = wl_plan_solitary_runnable(s, plan, err);
+    if (fst) return fst;
+  }
   if (load == WL_CASE_EXPLOSION && !plan->explosion.present)
     return wl_error_set(err, WL_EINPUT, "%s: the scenario has no explosion load case", s->path);
 

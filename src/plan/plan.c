@@ -75,6 +75,7 @@ static enum wl_status plan_solitary(const struct wl_scenario *s, struct wl_plan 
     if (st) return st;
     /* The crest leaves the paddle about lambda/c after the start. */
     ps->arrival_time = ps->goring.lambda / c + xw / c;
+    ps->fits = 1;
   } else {
     /* auto: the wave's front (1 % of H) just reaches the first slope's toe
      * (or the wall), so the simulation starts where the wave meets the
@@ -91,6 +92,15 @@ static enum wl_status plan_solitary(const struct wl_scenario *s, struct wl_plan 
       note(p, "loads.solitary.at = %.3g m puts the crest within half a wave length (%.3g m) of "
               "the left end: the wave's tail is cut there",
            ps->crest_x0, 0.5 * length);
+    /* An automatic crest position can land at or behind the wall when the
+     * flume is shorter than the wave: the solitary case cannot run then
+     * (wl_flume_build refuses it); scenarios that only need the flume's
+     * still water (tests) may still plan. */
+    ps->fits = ps->crest_x0 < xw;
+    if (!ps->fits)
+      note(p, "the %.3g m solitary wave is %.3g m long (2 x 3/K) and does not fit seaward of the "
+              "wall at x = %g m: its case cannot run (wall.x >= %.3g m needed)",
+           H, length, xw, length);
     ps->arrival_time = (xw - ps->crest_x0) / c;
     /* Model only what the wave needs: the flume starts behind its tail. */
     ps->x_left = fmax(0.0, ps->crest_x0 - 0.5 * length);
@@ -438,4 +448,15 @@ void wl_plan_write(const struct wl_plan *p, FILE *out) {
           p->cpu_seconds, p->dims == 3 ? WL_PLAN_CPU_RATE_3D : WL_PLAN_CPU_RATE);
   if (p->n_notes) fprintf(out, "\nNotes\n");
   for (int i = 0; i < p->n_notes; i++) fprintf(out, "  - %s\n", p->notes[i]);
+}
+
+enum wl_status wl_plan_solitary_runnable(const struct wl_scenario *s, const struct wl_plan *p,
+                                         struct wl_error *err) {
+  const struct wl_plan_solitary *ps = &p->solitary;
+  if (ps->paddle || ps->fits) return WL_OK;
+  return wl_error_set(err, WL_EINPUT,
+                      "%s: loads.solitary: the wave does not fit seaward of the wall at x = %g m "
+                      "(initial crest at %.3g m); expected a longer flume (wall.x, "
+                      "domain.length) or a smaller wave",
+                      s->path, s->wall.x.q.si, ps->crest_x0);
 }
