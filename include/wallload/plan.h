@@ -95,6 +95,7 @@ struct wl_plan {
   double memory_bytes;              /* estimated solver memory */
   double particle_steps;            /* estimated for all cases */
   double cpu_seconds;               /* estimated on the reference CPU rate */
+  double gpu_seconds;               /* estimated for the CUDA backend on an H100 */
   int n_notes;
   char notes[WL_PLAN_MAX_NOTES][320]; /* warnings and assumptions worth reading */
 };
@@ -117,6 +118,16 @@ struct wl_plan {
  * flume's side walls): test_flume3d's still-water flume (16k particles)
  * ran at about 3e5 particle-steps/s on the 2-core development machine. */
 #define WL_PLAN_CPU_RATE_3D 3.0e5
+/* The CUDA backend on an H100 (BENCHMARKS.md, 2026-11-23): a step of a
+ * flume of 9k-38k particles took about 215 us whatever its size (launches
+ * and the per-step synchronisation, not the force loop, set the time: the
+ * seawall's cases ran 48k and 58k steps in 10.3 and 12.4 s); large runs go
+ * at the force loop's rate, 1.08e9 particle-steps/s for the 2D dam break of
+ * 0.89M particles and 1.78e8 for the 3D one of 1.03M (h = 1.41 and
+ * 1.73 dp). The estimate takes the larger of the two times. */
+#define WL_PLAN_GPU_STEP_S 2.2e-4
+#define WL_PLAN_GPU_RATE 1.08e9
+#define WL_PLAN_GPU_RATE_3D 1.78e8
 
 /* Build the plan of a validated scenario. Returns WL_OK; WL_EINPUT when a
  * formula's validity is exceeded (message names the scenario key);

@@ -333,6 +333,14 @@ static void plan_resolution(const struct wl_scenario *s, struct wl_plan *p) {
   }
   p->memory_bytes = BYTES_PER_PARTICLE * (double)n_max;
   p->cpu_seconds = p->particle_steps / (p->dims == 3 ? WL_PLAN_CPU_RATE_3D : WL_PLAN_CPU_RATE);
+  const double gpu_rate = p->dims == 3 ? WL_PLAN_GPU_RATE_3D : WL_PLAN_GPU_RATE;
+  p->gpu_seconds = 0;
+  if (p->solitary.present)
+    p->gpu_seconds += fmax(p->solitary.end_time / p->dt * WL_PLAN_GPU_STEP_S,
+                           p->solitary.particle_steps / gpu_rate);
+  if (p->explosion.present)
+    p->gpu_seconds += fmax(p->explosion.end_time / p->dt * WL_PLAN_GPU_STEP_S,
+                           p->explosion.particle_steps / gpu_rate);
 }
 
 enum wl_status wl_plan_make(const struct wl_scenario *s, struct wl_plan *p,
@@ -446,6 +454,10 @@ void wl_plan_write(const struct wl_plan *p, FILE *out) {
   fprintf(out, "  %-36s %12.4g\n", "particle-steps, all cases", p->particle_steps);
   fprintf(out, "  %-36s %12.4g s      (at %.2g particle-steps/s)\n", "CPU runtime (estimate)",
           p->cpu_seconds, p->dims == 3 ? WL_PLAN_CPU_RATE_3D : WL_PLAN_CPU_RATE);
+  fprintf(out, "  %-36s %12.4g s      (CUDA backend on an H100: %.2g s a step or %.2g "
+               "particle-steps/s, the slower)\n",
+          "GPU runtime (estimate)", p->gpu_seconds, WL_PLAN_GPU_STEP_S,
+          p->dims == 3 ? WL_PLAN_GPU_RATE_3D : WL_PLAN_GPU_RATE);
   if (p->n_notes) fprintf(out, "\nNotes\n");
   for (int i = 0; i < p->n_notes; i++) fprintf(out, "  - %s\n", p->notes[i]);
 }
