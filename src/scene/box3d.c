@@ -15,40 +15,8 @@
 #include <string.h>
 
 #include "wallload/scene.h"
+#include "internal.h"
 #include "wallload/sph.h"
-
-/* Append one boundary particle (as scene.c's push, group 0). */
-static enum wl_status push_bound(struct wl_scene *sc, const double *x, struct wl_error *err) {
-  const int g = 0, dim = sc->dim;
-  if (sc->n[g] == sc->cap[g]) {
-    const int cap = sc->cap[g] ? 2 * sc->cap[g] : 1024;
-    if (cap <= sc->cap[g] || cap > 1 << 30)
-      return wl_error_set(err, WL_ENOMEM, "scene box: more than 2^30 boundary particles");
-    double *p = realloc(sc->pos[g], sizeof(double) * (size_t)dim * (size_t)cap);
-    if (p) sc->pos[g] = p;
-    double *v = p ? realloc(sc->vel[g], sizeof(double) * (size_t)dim * (size_t)cap) : NULL;
-    if (v) sc->vel[g] = v;
-    double *r = v ? realloc(sc->rho[g], sizeof(double) * (size_t)cap) : NULL;
-    if (r) sc->rho[g] = r;
-    unsigned char *kd = r ? realloc(sc->kind[g], (size_t)cap) : NULL;
-    if (kd) sc->kind[g] = kd;
-    unsigned char *bd = kd ? realloc(sc->body[g], (size_t)cap) : NULL;
-    if (bd) sc->body[g] = bd;
-    if (!bd)
-      return wl_error_set(err, WL_ENOMEM, "scene box: out of memory for %d boundary particles "
-                          "(%.1f MiB)", cap, (double)cap * (16.0 * dim + 10) / 1048576.0);
-    sc->cap[g] = cap;
-  }
-  const int i = sc->n[g]++;
-  for (int a = 0; a < dim; a++) {
-    sc->pos[g][(size_t)i * dim + a] = x[a];
-    sc->vel[g][(size_t)i * dim + a] = 0;
-  }
-  sc->rho[g][i] = sc->k.rho0;
-  sc->kind[g][i] = WL_KIND_FIXED;
-  sc->body[g][i] = 0;
-  return WL_OK;
-}
 
 /* Coordinates along one axis: `before` layers below lo, the points inside
  * [lo, hi], `after` layers above hi (see the file header). c gets them
@@ -102,7 +70,7 @@ static enum wl_status emit_shell(struct wl_scene *sc, const double *c[3],
         q[0] = c[0][ix];
         q[1] = c[1][iy];
         q[2] = c[2][iz];
-        st = push_bound(sc, q, err);
+        st = wl_scene_push(sc, 0, q, sc->k.rho0, WL_KIND_FIXED, 0, err);
       }
   return st;
 }
@@ -171,7 +139,7 @@ enum wl_status wl_scene_box3d_solid(struct wl_scene *sc, const double *lo, const
         q[0] = c[0][ix];
         q[1] = c[1][iy];
         q[2] = c[2][iz];
-        st = push_bound(sc, q, err);
+        st = wl_scene_push(sc, 0, q, sc->k.rho0, WL_KIND_FIXED, 0, err);
       }
   for (int a = 0; a < 3; a++) {
     free(c[a]);
@@ -195,7 +163,7 @@ enum wl_status wl_scene_box3d_sides(struct wl_scene *sc, const double *xz, int n
       for (int i = 0; i < n && st == WL_OK; i++) {
         const double off = (k + 0.5) * sc->dp;
         const double q[3] = {xz[2 * i], side ? y1 + off : y0 - off, xz[2 * i + 1]};
-        st = push_bound(sc, q, err);
+        st = wl_scene_push(sc, 0, q, sc->k.rho0, WL_KIND_FIXED, 0, err);
       }
   return st;
 }

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "wallload/scene.h"
+#include "internal.h"
 #include "wallload/sph.h"
 
 /* Tolerance of lattice tests, relative to dp: points exactly on a face are
@@ -41,8 +42,8 @@ double wl_scene_rho_hydro(const struct wl_sph_const *k, double depth) {
 }
 
 /* Append one particle to group g (0 boundary, 1 fluid). */
-static enum wl_status push(struct wl_scene *sc, int g, const double *x, double rho, int kind,
-                           int body, struct wl_error *err) {
+enum wl_status wl_scene_push(struct wl_scene *sc, int g, const double *x, double rho, int kind,
+                             int body, struct wl_error *err) {
   const int dim = sc->dim;
   if (sc->n[g] == sc->cap[g]) {
     const int cap = sc->cap[g] ? 2 * sc->cap[g] : 1024;
@@ -134,7 +135,7 @@ enum wl_status wl_scene_fluid_block(struct wl_scene *sc, const double *lo, const
         x[0] = x0[0] + ix * dp;
         if (dim == 3) x[1] = x0[1] + iy * dp;
         x[dim - 1] = zc[iz];
-        st = push(sc, 1, x, rc[iz], WL_KIND_FLUID, 0, err);
+        st = wl_scene_push(sc, 1, x, rc[iz], WL_KIND_FLUID, 0, err);
       }
   free(zc);
   return st;
@@ -222,7 +223,7 @@ enum wl_status wl_scene_fluid_surface(struct wl_scene *sc, double x0, double x1,
         x[0] = px;
         if (dim == 3) x[1] = ys + iy * dp;
         x[dim - 1] = zc[c];
-        st = push(sc, 1, x, rc[c], WL_KIND_FLUID, 0, err);
+        st = wl_scene_push(sc, 1, x, rc[c], WL_KIND_FLUID, 0, err);
       }
   }
   free(zc);
@@ -301,7 +302,7 @@ enum wl_status wl_scene_boundary_polyline(struct wl_scene *sc, const double *x, 
         q[dim - 1] = p0[1] + s * (p1[1] - p0[1]);
         for (int iy = 0; iy < ny && st == WL_OK; iy++) {
           if (dim == 3) q[1] = ys + iy * dy;
-          st = push(sc, 0, q, sc->k.rho0, kind, body, err);
+          st = wl_scene_push(sc, 0, q, sc->k.rho0, kind, body, err);
         }
       }
     }
