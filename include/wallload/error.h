@@ -54,4 +54,13 @@ int wl_error_exit_code(enum wl_status status);
 /* Short name of a status ("bad input", "unstable", ...). */
 const char *wl_error_status_name(enum wl_status status);
 
+/* "Did you mean" support for input errors. Levenshtein distance between
+ * two names, ignoring case; names of 64 characters or more count as 99
+ * (never suggested). */
+int wl_error_edit_distance(const char *a, const char *b);
+
+/* 1 when a name at edit distance d from what the user wrote is close enough
+ * to suggest: at most 2 edits, or at most a third of the name. */
+int wl_error_close_enough(int d, const char *name);
+
 #endif

@@ -2,6 +2,7 @@
  * breakpoint on wl_error_set to catch any of them). */
 #include "wallload/error.h"
 
+#include <ctype.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -57,3 +58,22 @@ const char *wl_error_status_name(enum wl_status status) {
   }
   return "unknown";
 }
+
+int wl_error_edit_distance(const char *a, const char *b) {
+  const size_t la = strlen(a), lb = strlen(b);
+  if (la > 63 || lb > 63) return 99;
+  int d[64][64];
+  for (size_t i = 0; i <= la; i++) d[i][0] = (int)i;
+  for (size_t j = 0; j <= lb; j++) d[0][j] = (int)j;
+  for (size_t i = 1; i <= la; i++)
+    for (size_t j = 1; j <= lb; j++) {
+      const int cost = tolower((unsigned char)a[i - 1]) != tolower((unsigned char)b[j - 1]);
+      int m = d[i - 1][j] + 1;
+      if (d[i][j - 1] + 1 < m) m = d[i][j - 1] + 1;
+      if (d[i - 1][j - 1] + cost < m) m = d[i - 1][j - 1] + cost;
+      d[i][j] = m;
+    }
+  return d[la][lb];
+}
+
+int wl_error_close_enough(int d, const char *name) { return d <= 2 || d * 3 <= (int)strlen(name); }

@@ -108,23 +108,6 @@ static const char *node_kind(const yaml_node_t *n) {
 
 static const char *scalar(const yaml_node_t *n) { return (const char *)n->data.scalar.value; }
 
-/* Levenshtein distance, for "did you mean". Names are short. */
-static int edit_distance(const char *a, const char *b) {
-  size_t la = strlen(a), lb = strlen(b);
-  if (la > 63 || lb > 63) return 99;
-  int dist[64][64];
-  for (size_t i = 0; i <= la; i++) dist[i][0] = (int)i;
-  for (size_t j = 0; j <= lb; j++) dist[0][j] = (int)j;
-  for (size_t i = 1; i <= la; i++)
-    for (size_t j = 1; j <= lb; j++) {
-      int cost = tolower((unsigned char)a[i - 1]) != tolower((unsigned char)b[j - 1]);
-      int m = dist[i - 1][j] + 1;
-      if (dist[i][j - 1] + 1 < m) m = dist[i][j - 1] + 1;
-      if (dist[i - 1][j - 1] + cost < m) m = dist[i - 1][j - 1] + cost;
-      dist[i][j] = m;
-    }
-  return dist[la][lb];
-}
 
 /* "a, b, c" of names[i] for the bits set in `mask` (all when mask is ~0). */
 static void join_names(const char *const *names, int n, unsigned mask, char *buf, size_t size) {
@@ -144,10 +127,10 @@ static void suggest(const char *found, const char *const *names, int n, unsigned
   int best = -1, best_d = 99;
   for (int i = 0; i < n && names[i]; i++) {
     if (!(mask & BIT(i))) continue;
-    int dd = edit_distance(found, names[i]);
+    int dd = wl_error_edit_distance(found, names[i]);
     if (dd < best_d) best_d = dd, best = i;
   }
-  if (best >= 0 && (best_d <= 2 || best_d * 3 <= (int)strlen(names[best])))
+  if (best >= 0 && wl_error_close_enough(best_d, names[best]))
     snprintf(buf, size, " (did you mean '%s'?)", names[best]);
   else
     buf[0] = '\0';

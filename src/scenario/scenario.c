@@ -40,23 +40,6 @@ static const char *node_kind(const yaml_node_t *n) {
   }
 }
 
-/* Levenshtein distance, for "did you mean". Keys are short. */
-static int edit_distance(const char *a, const char *b) {
-  size_t la = strlen(a), lb = strlen(b);
-  if (la > 63 || lb > 63) return 99;
-  int d[64][64];
-  for (size_t i = 0; i <= la; i++) d[i][0] = (int)i;
-  for (size_t j = 0; j <= lb; j++) d[0][j] = (int)j;
-  for (size_t i = 1; i <= la; i++)
-    for (size_t j = 1; j <= lb; j++) {
-      int cost = tolower((unsigned char)a[i - 1]) != tolower((unsigned char)b[j - 1]);
-      int m = d[i - 1][j] + 1;
-      if (d[i][j - 1] + 1 < m) m = d[i][j - 1] + 1;
-      if (d[i - 1][j - 1] + cost < m) m = d[i - 1][j - 1] + cost;
-      d[i][j] = m;
-    }
-  return d[la][lb];
-}
 
 static void list_keys(const struct wl_key *keys, char *buf, size_t size) {
   buf[0] = '\0';
@@ -294,10 +277,10 @@ static enum wl_status parse_map(struct ctx *c, const struct wl_key *keys, void *
       list_keys(keys, names, sizeof names);
       int best = -1, best_d = 99;
       for (int i = 0; i < n_keys; i++) {
-        int d = edit_distance(name, keys[i].name);
+        int d = wl_error_edit_distance(name, keys[i].name);
         if (d < best_d) best_d = d, best = i;
       }
-      int close = best >= 0 && (best_d <= 2 || best_d * 3 <= (int)strlen(keys[best].name));
+      int close = best >= 0 && wl_error_close_enough(best_d, keys[best].name);
       if (close)
         snprintf(msg, sizeof msg, "unknown key '%s'; did you mean '%s'? valid keys here: %s", name,
                  keys[best].name, names);
