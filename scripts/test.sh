@@ -4,18 +4,20 @@
 # GPU tests report "skipped" where no GPU is present.
 #   scripts/test.sh --accuracy   runs only the accuracy tests (label "accuracy"),
 #                                the validation cases the solver does not meet yet.
+#   scripts/test.sh --extended   runs only the extended tests (label "extended"):
+#                                passing checks too long for the default suite.
 set -eu
 cd "$(dirname "$0")/.."
 jobs=$(nproc)
-if [ "${1:-}" = "--accuracy" ]; then
+if [ "${1:-}" = "--accuracy" ] || [ "${1:-}" = "--extended" ]; then
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
   cmake --build build -j "$jobs"
-  exec ctest --test-dir build --output-on-failure -L accuracy
+  exec ctest --test-dir build --output-on-failure -L "${1#--}"
 fi
 echo "== Release build and tests"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j "$jobs"
-ctest --test-dir build --output-on-failure -j "$jobs" -LE accuracy
+ctest --test-dir build --output-on-failure -j "$jobs" -LE "accuracy|extended"
 echo "== AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DWL_SANITIZE=ON >/dev/null
 cmake --build build-asan -j "$jobs"
@@ -23,4 +25,4 @@ cmake --build build-asan -j "$jobs"
 # and the long physics runs (label "long") are left to the Release build.
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   LSAN_OPTIONS=suppressions="$PWD/tests/lsan.supp" \
-  WL_TEST_QUICK=1 ctest --test-dir build-asan --output-on-failure -j "$jobs" -LE "accuracy|long"
+  WL_TEST_QUICK=1 ctest --test-dir build-asan --output-on-failure -j "$jobs" -LE "accuracy|extended|long"
