@@ -384,6 +384,10 @@ enum wl_status wl_assess_case(const struct wl_scenario *s, const struct wl_plan 
   c->static_force = c->flume.static_force;
   c->static_moment = c->flume.static_moment;
   c->depth_wall = c->flume.depth_wall;
+  c->peak_from = load == WL_CASE_SOLITARY    ? 0.5 * plan->solitary.arrival_time
+                 : load == WL_CASE_EXPLOSION ? 0.5 * plan->explosion.arrival_time
+                                             : 0.0;
+  if (!(c->peak_from > 0) || c->peak_from > 0.5 * c->t_end) c->peak_from = 0.0;
   c->rec.n_gauges = c->flume.n_gauges;
   c->rec.n_probes = c->flume.n_probes;
   const struct wl_backend_ops *ops;

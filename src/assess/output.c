@@ -344,6 +344,8 @@ static enum wl_status write_summary(const struct wl_scenario *s, const struct wl
     jval(&t, "rise_time", l->force_peak.rise_time, "s", "10 % of the dynamic peak to the peak", 0);
     jval(&t, "duration", l->force_peak.duration, "s", "dynamic force above 10 % of its peak", 0);
     jval(&t, "filter_cutoff", l->cutoff, "Hz", "c0/(8 d)", 0);
+    jval(&t, "peaks_from", c->peak_from, "s",
+         "peaks searched from half the wave's estimated arrival at the wall", 0);
     jval(&t, "dp", c->dp, "m", NULL, 0);
     jval(&t, "smoothing_length", c->h, "m", NULL, 0);
     jval(&t, "c0", c->c0, "m/s", NULL, 0);
@@ -486,6 +488,7 @@ static enum wl_status write_case_h5(struct wl_store *h5, const struct wl_case_re
       {"end_time", c->t_end, "s"},
       {"time_reached", c->t_reached, "s"},
       {"filter_cutoff", l->cutoff, "Hz"},
+      {"peaks_from", c->peak_from, "s"},
       {"static_force", c->static_force, "N/m"},
       {"static_moment", c->static_moment, "N m/m"},
       {"wall_x", f->x_wall, "m"},

@@ -89,9 +89,12 @@ enum wl_status case_loads_compute(struct wl_case_result *c, struct wl_error *err
   wl_loads_cumulative(r->t, net, n, l->impulse_bound);
   free(net);
   l->impulse_total = l->impulse[n - 1];
-  wl_loads_peak(r->t, l->force_filtered, n, c->static_force, &l->force_peak);
-  wl_loads_peak(r->t, l->moment_filtered, n, c->static_moment, &l->moment_peak);
-  wl_loads_peak(r->t, l->force_bound_filtered, n, c->static_force, &l->force_bound_peak);
+  size_t k0 = 0; /* peaks from c->peak_from on (assess.h) */
+  while (k0 + 1 < n && r->t[k0] < c->peak_from) k0++;
+  wl_loads_peak(r->t + k0, l->force_filtered + k0, n - k0, c->static_force, &l->force_peak);
+  wl_loads_peak(r->t + k0, l->moment_filtered + k0, n - k0, c->static_moment, &l->moment_peak);
+  wl_loads_peak(r->t + k0, l->force_bound_filtered + k0, n - k0, c->static_force,
+                &l->force_bound_peak);
   /* run-up: the last gauge is the one at the wall face */
   int gw = r->n_gauges - 1;
   l->runup = -INFINITY;
