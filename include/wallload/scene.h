@@ -114,6 +114,9 @@ typedef double (*wl_scene_dp_fn)(const double *x, void *user);
  * hydrostatic (a solitary wave's, from Bernoulli's equation). */
 void wl_scene_fluid_add_pressure(struct wl_scene *sc, wl_scene_dp_fn fn, void *user);
 
+/* Distance [m] from (x, z) to the polyline of n vertices (bx, bz) [m]. */
+double wl_scene_polyline_dist(const double *bx, const double *bz, int n, double x, double z);
+
 /* Emit the particles into out (allocated here with wl_particles_alloc, state
  * fields only; clear it with wl_particles_clear): boundary particles first,
  * then fluid, ids 0.. in that order. WL_EINPUT when there is no particle,

@@ -105,19 +105,6 @@ static void set_params(const struct wl_scenario *s, const struct wl_plan *plan, 
   if (!s->run.threads.is_auto) cfg->n_threads = (int)s->run.threads.q.si;
 }
 
-/* Distance from (x, z) to the polyline. */
-static double polyline_dist(const double *vx, const double *vz, int n, double x, double z) {
-  double best = INFINITY;
-  for (int i = 0; i + 1 < n; i++) {
-    const double tx = vx[i + 1] - vx[i], tz = vz[i + 1] - vz[i];
-    const double len2 = tx * tx + tz * tz;
-    double u = len2 > 0 ? ((x - vx[i]) * tx + (z - vz[i]) * tz) / len2 : 0;
-    u = u < 0 ? 0 : u > 1 ? 1 : u;
-    best = fmin(best, hypot(x - (vx[i] + u * tx), z - (vz[i] + u * tz)));
-  }
-  return best;
-}
-
 /* 3D side walls: the (x, z) lattice points inside the flume's profile (the
  * boundary polyline vx, vz: above the bed, seaward of the wall face or
  * above the land, below z_top, between its end faces) at least dp/2 from
@@ -139,7 +126,7 @@ static enum wl_status side_walls(struct wl_scene *sc, const double *vx, const do
     const double floor_z = x < xw ? wl_scenario_bed_z(s, x) : z_crest;
     for (int j = 0; j < nz; j++) {
       const double z = zmin + (j + 0.5) * dp;
-      if (z <= floor_z || polyline_dist(vx, vz, nv, x, z) < 0.5 * dp - tol) continue;
+      if (z <= floor_z || wl_scene_polyline_dist(vx, vz, nv, x, z) < 0.5 * dp - tol) continue;
       xz[2 * n] = x;
       xz[2 * n + 1] = z;
       n++;

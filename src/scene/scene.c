@@ -151,8 +151,7 @@ static double bed_at(const double *bx, const double *bz, int n, double x) {
   return bz[i] + s * (bz[i + 1] - bz[i]);
 }
 
-/* Distance from (x, z) to the polyline. */
-static double polyline_dist(const double *bx, const double *bz, int n, double x, double z) {
+double wl_scene_polyline_dist(const double *bx, const double *bz, int n, double x, double z) {
   double best = INFINITY;
   for (int i = 0; i + 1 < n; i++) {
     const double tx = bx[i + 1] - bx[i], tz = bz[i + 1] - bz[i];
@@ -200,7 +199,7 @@ enum wl_status wl_scene_fluid_surface(struct wl_scene *sc, double x0, double x1,
     for (long j = 0; zmin + (j + 0.5) * dp < e; j++) {
       const double pz = zmin + (j + 0.5) * dp;
       if (pz <= zb) continue;
-      if (n_bed > 1 && polyline_dist(bed_x, bed_z, n_bed, px, pz) < 0.5 * dp * (1 - LATTICE_TOL))
+      if (n_bed > 1 && wl_scene_polyline_dist(bed_x, bed_z, n_bed, px, pz) < 0.5 * dp * (1 - LATTICE_TOL))
         continue;
       if (n_bed == 1 && pz - zb < 0.5 * dp * (1 - LATTICE_TOL)) continue;
       if (first < 0) first = j;
