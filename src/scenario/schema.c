@@ -124,7 +124,7 @@ static const struct wl_key run_keys[] = {
     {"backend", KT_ENUM, WL_DIM_NONE, OFF(run.backend), backend_choices, NONE, NONE, 0, 0, "auto",
      NULL, NO_FLAG, 0, "where the solver runs"},
     {"threads", KT_INT_OR_AUTO, WL_DIM_NONE, OFF(run.threads), NULL, 1, 4096, 0, 0, "auto", NULL,
-     NO_FLAG, 0, "CPU threads, or auto (all cores)"},
+     NO_FLAG, 0, "CPU threads, or auto (all cores, at most one per 4000 particles)"},
     {0}};
 
 static const struct wl_key numerics_keys[] = {
