@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "testutil.h"
+#include "wallload/flume.h"
 #include "wallload/plan.h"
 
 static int make(const char *text, struct wl_scenario *s, struct wl_plan *p) {
@@ -102,5 +103,33 @@ int main(void) {
       printf("FAIL seawall.yaml: %s\n", err.msg), wl_test_failures++;
     wl_scenario_clear(&sw);
   }
+  /* wl_plan_default_numerics (what validate's scenario-less runs use) is
+   * what a scenario without a numerics block gives the solver: the flume
+   * built from the scenario path, field by field. */
+  const char *plain = "scenario: t\nwater: {depth: 0.2 m}\ndomain: {length: 2 m}\n"
+                      "wall: {x: 1.5 m, height: 0.4 m}\nloads: {solitary: {height: 0.04 m}}\n"
+                      "resolution: {dp: 0.02 m}\n";
+  if (make(plain, &s, &p)) {
+    struct wl_flume f = {0};
+    struct wl_error err;
+    wl_error_clear(&err);
+    if (wl_flume_build(&s, &p, WL_CASE_SOLITARY, &f, &err) == WL_OK) {
+      const struct wl_sph_params *a = &f.cfg.prm;
+      struct wl_sph_params b;
+      wl_sph_params_default(&b, 2, a->dp, a->h_max);
+      wl_plan_default_numerics(&b);
+      CHECK_ABS(b.coefh, a->coefh, 0, "default numerics: coefh as the scenario's auto");
+      CHECK_TRUE(b.visc == a->visc && b.nu == a->nu && b.alpha == a->alpha,
+                 "default numerics: viscosity model, nu and alpha as the scenario's");
+      CHECK_TRUE(b.coefsound == a->coefsound && b.cfl == a->cfl && b.delta == a->delta &&
+                     b.ddt == a->ddt && b.visc_bound_factor == a->visc_bound_factor,
+                 "default numerics: coefsound, CFL, density diffusion as the scenario's");
+    } else {
+      printf("FAIL flume: %s\n", err.msg);
+      wl_test_failures++;
+    }
+    wl_flume_clear(&f);
+  }
+  wl_scenario_clear(&s);
   return TEST_RESULT();
 }

@@ -30,6 +30,7 @@
 #include "wallload/error.h"
 #include "wallload/explosion.h"
 #include "wallload/scenario.h"
+#include "wallload/sph/params.h"
 #include "wallload/waves.h"
 
 enum wl_explosion_source { WL_SOURCE_CHARGE, WL_SOURCE_ENERGY, WL_SOURCE_SOLITARY, WL_SOURCE_CRATER };
@@ -110,6 +111,15 @@ struct wl_plan {
  * h = 1.73 dp. */
 #define WL_PLAN_COEFH_2D 1.2
 #define WL_PLAN_COEFH_3D 1.0
+
+/* wallload's default numerics, as a scenario without a numerics block runs
+ * them (coefh auto, laminar viscosity with water's nu 1e-6 m^2/s; the rest
+ * as wl_sph_params_default), applied to prm for its prm->dim. For runs
+ * built without a scenario (the tanks and dam breaks of `wallload
+ * validate`), so that they measure what `assess` runs; test_plan checks
+ * it against the scenario path. wl_sph_params_default itself keeps
+ * DualSPHysics' settings, the benchmarks' common ground. */
+void wl_plan_default_numerics(struct wl_sph_params *prm);
 
 /* Reference throughput used for runtime estimates [particle-steps/s]; the
  * measured values are in BENCHMARKS.md. */
