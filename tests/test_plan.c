@@ -103,6 +103,46 @@ int main(void) {
       printf("FAIL seawall.yaml: %s\n", err.msg), wl_test_failures++;
     wl_scenario_clear(&sw);
   }
+  /* domain.dimensions auto (plan_dims): 2D unless an axisymmetric crater
+   * is narrower than the flume. Seed 001: 32 lb gives R0 = 8.28 m (Van
+   * Dorn, 2 R0 = 16.56 m), so a 16 m flume is spanned by the crater (2D)
+   * and a 17 m one is not (3D); a plane lip or a solitary wave is 2D. */
+  {
+    struct {
+      const char *domain, *load;
+      int dims, symmetry;
+      const char *why;
+    } cases[] = {
+        {"{length: 45 m, width: 17 m}", "explosion: {charge: 32 lb, at: 15 m}", 3, 1,
+         "32 lb in a 17 m flume: 3D (2 R0 = 16.56 m < 17 m), 34 rows: symmetry plane"},
+        {"{length: 45 m, width: 16 m}", "explosion: {charge: 32 lb, at: 15 m}", 2, 0,
+         "32 lb in a 16 m flume: 2D (the crater spans it)"},
+        {"{length: 45 m, width: 17 m}", "explosion: {charge: 32 lb, at: 15 m, lip_form: plane}", 2,
+         0, "a plane crater (line source): 2D"},
+        {"{length: 45 m, width: 17 m}", "solitary: {height: 0.5 m}", 2, 0, "a solitary wave: 2D"},
+        {"{length: 45 m, width: 3 m}", "explosion: {eta0: 0.5 m, r0: 1 m, at: 15 m}", 3, 1,
+         "eta0 + r0 (2 r0 = 2 m) in a 3 m flume: 3D, 3 m = 6 rows of dp = 0.5 m: symmetry plane"},
+        {"{length: 45 m, width: 3.5 m}", "explosion: {eta0: 0.5 m, r0: 1 m, at: 15 m}", 3, 0,
+         "... a 3.5 m flume = 7 rows: no symmetry plane (auto)"},
+        {"{length: 45 m, width: 3.5 m, symmetry: centreline}",
+         "explosion: {eta0: 0.5 m, r0: 1 m, at: 15 m}", 3, 1, "... unless centreline is asked for"},
+        {"{length: 45 m, width: 3 m, dimensions: 2}", "explosion: {eta0: 0.5 m, r0: 1 m, at: 15 m}",
+         2, 0, "dimensions given: as given"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+      char text[512];
+      snprintf(text, sizeof text,
+               "scenario: t\nwater: {depth: 5 m}\ndomain: %s\nwall: {x: 40 m, height: 10 m}\n"
+               "loads: {%s}\nresolution: {dp: 0.5 m}\n",
+               cases[i].domain, cases[i].load);
+      if (make(text, &s, &p)) {
+        printf("  %s: %dD (%s), symmetry %d\n", cases[i].why, p.dims, p.dims_reason, p.symmetry);
+        CHECK_TRUE(p.dims == cases[i].dims && p.symmetry == cases[i].symmetry, cases[i].why);
+      }
+      wl_scenario_clear(&s);
+    }
+  }
+
   /* wl_plan_default_numerics (what validate's scenario-less runs use) is
    * what a scenario without a numerics block gives the solver: the flume
    * built from the scenario path, field by field. */

@@ -30,7 +30,15 @@
  * penetration guard covers the extruded faces (bed, ends, seawall, land);
  * a particle that escapes through a side wall is caught by the domain box
  * (its y bounds lie just behind the side walls' layers). The seawall body
- * is the extruded polyline behind the face plane (side walls excluded). */
+ * is the extruded polyline behind the face plane (side walls excluded).
+ *
+ * Symmetry plane (plan.symmetry, domain.symmetry auto or centreline): the
+ * scene is symmetric about the flume's centreline, so only half of it is
+ * built: y in [0, width/2], the plane y = 0 being the centreline (the
+ * solver mirrors the particles beside it, sph/params.h), one side wall at
+ * y = width/2. `width` is then the modelled half; gauges and the axis of
+ * an axisymmetric crater stand on the plane; forces per metre are the
+ * modelled half's over its width, as before. */
 #ifndef WALLLOAD_FLUME_H
 #define WALLLOAD_FLUME_H
 
@@ -51,7 +59,9 @@ enum { WL_FLUME_MAX_PROBES = 1000, WL_FLUME_PADDLE_SAMPLES = 4001, WL_FLUME_MAX_
 struct wl_flume {
   enum wl_load_case load;
   int dims;                        /* 2 or 3 */
-  double width;                    /* 3D: modelled flume width [m] (0 in 2D) */
+  double width;                    /* 3D: modelled flume width [m] (0 in 2D); half the
+                                      flume's with a symmetry plane */
+  int symmetry;                    /* 3D: symmetry plane at y = 0, the flume's centreline */
   struct wl_sph_config cfg;        /* parameters, domain box, walls for the guard */
   struct wl_particles particles;   /* initial state (state fields only); owned */
   int has_paddle;

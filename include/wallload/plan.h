@@ -87,6 +87,9 @@ struct wl_plan {
   struct wl_plan_explosion explosion;
   double dp;                        /* particle spacing [m] */
   double coefh;                     /* resolved numerics.coefh [-] (auto: WL_PLAN_COEFH_2D/3D) */
+  char dims_reason[160];            /* why dims: given, or auto's reason */
+  int symmetry;                     /* 3D: half the width modelled, a symmetry plane on the
+                                       centreline (domain.symmetry auto or centreline) */
   double h_sml;                     /* smoothing length h = coefh sqrt(dim) dp [m] */
   double c0;                        /* numerical speed of sound [m/s] */
   double dt;                        /* estimated time step, CFL condition [s] */

@@ -47,6 +47,10 @@ enum wl_viscosity_choice { WL_VISCOSITY_ARTIFICIAL, WL_VISCOSITY_LAMINAR };
 /* What closes the flume behind the seawall: a wall, or a damping zone over
  * the far half of the land that brings overtopping water to rest. */
 enum wl_far_end_choice { WL_FAR_END_WALL, WL_FAR_END_DAMPING };
+/* 3D: whether half the width is modelled, with a symmetry plane on the
+ * centreline (auto: when the width is an even number of rows of dp; every
+ * flume scene is symmetric about the centreline). */
+enum wl_symmetry_choice { WL_SYMMETRY_AUTO, WL_SYMMETRY_NONE, WL_SYMMETRY_CENTRELINE };
 
 struct wl_scenario_bed {
   struct wl_scenario_value from;  /* x where this segment starts [m] */
@@ -68,7 +72,7 @@ struct wl_scenario {
     struct wl_scenario_value depth, density, gravity;
   } water;
   struct {
-    struct wl_scenario_value dimensions, length, width, far_end;
+    struct wl_scenario_value dimensions, length, width, far_end, symmetry;
   } domain;
   int n_bed;
   struct wl_scenario_bed bed[WL_SCENARIO_MAX_BED];

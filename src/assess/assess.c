@@ -66,23 +66,27 @@ static enum wl_status boundary_force(struct run_ctx *rc, const struct wl_particl
     }
   }
   const int laminar = k->visc == WL_SPH_VISC_LAMINAR;
+  /* with a symmetry plane, the modelled half of the wall also feels the
+   * mirror images of the fluid beside the plane (the second pass) */
+  const int passes = d3 && k->sym ? 2 : 1;
   double fx = 0.0, my = 0.0;
   for (int j = 0; j < p->n_bound; j++) {
     if (p->body[j] != WL_FLUME_BODY_WALL) continue;
     wl_real rho_j = p->rho[j], p_j = wl_sph_eos_p(k, rho_j);
-    for (size_t a = 0; a < n_near; a++) {
-      int i = rc->near[a];
+    for (size_t a = 0; a < n_near * (size_t)passes; a++) {
+      const int i = rc->near[a % n_near], mirror = a >= n_near;
       wl_real dx = (wl_real)(p->pos[0][i] - p->pos[0][j]);
       wl_real dz = (wl_real)(p->pos[az][i] - p->pos[az][j]);
       wl_real r2 = dx * dx + dz * dz, dy = 0;
       if (d3) {
-        dy = (wl_real)(p->pos[1][i] - p->pos[1][j]);
+        const double yi = mirror ? 2.0 * k->sym_y - p->pos[1][i] : p->pos[1][i];
+        dy = (wl_real)(yi - p->pos[1][j]);
         r2 += dy * dy;
       }
       if (r2 >= k->support2) continue;
       wl_real vx = p->vel[0][i] - p->vel[0][j], vz = p->vel[az][i] - p->vel[az][j];
       wl_real rho_i = p->rho[i], p_i = wl_sph_eos_p(k, rho_i), rv = dx * vx + dz * vz;
-      if (d3) rv += dy * (p->vel[1][i] - p->vel[1][j]);
+      if (d3) rv += dy * ((mirror ? -p->vel[1][i] : p->vel[1][i]) - p->vel[1][j]);
       wl_real inv_rho_j, vol_j;
       wl_sph_pair_j(k, rho_j, &inv_rho_j, &vol_j);
       /* the solver's own fluid-boundary pair term (no density diffusion) */

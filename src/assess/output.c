@@ -498,9 +498,12 @@ static enum wl_status write_case_h5(struct wl_store *h5, const struct wl_case_re
   };
   for (size_t i = 0; !st && i < sizeof attrs / sizeof attrs[0]; i++)
     st = wl_store_attr_double(h5, g, attrs[i].name, attrs[i].v, attrs[i].unit, err);
-  /* 3D: the modelled flume width; the series stay per metre, per wall =
-   * per metre x width */
-  if (!st && f->dims == 3) st = wl_store_attr_double(h5, g, "width", f->width, "m", err);
+  /* 3D: the flume width (twice the modelled half with a symmetry plane);
+   * the series stay per metre, per wall = per metre x width */
+  if (!st && f->dims == 3)
+    st = wl_store_attr_double(h5, g, "width", (f->symmetry ? 2 : 1) * f->width, "m", err);
+  if (!st && f->dims == 3)
+    st = wl_store_attr_text(h5, g, "symmetry", f->symmetry ? "centreline" : "none", err);
   if (!st) st = wl_store_attr_text(h5, g, "status", status_word(c->status), err);
   if (!st && c->status != WL_OK) st = wl_store_attr_text(h5, g, "stopped", c->message, err);
   return st;

@@ -108,11 +108,13 @@ static void set_params(const struct wl_scenario *s, const struct wl_plan *plan, 
 /* 3D side walls: the (x, z) lattice points inside the flume's profile (the
  * boundary polyline vx, vz: above the bed, seaward of the wall face or
  * above the land, below z_top, between its end faces) at least dp/2 from
- * the polyline, as layers behind y = 0 and y = width (box3d.c). The
- * extruded polyline's layers fill the edges under them. */
+ * the polyline, as layers behind y = 0 (unless a symmetry plane stands
+ * there) and y = width (box3d.c). The extruded polyline's layers fill the
+ * edges under them. */
 static enum wl_status side_walls(struct wl_scene *sc, const double *vx, const double *vz, int nv,
                                  double xw, double z_crest, const struct wl_scenario *s,
-                                 double z_top, double width, int layers, struct wl_error *err) {
+                                 double z_top, double width, int symmetry, int layers,
+                                 struct wl_error *err) {
   const double dp = sc->dp, tol = 1e-9 * dp;
   const double x0 = vx[0], x1 = vx[nv - 1];
   double zmin = vz[0];
@@ -132,7 +134,7 @@ static enum wl_status side_walls(struct wl_scene *sc, const double *vx, const do
       n++;
     }
   }
-  enum wl_status st = wl_scene_box3d_sides(sc, xz, n, 0.0, width, layers, err);
+  enum wl_status st = wl_scene_box3d_sides(sc, xz, n, 0.0, width, !symmetry, layers, err);
   free(xz);
   return st;
 }
@@ -161,8 +163,9 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
   const double xw = s->wall.x.q.si;
   /* 3D: the width as a whole number of lattice rows (flume.h) */
   int n_rows = 1;
+  f->symmetry = dim == 3 && plan->symmetry;
   if (dim == 3) {
-    n_rows = (int)floor(s->domain.width.q.si / dp + 0.5);
+    n_rows = (int)floor(s->domain.width.q.si / (f->symmetry ? 2 : 1) / dp + 0.5);
     if (n_rows < 1) n_rows = 1;
     f->width = n_rows * dp;
   }
@@ -197,7 +200,7 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
     /* 3D: the plane shapes are long-crested, the others axisymmetric */
     surf.radial = dim == 3 && surf.shape != WL_CRATER_SHAPE_QUADRATIC_LIP_PLANE &&
                   surf.shape != WL_CRATER_SHAPE_QUARTIC_LIP_PLANE;
-    surf.yc = 0.5 * f->width;
+    surf.yc = f->symmetry ? 0.0 : 0.5 * f->width; /* on the centreline */
     rise = 2.0 * px->eta0; /* a lip of up to 2 eta0 (plane lip) */
     x_left = px->x_left;
     f->t_end = px->end_time;
@@ -239,6 +242,8 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
     f->cfg.prm.damp_x1 = x_end;
     f->cfg.prm.damp_rate = 10.0 * sqrt(plan->g * depth) / zone;
   }
+  f->cfg.prm.symmetry = f->symmetry; /* the plane y = 0 (flume.h) */
+  f->cfg.prm.sym_y = 0.0;
   struct wl_sph_const k;
   enum wl_status st = wl_sph_const_make(&f->cfg.prm, &k, err);
   if (st) return st;
@@ -252,14 +257,15 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
   f->cfg.lo[dim - 1] = -thick - 2 * dp;
   f->cfg.hi[dim - 1] = z_top + thick + 2 * dp;
   if (dim == 3) { /* just behind the side walls' layers (flume.h: guard) */
-    f->cfg.lo[1] = -thick - 2 * dp;
+    f->cfg.lo[1] = f->symmetry ? 0.0 : -thick - 2 * dp; /* the plane is the box's face */
     f->cfg.hi[1] = f->width + thick + 2 * dp;
   }
 
   /* 3D: the polyline's extrusion runs on the fluid's y lattice, (j + 1/2)
    * dp, from under the left side wall's last layer to under the right's */
   struct wl_scene sc;
-  wl_scene_init(&sc, &k, -(layers - 0.5) * dp, f->width + (layers - 0.5) * dp);
+  wl_scene_init(&sc, &k, f->symmetry ? 0.5 * dp : -(layers - 0.5) * dp,
+                f->width + (layers - 0.5) * dp);
 
   /* Fixed boundary: (left wall,) bed with its bathymetry, wall face, land
    * at crest level, end wall; one polyline so its corners are mitred. */
@@ -285,7 +291,8 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
   vx[nv] = x_end, vz[nv++] = z_top;
   st = wl_scene_boundary_polyline(&sc, vx, vz, nv, layers, WL_KIND_FIXED, 0, &f->cfg, err);
   const int n_extruded = sc.n[0]; /* the seawall body is tagged among these */
-  if (!st && dim == 3) st = side_walls(&sc, vx, vz, nv, xw, f->z_crest, s, z_top, f->width, layers, err);
+  if (!st && dim == 3) st = side_walls(&sc, vx, vz, nv, xw, f->z_crest, s, z_top, f->width, f->symmetry,
+                                       layers, err);
   if (!st && f->has_paddle) {
     /* 3D: the piston spans the fluid rows only, inside the side walls */
     sc.y0 = 0.5 * dp;
@@ -366,7 +373,7 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
     int ny = n_rows < 5 ? n_rows : 5;
     f->n_probe_y = ny;
     for (int j = 0; j < ny; j++) f->probe_y[j] = (j + 0.5) * f->width / ny;
-    f->gauge_y = 0.5 * f->width;
+    f->gauge_y = f->symmetry ? 0.0 : 0.5 * f->width; /* the centreline */
   }
   for (int i = 0; i < s->n_gauges; i++) {
     f->gauge_x[i] = s->gauges[i].x.q.si;

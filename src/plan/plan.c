@@ -50,6 +50,44 @@ static enum wl_crater_shape sim_shape(const struct wl_scenario *s, int dims) {
   }
 }
 
+/* domain.dimensions: as given, or auto: 2D unless the geometry needs the
+ * width. Solitary waves are long-crested and a plane crater (lip_form:
+ * plane, or an energy given per metre) is a line source: a flume section
+ * holds them. A point source, the crater of a charge or of eta0 + r0 with
+ * an axisymmetric form, narrower than the flume spreads its wave radially
+ * (amplitude falling as 1/sqrt(r) before the side walls confine it), which
+ * a section cannot: 3D. */
+static enum wl_status plan_dims(const struct wl_scenario *s, struct wl_plan *p,
+                                struct wl_error *err) {
+  if (!s->domain.dimensions.is_auto) {
+    p->dims = (int)s->domain.dimensions.q.si;
+    snprintf(p->dims_reason, sizeof p->dims_reason, "domain.dimensions");
+    return WL_OK;
+  }
+  p->dims = 2;
+  snprintf(p->dims_reason, sizeof p->dims_reason,
+           "auto: long-crested waves and plane craters need no width");
+  if (!s->explosion.present || s->explosion.lip_form.choice == WL_LIP_PLANE) return WL_OK;
+  double r0 = NAN;
+  if (s->explosion.charge.given) {
+    enum wl_status st = wl_explosion_vandorn_r0(s->explosion.charge.q.si, &r0, err);
+    if (st) return st;
+  } else if (s->explosion.eta0.given) {
+    r0 = s->explosion.r0.q.si;
+  }
+  const double width = s->domain.width.q.si;
+  if (isfinite(r0) && 2.0 * r0 < width) {
+    p->dims = 3;
+    snprintf(p->dims_reason, sizeof p->dims_reason,
+             "auto: the crater (2 R0 = %.3g m) is narrower than the flume (%.3g m), its wave "
+             "spreads radially", 2.0 * r0, width);
+  } else if (isfinite(r0)) {
+    snprintf(p->dims_reason, sizeof p->dims_reason,
+             "auto: the crater (2 R0 = %.3g m) spans the flume (%.3g m)", 2.0 * r0, width);
+  }
+  return WL_OK;
+}
+
 static enum wl_status plan_solitary(const struct wl_scenario *s, struct wl_plan *p,
                                     struct wl_error *err) {
   struct wl_plan_solitary *ps = &p->solitary;
@@ -274,7 +312,7 @@ static void case_cost(const struct wl_scenario *s, struct wl_plan *p, double x_l
   double wall_top = wl_scenario_bed_z(s, xw) + s->wall.height.q.si;
   /* bed and land to the end of the flume, left end and seawall faces */
   double perimeter = (xw + p->land_length - x_left) + 2.0 * wall_top + p->h;
-  double across = p->dims == 3 ? s->domain.width.q.si / p->dp : 1.0;
+  double across = p->dims == 3 ? s->domain.width.q.si / (p->symmetry ? 2 : 1) / p->dp : 1.0;
   *n_fluid = (long)(area / (p->dp * p->dp) * across);
   *n_boundary = (long)(BOUNDARY_LAYERS * perimeter / p->dp * across);
   if (p->dims == 3) {
@@ -286,8 +324,9 @@ static void case_cost(const struct wl_scenario *s, struct wl_plan *p, double x_l
     double profile = (x_end - x_left) * z_top - p->land_length * wall_top -
                      ((xw - x_left) * p->h - area);
     if (profile < 0) profile = 0;
-    *n_boundary = (long)(layers * perimeter / p->dp * (across + 2.0 * layers) +
-                         2.0 * layers * profile / (p->dp * p->dp));
+    const double sides = p->symmetry ? 1.0 : 2.0; /* side walls */
+    *n_boundary = (long)(layers * perimeter / p->dp * (across + sides * layers) +
+                         sides * layers * profile / (p->dp * p->dp));
   }
   *particle_steps = (double)(*n_fluid + *n_boundary) * t_end / p->dt;
 }
@@ -301,6 +340,15 @@ static void plan_resolution(const struct wl_scenario *s, struct wl_plan *p) {
   if (p->explosion.present) smallest = fmin(smallest, p->explosion.eta0);
   double ppH = s->resolution.particles_per_height.q.si;
   p->dp = s->resolution.dp.is_auto ? smallest / ppH : s->resolution.dp.q.si;
+  /* 3D: the symmetry plane on the centreline (every flume scene is
+   * symmetric about it). auto takes it when the width is an even number of
+   * lattice rows, so that the half is whole rows and the modelled flume is
+   * the one the full width would give; centreline takes it always (the
+   * width then rounds to an even number of rows). */
+  if (p->dims == 3 && s->domain.symmetry.choice != WL_SYMMETRY_NONE) {
+    const long rows = lround(s->domain.width.q.si / p->dp);
+    p->symmetry = s->domain.symmetry.choice == WL_SYMMETRY_CENTRELINE || (rows >= 2 && rows % 2 == 0);
+  }
   if (!s->resolution.dp.is_auto && smallest / p->dp < 4)
     note(p, "dp = %g m gives only %.1f particles over the smallest wave height (%.3g m)", p->dp,
          smallest / p->dp, smallest);
@@ -346,11 +394,14 @@ static void plan_resolution(const struct wl_scenario *s, struct wl_plan *p) {
 enum wl_status wl_plan_make(const struct wl_scenario *s, struct wl_plan *p,
                             struct wl_error *err) {
   memset(p, 0, sizeof *p);
-  p->dims = (int)s->domain.dimensions.q.si;
   p->h = s->water.depth.q.si;
   p->rho = s->water.density.q.si;
   p->g = s->water.gravity.q.si;
   enum wl_status st;
+  if ((st = plan_dims(s, p, err))) {
+    wl_error_prefix(err, "%s: domain.dimensions: ", s->path);
+    return st;
+  }
   if (s->solitary.present && (st = plan_solitary(s, p, err))) {
     wl_error_prefix(err, "%s: loads.solitary: ", s->path);
     return st;
@@ -442,7 +493,10 @@ void wl_plan_write(const struct wl_plan *p, FILE *out) {
             "flume modelled from x", px->x_left, px->n_fluid, px->n_boundary, px->particle_steps);
   }
   fprintf(out, "\nResolution and cost\n");
-  fprintf(out, "  %-36s %dD\n", "dimension", p->dims);
+  fprintf(out, "  %-36s %dD          (%s)\n", "dimension", p->dims, p->dims_reason);
+  if (p->dims == 3)
+    fprintf(out, "  %-36s %s\n", "symmetry plane",
+            p->symmetry ? "centreline (half the width modelled)" : "none (the whole width)");
   fprintf(out, "  %-36s %12.5g m\n", "particle spacing dp", p->dp);
   fprintf(out, "  %-36s %12.5g m      (h/dp = %.3g)\n", "smoothing length h", p->h_sml,
           p->h_sml / p->dp);

@@ -99,11 +99,18 @@ static enum wl_status set_scalar(struct ctx *c, const struct wl_key *k, const ch
         return WL_OK;
       }
     valid[0] = '\0';
+    int best = -1, best_d = 99; /* a likely misspelling (centerline for centreline) */
     for (int i = 0; k->choices[i]; i++) {
       size_t u = strlen(valid);
       snprintf(valid + u, sizeof valid - u, "%s%s", i ? ", " : "", k->choices[i]);
+      const int d = wl_error_edit_distance(text, k->choices[i]);
+      if (d < best_d) best_d = d, best = i;
     }
-    snprintf(msg, sizeof msg, "found '%s'; valid: %s", text, valid);
+    if (best >= 0 && wl_error_close_enough(best_d, k->choices[best]))
+      snprintf(msg, sizeof msg, "found '%s'; did you mean '%s'? valid: %s", text, k->choices[best],
+               valid);
+    else
+      snprintf(msg, sizeof msg, "found '%s'; valid: %s", text, valid);
     return n ? fail_at(c, n, path, msg, NULL)
              : wl_error_set(c->err, WL_EINPUT, "schema default for %s: %s", path, msg);
   }
@@ -405,6 +412,11 @@ static enum wl_status check_rules(struct ctx *c, struct wl_scenario *s) {
       return at_value(c, &s->bed[i].slope, key, msg);
     }
   }
+  if (s->domain.symmetry.choice == WL_SYMMETRY_CENTRELINE && !s->domain.dimensions.is_auto &&
+      s->domain.dimensions.q.si != 3)
+    return at_value(c, &s->domain.symmetry, "domain.symmetry",
+                    "centreline needs domain.dimensions: 3 (a 2D flume section has no width "
+                    "to halve); valid here: auto, none");
   double z_wall = wl_scenario_bed_z(s, xw);
   if (z_wall + s->wall.height.q.si <= h) {
     snprintf(msg, sizeof msg,

@@ -24,6 +24,7 @@ static const char *const backend_choices[] = {"auto", "cpu", "cuda", NULL};
 static const char *const viscosity_choices[] = {"artificial", "laminar", NULL};
 static const char *const onoff_choices[] = {"off", "on", NULL};
 static const char *const far_end_choices[] = {"wall", "damping", NULL};
+static const char *const symmetry_choices[] = {"auto", "none", "centreline", NULL};
 
 /* Ranges are in SI. lo_open/hi_open: the bound itself is excluded. */
 
@@ -37,8 +38,10 @@ static const struct wl_key water_keys[] = {
     {0}};
 
 static const struct wl_key domain_keys[] = {
-    {"dimensions", KT_INT, WL_DIM_NONE, OFF(domain.dimensions), NULL, 2, 3, 0, 0, "2", NULL,
-     NO_FLAG, 0, "2 (a flume section) or 3"},
+    {"dimensions", KT_INT_OR_AUTO, WL_DIM_NONE, OFF(domain.dimensions), NULL, 2, 3, 0, 0, "auto",
+     NULL, NO_FLAG, 0,
+     "2 (a flume section), 3, or auto (2D unless an explosion's axisymmetric crater, from a "
+     "charge or eta0 + r0, is narrower than the flume: 3D)"},
     {"length", KT_QTY, WL_DIM_LENGTH, OFF(domain.length), NULL, 0, NONE, 1, 0, NULL, NULL, NO_FLAG,
      1, "flume length from the paddle"},
     {"width", KT_QTY, WL_DIM_LENGTH, OFF(domain.width), NULL, 0, NONE, 1, 0, "1 m", NULL, NO_FLAG,
@@ -47,6 +50,12 @@ static const struct wl_key domain_keys[] = {
      "wall", NULL, NO_FLAG, 0,
      "what closes the flume behind the seawall: wall, or damping (overtopping water is brought "
      "to rest over the far half of the land)"},
+    {"symmetry", KT_ENUM, WL_DIM_NONE, OFF(domain.symmetry), symmetry_choices, NONE, NONE, 0, 0,
+     "auto", NULL, NO_FLAG, 0,
+     "3D: centreline (model half the width, a symmetry plane on the flume's centreline; the "
+     "width rounds to an even number of rows), none (the whole width), or auto (centreline when "
+     "the width is an even number of rows of dp: the flume, its wall and its load cases are "
+     "symmetric about it)"},
     {0}};
 
 static const struct wl_key wall_keys[] = {

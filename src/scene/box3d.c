@@ -149,7 +149,7 @@ enum wl_status wl_scene_box3d_solid(struct wl_scene *sc, const double *lo, const
 }
 
 enum wl_status wl_scene_box3d_sides(struct wl_scene *sc, const double *xz, int n, double y0,
-                                    double y1, int n_layers, struct wl_error *err) {
+                                    double y1, int with_low, int n_layers, struct wl_error *err) {
   if (sc->dim != 3)
     return wl_error_set(err, WL_EINPUT, "scene side walls: 3D only (the scene is %dD)", sc->dim);
   if (n_layers < 1 || n_layers > 16)
@@ -158,7 +158,7 @@ enum wl_status wl_scene_box3d_sides(struct wl_scene *sc, const double *xz, int n
     return wl_error_set(err, WL_EINPUT, "scene side walls: y range [%g, %g] m; need y0 < y1", y0,
                         y1);
   enum wl_status st = WL_OK;
-  for (int side = 0; side < 2; side++)
+  for (int side = with_low ? 0 : 1; side < 2; side++)
     for (int k = 0; k < n_layers; k++)
       for (int i = 0; i < n && st == WL_OK; i++) {
         const double off = (k + 0.5) * sc->dp;

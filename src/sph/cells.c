@@ -30,6 +30,10 @@ enum wl_status wl_sph_grid_make(const struct wl_sph_config *cfg, const struct wl
     return wl_error_set(err, WL_EINPUT, "the domain box needs %.3g cells of %g m (2h); at most %g: "
                         "shrink the box", cells, g->cell, (double)WL_SPH_CELLS_MAX);
   g->n_cells = (int)cells;
+  /* the mirror pass of sph/gather.h visits the cells of row iy = 0 */
+  if (k->sym && cfg->lo[1] != k->sym_y)
+    return wl_error_set(err, WL_EINPUT, "symmetry plane y = %g m must be the domain box's low y "
+                        "face (lo y = %g m)", k->sym_y, cfg->lo[1]);
   return WL_OK;
 }
 

@@ -65,6 +65,10 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
   if (prm->damp_rate > 0 && !(fabs(prm->damp_x1 - prm->damp_x0) > 0))
     return bad(err, "damp_x1", prm->damp_x1, "must differ from damp_x0 (the zone's length)");
 
+  if (prm->symmetry && prm->dim != 3)
+    return bad(err, "symmetry", prm->symmetry, "a symmetry plane needs dim 3 (the plane is y = sym_y)");
+  if (prm->symmetry && !isfinite(prm->sym_y)) return bad(err, "sym_y", prm->sym_y, "must be finite [m]");
+
   memset(k, 0, sizeof *k);
   const int dim = prm->dim;
   const double gamma = 7.0;
@@ -108,6 +112,8 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
     k->damp_inv_len = 1.0 / (prm->damp_x1 - prm->damp_x0);
     k->damp_rate = prm->damp_rate;
   }
+  k->sym = prm->symmetry ? 1 : 0;
+  k->sym_y = prm->symmetry ? prm->sym_y : 0.0;
   return WL_OK;
 }
 

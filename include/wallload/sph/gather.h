@@ -18,7 +18,13 @@
  * 2007, CMC 5:173): fluid i sums fluid and boundary neighbours; boundary i
  * sums fluid neighbours only, and only the continuity equation (its density
  * then gives the pressure that keeps fluid out). Boundary-boundary pairs are
- * never visited. Density diffusion acts between fluid pairs only. */
+ * never visited. Density diffusion acts between fluid pairs only.
+ *
+ * Symmetry plane (k->sym, 3D; sph/params.h): a particle in the first cell
+ * layer beside the plane also sums, after each group's ordinary rows, the
+ * mirror images of that group's particles in the layer (cells.h
+ * wl_sph_cell_rows_mirror) as if they were neighbours: the images of a
+ * symmetric scene's other half, so its half runs alone. */
 #ifndef WALLLOAD_SPH_GATHER_H
 #define WALLLOAD_SPH_GATHER_H
 
@@ -56,20 +62,23 @@ struct wl_sph_lanes {
   wl_real rho[WL_SPH_LANES], inv_rho[WL_SPH_LANES], p[WL_SPH_LANES];
 };
 
-/* Add the pairs of every lane with neighbours j in [j0, j1). dim, laminar,
- * want_ace, with_ddt, lanes: compile-time constants. av, lam: see
- * wl_sph_pair_eval. */
+/* Add the pairs of every lane with neighbours j in [j0, j1), or with their
+ * mirror images in the symmetry plane y = k->sym_y when mirror is 1 (3D).
+ * dim, laminar, want_ace, with_ddt, lanes: compile-time constants. av, lam:
+ * see wl_sph_pair_eval. */
 WL_HD static WL_INLINE void wl_sph_gather_range(const int dim, const int laminar,
                                                 const int want_ace, const int with_ddt,
                                                 const int lanes, const struct wl_sph_const *k,
                                                 const struct wl_sph_eval *e,
                                                 const struct wl_sph_lanes *in, int j0, int j1,
-                                                wl_real av, wl_real lam, struct wl_sph_acc *acc) {
+                                                wl_real av, wl_real lam, const int mirror,
+                                                struct wl_sph_acc *acc) {
   const int az = dim - 1; /* vertical axis */
   for (int j = j0; j < j1; j++) {
-    const double xj = e->pos[0][j], yj = dim == 3 ? e->pos[1][j] : 0.0, zj = e->pos[az][j];
-    const wl_real uxj = e->vel[0][j], uyj = dim == 3 ? e->vel[1][j] : WL_R(0.0),
-                  uzj = e->vel[az][j];
+    const double xj = e->pos[0][j], zj = e->pos[az][j];
+    const double yj = dim != 3 ? 0.0 : mirror ? 2.0 * k->sym_y - e->pos[1][j] : e->pos[1][j];
+    const wl_real uxj = e->vel[0][j], uzj = e->vel[az][j];
+    const wl_real uyj = dim != 3 ? WL_R(0.0) : mirror ? -e->vel[1][j] : e->vel[1][j];
     const wl_real rho_j = e->rho[j], p_j = e->press[j];
     wl_real inv_rho_j, vol_j;
     wl_sph_pair_j(k, rho_j, &inv_rho_j, &vol_j);
@@ -134,14 +143,23 @@ WL_HD static WL_INLINE void wl_sph_gather_block(const int dim, const int laminar
     for (int a = 0; a < WL_SPH_DIM_MAX; a++) f.a[a][l] = 0;
     f.cont[l] = f.ddt[l] = f.wsum[l] = f.visc[l] = 0;
   }
+  /* mirror rows: only next to a symmetry plane (3D) */
+  int mfirst[3], mlast[3];
+  const int nm = dim == 3 && k->sym ? wl_sph_cell_rows_mirror(g, cell, span, mfirst, mlast) : 0;
   if (fluid) {
     struct wl_sph_acc b = f; /* boundary neighbours */
     for (int r = 0; r < nr; r++)
       wl_sph_gather_range(dim, laminar, 1, 1, lanes, k, e, &in, bf[first[r]], bf[last[r] + 1],
-                          k->av_ff, k->lam_ff, &f);
+                          k->av_ff, k->lam_ff, 0, &f);
+    for (int r = 0; r < nm; r++)
+      wl_sph_gather_range(dim, laminar, 1, 1, lanes, k, e, &in, bf[mfirst[r]], bf[mlast[r] + 1],
+                          k->av_ff, k->lam_ff, 1, &f);
     for (int r = 0; r < nr; r++)
       wl_sph_gather_range(dim, laminar, 1, 0, lanes, k, e, &in, bb[first[r]], bb[last[r] + 1],
-                          k->av_fb, k->lam_fb, &b);
+                          k->av_fb, k->lam_fb, 0, &b);
+    for (int r = 0; r < nm; r++)
+      wl_sph_gather_range(dim, laminar, 1, 0, lanes, k, e, &in, bb[mfirst[r]], bb[mlast[r] + 1],
+                          k->av_fb, k->lam_fb, 1, &b);
     for (int l = 0; l < m; l++) {
       const int i = i0 + l;
       /* DDT2 (not Full): no diffusion for a fluid particle next to a wall */
@@ -155,7 +173,10 @@ WL_HD static WL_INLINE void wl_sph_gather_block(const int dim, const int laminar
   } else {
     for (int r = 0; r < nr; r++)
       wl_sph_gather_range(dim, laminar, 0, 0, lanes, k, e, &in, bf[first[r]], bf[last[r] + 1],
-                          k->av_fb, k->lam_fb, &f);
+                          k->av_fb, k->lam_fb, 0, &f);
+    for (int r = 0; r < nm; r++)
+      wl_sph_gather_range(dim, laminar, 0, 0, lanes, k, e, &in, bf[mfirst[r]], bf[mlast[r] + 1],
+                          k->av_fb, k->lam_fb, 1, &f);
     for (int l = 0; l < m; l++) {
       const int i = i0 + l;
       for (int a = 0; a < dim; a++) e->ace[a][i] = 0;

@@ -19,7 +19,11 @@
  * 127:37): after the corrector, a fluid particle's velocity is multiplied by
  * max(0, 1 - dt rate w^2), w = clamp((x - x0)/(x1 - x0), 0, 1), so waves and
  * overtopping water entering the zone come to rest there instead of
- * reflecting. */
+ * reflecting.
+ *
+ * Symmetry plane (sph/params.h): a fluid particle the corrector carries
+ * across y = sym_y is reflected back, its v_y reversed, as its mirror image
+ * would have entered. */
 #ifndef WALLLOAD_SPH_INTEGRATE_H
 #define WALLLOAD_SPH_INTEGRATE_H
 
@@ -66,6 +70,10 @@ WL_HD static WL_INLINE void wl_sph_correct(const int dim, const struct wl_sph_co
       const wl_real v = p->vel[a][i] + (wl_real)dt * p->ace[a][i];
       p->vel[a][i] = v;
       p->pos[a][i] = p->pos_h[a][i] + 0.5 * dt * (double)v;
+    }
+    if (dim == 3 && k->sym && p->pos[1][i] < k->sym_y) { /* back across the symmetry plane */
+      p->pos[1][i] = 2.0 * k->sym_y - p->pos[1][i];
+      p->vel[1][i] = -p->vel[1][i];
     }
     if (k->damp_rate > 0) {
       double w = (p->pos[0][i] - k->damp_x0) * k->damp_inv_len;

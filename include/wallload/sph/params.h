@@ -62,6 +62,14 @@ struct wl_sph_params {
    * damp_rate is 0 (the default). */
   double damp_x0, damp_x1;  /* [m] */
   double damp_rate;         /* full-strength relaxation rate [1/s]; 0: no zone */
+  /* Symmetry plane (3D only): the plane y = sym_y, which must be the low y
+   * face of the domain box (cfg->lo[1]), mirrors the particles beside it:
+   * each particle within the kernel support of the plane also sees the
+   * mirror images of its neighbours (y -> 2 sym_y - y, v_y -> -v_y), and
+   * a fluid particle that crosses it is reflected back. A scene symmetric
+   * about the plane then runs on its half. Off when symmetry is 0. */
+  int symmetry;
+  double sym_y;             /* [m] */
 };
 
 /* Derived constants (host computes, both backends read). Float members are
@@ -96,6 +104,8 @@ struct wl_sph_const {
   double penetration; /* guard: crossing depth [m] */
   double damp_x0, damp_inv_len, damp_rate; /* damping zone: start [m], 1/(x1 - x0) [1/m]
                                               (signed), rate [1/s] (0: none) */
+  int sym;            /* symmetry plane y = sym_y (the grid's low y face), 3D */
+  double sym_y;       /* [m] */
 };
 
 #endif

@@ -23,9 +23,32 @@ struct wl_sph_point_sums {
   double p;                 /* sum V_j W p_j [Pa] */
 };
 
+/* Add the fluid particles of sorted range [j0, j1) to o, or their mirror
+ * images in the symmetry plane (mirror 1, 3D). */
+WL_HD static inline void wl_sph_point_add(const int dim, const struct wl_sph_const *k,
+                                          double *const *pos, wl_real *const *vel,
+                                          const wl_real *rho, const wl_real *press,
+                                          const double *x, int j0, int j1, int mirror,
+                                          struct wl_sph_point_sums *o) {
+  for (int j = j0; j < j1; j++) {
+    wl_real r2 = 0;
+    for (int a = 0; a < dim; a++) {
+      const double xj = a == 1 && mirror ? 2.0 * k->sym_y - pos[a][j] : pos[a][j];
+      const wl_real d = (wl_real)(x[a] - xj);
+      r2 += d * d;
+    }
+    if (!(r2 < k->support2)) continue;
+    const double vw = (double)(k->mass / rho[j] * wl_sph_kernel_w(k, r2));
+    o->s += vw;
+    for (int a = 0; a < dim; a++) o->v[a] += vw * (a == 1 && mirror ? -vel[a][j] : vel[a][j]);
+    if (press) o->p += vw * press[j];
+  }
+}
+
 /* Sums at point x [m] over the fluid particles, using the sorted cell
- * ranges begin (2 n_cells + 1; the fluid group starts at n_cells). press
- * may be NULL (then p is 0). The cell of x is clamped into the grid. */
+ * ranges begin (2 n_cells + 1; the fluid group starts at n_cells), and over
+ * their mirror images beside a symmetry plane (k->sym). press may be NULL
+ * (then p is 0). The cell of x is clamped into the grid. */
 WL_HD static inline struct wl_sph_point_sums
 wl_sph_point_sum(const int dim, const struct wl_sph_const *k, const struct wl_sph_grid *g,
                  const int *begin, double *const *pos, wl_real *const *vel, const wl_real *rho,
@@ -36,19 +59,12 @@ wl_sph_point_sum(const int dim, const struct wl_sph_const *k, const struct wl_sp
   int first[9], last[9];
   const int nr = wl_sph_cell_rows(dim, g, c, 0, first, last);
   const int *const bf = begin + g->n_cells;
-  for (int r = 0; r < nr; r++) {
-    for (int j = bf[first[r]]; j < bf[last[r] + 1]; j++) {
-      wl_real r2 = 0;
-      for (int a = 0; a < dim; a++) {
-        const wl_real d = (wl_real)(x[a] - pos[a][j]);
-        r2 += d * d;
-      }
-      if (!(r2 < k->support2)) continue;
-      const double vw = (double)(k->mass / rho[j] * wl_sph_kernel_w(k, r2));
-      o.s += vw;
-      for (int a = 0; a < dim; a++) o.v[a] += vw * vel[a][j];
-      if (press) o.p += vw * press[j];
-    }
+  for (int r = 0; r < nr; r++)
+    wl_sph_point_add(dim, k, pos, vel, rho, press, x, bf[first[r]], bf[last[r] + 1], 0, &o);
+  if (dim == 3 && k->sym) {
+    const int nm = wl_sph_cell_rows_mirror(g, c, 0, first, last);
+    for (int r = 0; r < nm; r++)
+      wl_sph_point_add(dim, k, pos, vel, rho, press, x, bf[first[r]], bf[last[r] + 1], 1, &o);
   }
   return o;
 }
