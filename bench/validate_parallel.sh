@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# validate_parallel.sh: every `wallload validate` case at once, each its own
+# validate_parallel.sh: `wallload validate` cases side by side, each its own
 # process with one thread (the cases are small; one thread each fills a
 # many-core machine with no barrier overhead), for reference/RESULTS.md.
-#   bench/validate_parallel.sh BIN OUTDIR [LADDER] [CASE...]
-# Writes OUTDIR/<case>/validation.json|csv|pdf and OUTDIR/<case>.log;
+#   [JOBS=N] bench/validate_parallel.sh BIN OUTDIR [LADDER] [CASE...]
+# JOBS: processes at once (default: the number of cores). Writes
+# OUTDIR/<case>/validation.json|csv|pdf and OUTDIR/<case>.log;
 # bench/validate_table.py OUTDIR turns them into RESULTS.md's tables.
 # On the device machine: bench/assess_e2e.sh pack here, then run with carry
 # [".e2e"] and BIN=.e2e/wallload (LD_LIBRARY_PATH=.e2e/lib).
@@ -14,9 +15,11 @@ mkdir -p "$out"
 if [ $# -eq 0 ]; then
   set -- $("$bin" validate --list | awk 'NF {print $1}')
 fi
-for c in "$@"; do
-  ( a=$(date +%s)
-    "$bin" validate "$c" --ladder "$ladder" --threads 1 -o "$out/$c" >"$out/$c.log" 2>&1
-    echo "== $c rc=$? wall=$(( $(date +%s) - a )) s" ) &
-done
-wait
+one() {
+  local a; a=$(date +%s)
+  "$bin" validate "$1" --ladder "$ladder" --threads 1 -o "$out/$1" >"$out/$1.log" 2>&1
+  echo "== $1 rc=$? wall=$(( $(date +%s) - a )) s"
+}
+export -f one
+export bin out ladder
+printf '%s\n' "$@" | xargs -P "${JOBS:-$(nproc)}" -I{} bash -c 'one {}'

@@ -7,6 +7,11 @@ import pathlib
 import sys
 
 
+def md(x):
+    """a table cell: '|' (as in max|eta|) would end the cell"""
+    return str(x).replace('|', '\\|')
+
+
 def pct(x):
     return 'n/a' if x is None else '%+.1f %%' % (100 * x)
 
@@ -21,7 +26,8 @@ def main(out):
         lv = c['levels']
         m0 = [l['metrics'][0] for l in lv if l['metrics']]
         name = m0[0]['name'] if m0 else '?'
-        errs = ', '.join(pct(m['error']) for m in m0)
+        errs = ', '.join(pct(m['error']) if m['kind'] == 'relative' else '%.1f %%' % (100 * m['error'])
+                         for m in m0)
         rts = ', '.join('%.1f' % l['runtime']['value'] for l in lv)
         order = '%.2f' % c['order'] if c.get('order') is not None else 'n/a'
         if c.get('order') is not None and not c.get('order_meaningful'):
@@ -29,7 +35,7 @@ def main(out):
         elif c.get('extrapolated_error') is not None:
             order += ' (extrapolated %s)' % pct(c['extrapolated_error'])
         res = ('pass' if c['pass'] else '**FAIL**') + ': ' + c['verdict']
-        print('| %s | %s | %s | %s | %s | %s |' % (c['name'], name, errs, rts, order, res))
+        print('| %s | %s | %s | %s | %s | %s |' % (c['name'], md(name), errs, rts, order, md(res)))
     for c in cases:
         print('\n## %s: %s\n' % (c['name'], c['title']))
         print('| level | dp [m] | particles | steps | runtime [s] | metric | value | reference | error | tol | pass |')
@@ -41,9 +47,9 @@ def main(out):
                 ok = ('yes' if m['pass'] else '**NO**') if m['judged'] else 'info'
                 print('| %d | %.4g | %d | %d | %.1f | %s | %.5g %s | %.5g | %s | %s | %s |' % (
                     i, l['dp']['value'], l['particles'], l['steps'], l['runtime']['value'],
-                    m['name'], m['value'], m['unit'], m['reference'], err, tol, ok))
+                    md(m['name']), m['value'], m['unit'], m['reference'], err, tol, ok))
             if l['status'] != 'ok':
-                print('| %d | | | | | status | %s | | | | %s |' % (i, l['status'], l['message']))
+                print('| %d | | | | | status | %s | | | | %s |' % (i, l['status'], md(l['message'])))
 
 
 if __name__ == '__main__':
