@@ -12,8 +12,8 @@
  *  - the symmetry plane: a 3D crater on the centreline, half the width with
  *    the plane against the whole width (symmetry() below);
  * `flume3d counts` runs the first check only; the default run (ctest
- * flume3d) counts, still water (whole width and half) and the symmetry
- * plane; `flume3d solitary` (ctest
+ * flume3d) counts and still water (whole width and half); `flume3d
+ * symmetry` (ctest flume3d_symmetry, a long test) the symmetry plane; `flume3d solitary` (ctest
  * flume3d_solitary, a long test: minutes on 2 cores) the 3D vs 2D wave. */
 #include <gsl/gsl_errno.h>
 #include <math.h>
@@ -24,12 +24,12 @@
 #include "testutil.h"
 #include "wallload/assess.h"
 
-/* 3D vs 2D solitary: largest difference of the wall gauge, relative to the
- * 2D wave's largest elevation there, and of the force per metre, relative
- * to the 2D peak dynamic force (h/dp differs: 1.73 in 3D, 1.70 in 2D, the
- * plan's defaults; and the 3D flume has side walls). */
-#define SOL_TOL_ETA 0.15
-#define SOL_TOL_F 0.15
+/* 3D vs 2D long-crested solitary wave: peak run-up and forces within the
+ * 5 % of issue 4's run-up check (h/dp differs a little: 1.73 in 3D, 1.70
+ * in 2D, the plan's defaults; and the 3D flume has a side wall); arrival
+ * at the wall within the 2 % of issue 3's celerity check. */
+#define SOL_TOL_PEAK 0.05
+#define SOL_TOL_ARRIVAL 0.02
 
 static int parse(const char *text, struct wl_scenario *s, struct wl_plan *plan) {
   struct wl_error err;
@@ -144,14 +144,20 @@ static void still(int quick, int dims, const char *symmetry) {
 }
 
 /* Long-crested solitary wave, H/h = 0.3 on h = 0.3 m, dp = 0.03 m, in a
- * flume 3 rows wide, and the same case in 2D. */
+ * flume 0.24 m wide (8 rows; 4 modelled beside the symmetry plane), and the
+ * same case in 2D; the geometry of test_solitary_wall scaled to h = 0.3 m
+ * (crest 0.55 L from the left end, wall 0.75 L further, L = 6/K = 3.79 m).
+ * Until 2026-11-23 this check ran a 2.7 m flume in which the 3.8 m wave
+ * did not fit: its crest started 0.3 m from the wall, the wall cut the
+ * initial wave and the comparison measured the start-up's acoustic
+ * ringing (forces jumping by 2000 N/m between samples). */
 static const char *solitary_text(int dims) {
   static char buf[600];
   snprintf(buf, sizeof buf,
            "scenario: sol3d\nwater: {depth: 0.3 m}\n"
-           "domain: {dimensions: %d, length: 2.7 m, width: 0.09 m}\n"
-           "wall: {x: 2.2 m, height: 0.4 m, probes: 16}\n"
-           "loads: {solitary: {height: 0.09 m, generation: initial}}\n"
+           "domain: {dimensions: %d, length: 5.43 m, width: 0.24 m}\n"
+           "wall: {x: 4.93 m, height: 0.4 m, probes: 16}\n"
+           "loads: {solitary: {height: 0.09 m, generation: initial, at: 2.08 m}}\n"
            "resolution: {dp: 0.03 m}\nrun: {output_interval: 0.01 s}\n",
            dims);
   return buf;
@@ -176,29 +182,36 @@ static void solitary(int quick) {
     printf("%dD solitary: %d particles, %.2f s simulated in %.1f s (%ld steps)\n", d + 2,
            c[d].n_particles, c[d].t_reached, c[d].runtime_s, (long)c[d].steps);
   }
-  const size_t n = c[0].rec.n < c[1].rec.n ? c[0].rec.n : c[1].rec.n;
-  const int gw2 = c[0].rec.n_gauges - 1, gw3 = c[1].rec.n_gauges - 1; /* the wall gauge */
-  double deta = 0, eta_max = 0, dF = 0, dFb = 0, F_max = 0, Fb_max = 0;
-  const double F0 = c[0].static_force;
-  for (size_t k = 0; k < n; k++) {
-    const double e2 = c[0].rec.eta[k * c[0].rec.n_gauges + gw2];
-    const double e3 = c[1].rec.eta[k * c[1].rec.n_gauges + gw3];
-    deta = fmax(deta, fabs(e3 - e2));
-    eta_max = fmax(eta_max, e2);
-    dF = fmax(dF, fabs(c[1].rec.force[k] - c[0].rec.force[k]));
-    dFb = fmax(dFb, fabs(c[1].rec.force_bound[k] - c[0].rec.force_bound[k]));
-    F_max = fmax(F_max, c[0].rec.force[k] - F0);
-    Fb_max = fmax(Fb_max, c[0].rec.force_bound[k] - F0);
+  /* what the engineer reads: peak force per metre (probes and boundary
+   * particles), the wall gauge's largest rise above its level at t = 0
+   * (the gauge's rest bias differs by a fraction of dp between 2D and 3D),
+   * and when the rise passes H/2 (the wave's arrival) */
+  double peak[2][3], arrive[2];
+  for (int d = 0; d < 2; d++) {
+    const struct wl_record *r = &c[d].rec;
+    const int gw = r->n_gauges - 1; /* the wall gauge */
+    const double eta_rest = r->eta[gw];
+    peak[d][0] = peak[d][1] = peak[d][2] = -INFINITY;
+    arrive[d] = NAN;
+    for (size_t k = 0; k < r->n; k++) {
+      const double rise = r->eta[k * (size_t)r->n_gauges + (size_t)gw] - eta_rest;
+      peak[d][0] = fmax(peak[d][0], rise);
+      peak[d][1] = fmax(peak[d][1], r->force[k]);
+      peak[d][2] = fmax(peak[d][2], r->force_bound[k]);
+      if (isnan(arrive[d]) && k > 0 && rise >= 0.5 * 0.09) {
+        const double r0 = r->eta[(k - 1) * (size_t)r->n_gauges + (size_t)gw] - eta_rest;
+        arrive[d] = r->t[k - 1] + (r->t[k] - r->t[k - 1]) * (0.5 * 0.09 - r0) / (rise - r0);
+      }
+    }
   }
-  printf("3D vs 2D over %zu samples: wall gauge max |d eta| = %.4f m (2D max eta %.4f m); probe "
-         "force per metre max |dF| = %.1f N/m (2D peak dynamic %.1f N/m); boundary force max "
-         "|dF| = %.1f N/m (2D peak dynamic %.1f N/m)\n",
-         n, deta, eta_max, dF, F_max, dFb, Fb_max);
-  CHECK_TRUE(n > 10, "both runs sampled");
-  CHECK_TRUE(deta <= SOL_TOL_ETA * eta_max, "3D wall gauge = 2D within the stated tolerance");
-  CHECK_TRUE(dF <= SOL_TOL_F * F_max, "3D probe force per metre = 2D within the stated tolerance");
-  CHECK_TRUE(dFb <= SOL_TOL_F * Fb_max,
-             "3D boundary force per metre = 2D within the stated tolerance");
+  printf("3D vs 2D: wall gauge rise %.4f / %.4f m, arrival (rise H/2) %.3f / %.3f s, peak probe "
+         "force %.1f / %.1f N/m, peak boundary force %.1f / %.1f N/m\n",
+         peak[1][0], peak[0][0], arrive[1], arrive[0], peak[1][1], peak[0][1], peak[1][2],
+         peak[0][2]);
+  CHECK_REL(peak[1][0], peak[0][0], SOL_TOL_PEAK, "3D wall run-up = 2D");
+  CHECK_REL(peak[1][1], peak[0][1], SOL_TOL_PEAK, "3D peak probe force per metre = 2D");
+  CHECK_REL(peak[1][2], peak[0][2], SOL_TOL_PEAK, "3D peak boundary force per metre = 2D");
+  CHECK_REL(arrive[1], arrive[0], SOL_TOL_ARRIVAL, "3D arrival at the wall = 2D (celerity)");
   for (int d = 0; d < 2; d++) {
     wl_assess_case_clear(&c[d]);
     wl_scenario_clear(&s[d]);
@@ -299,10 +312,12 @@ int main(int argc, char **argv) {
   if (!strcmp(only, "counts")) return TEST_RESULT();
   if (!strcmp(only, "still2d")) still(quick, 2, "auto"); /* the same flume in 2D */
   if (!*only || !strcmp(only, "still")) {
-    still(quick, 3, "none");
+    /* the sanitizer's quick run: the half width alone, whose mirror passes
+     * are the code the whole width does not run */
+    if (!quick) still(quick, 3, "none");
     still(quick, 3, "auto"); /* the half width, with the symmetry plane */
   }
-  if (!*only || !strcmp(only, "symmetry")) symmetry(quick);
+  if (!strcmp(only, "symmetry")) symmetry(quick); /* ctest flume3d_symmetry (long) */
   if (!strcmp(only, "solitary")) solitary(quick); /* ctest flume3d_solitary (long) */
   return TEST_RESULT();
 }
