@@ -20,9 +20,11 @@
  * 3D (domain.dimensions: 3): the flume is y in [0, width], the width
  * rounded to a whole number of lattice rows (`width` below; the scenario's
  * domain.width within dp/2). The 2D bed / wall / land / end-wall polyline
- * is extruded over the width and under the side walls; side walls of
- * boundary layers at y < 0 and y > width close the flume from the bed to
- * the top of the domain. Waves and plane craters are long-crested (the 2D
+ * is extruded over the width (and under side walls of particles). The
+ * side walls are free-slip mirror planes at y = 0 and y = width (the
+ * default, domain.side_walls: free-slip; sph/params.h), or layers of
+ * boundary particles at y < 0 and y > width from the bed to the top of
+ * the domain (particles). Waves and plane craters are long-crested (the 2D
  * field, v = 0); the axisymmetric craters (and the lip-less quadratic) are
  * centred at y = width/2, eta(r) with r the distance from the axis. Gauges
  * stand at y = width/2; wall probes form a grid of the heights below times
@@ -62,6 +64,7 @@ struct wl_flume {
   double width;                    /* 3D: modelled flume width [m] (0 in 2D); half the
                                       flume's with a symmetry plane */
   int symmetry;                    /* 3D: symmetry plane at y = 0, the flume's centreline */
+  int slip_walls;                  /* 3D: side walls are free-slip mirror planes */
   struct wl_sph_config cfg;        /* parameters, domain box, walls for the guard */
   struct wl_particles particles;   /* initial state (state fields only); owned */
   int has_paddle;

@@ -88,6 +88,7 @@ struct wl_plan {
   double dp;                        /* particle spacing [m] */
   double coefh;                     /* resolved numerics.coefh [-] (auto: WL_PLAN_COEFH_2D/3D) */
   char dims_reason[160];            /* why dims: given, or auto's reason */
+  int slip_walls;                   /* 3D: side walls as free-slip mirror planes */
   int symmetry;                     /* 3D: half the width modelled, a symmetry plane on the
                                        centreline (domain.symmetry auto or centreline) */
   double h_sml;                     /* smoothing length h = coefh sqrt(dim) dp [m] */

@@ -51,6 +51,9 @@ enum wl_far_end_choice { WL_FAR_END_WALL, WL_FAR_END_DAMPING };
  * centreline (auto: when the width is an even number of rows of dp; every
  * flume scene is symmetric about the centreline). */
 enum wl_symmetry_choice { WL_SYMMETRY_AUTO, WL_SYMMETRY_NONE, WL_SYMMETRY_CENTRELINE };
+/* 3D: the flume's side walls as mirror planes (free slip) or as layers of
+ * dynamic boundary particles. */
+enum wl_side_wall_choice { WL_SIDE_WALLS_FREE_SLIP, WL_SIDE_WALLS_PARTICLES };
 
 struct wl_scenario_bed {
   struct wl_scenario_value from;  /* x where this segment starts [m] */
@@ -72,7 +75,7 @@ struct wl_scenario {
     struct wl_scenario_value depth, density, gravity;
   } water;
   struct {
-    struct wl_scenario_value dimensions, length, width, far_end, symmetry;
+    struct wl_scenario_value dimensions, length, width, far_end, symmetry, side_walls;
   } domain;
   int n_bed;
   struct wl_scenario_bed bed[WL_SCENARIO_MAX_BED];

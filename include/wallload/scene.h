@@ -151,13 +151,13 @@ enum wl_status wl_scene_box3d_solid(struct wl_scene *sc, const double *lo, const
 
 /* Side walls of a flume extruded along y (3D only): for each of the n
  * points (xz[2i], xz[2i+1]) [m] of the flume's profile, n_layers fixed
- * boundary particles at y = y0 - (k + 1/2) dp (only when with_low is 1;
- * 0 where a symmetry plane stands at y0) and y = y1 + (k + 1/2) dp
- * (k < n_layers): the walls y = y0 and y = y1 are wall FACES. The caller
+ * boundary particles at y = y0 - (k + 1/2) dp (when bit 0 of sides is
+ * set) and y = y1 + (k + 1/2) dp (bit 1) (k < n_layers): the walls y = y0
+ * and y = y1 are wall FACES. The caller
  * places the points on the fluid lattice of the profile (and the extruded
  * polylines under them fill the edges). Densities rho0. WL_EINPUT (2D
  * scene, layers outside 1..16, y1 <= y0), WL_ENOMEM. */
 enum wl_status wl_scene_box3d_sides(struct wl_scene *sc, const double *xz, int n, double y0,
-                                    double y1, int with_low, int n_layers, struct wl_error *err);
+                                    double y1, int sides, int n_layers, struct wl_error *err);
 
 #endif

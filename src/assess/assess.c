@@ -66,20 +66,22 @@ static enum wl_status boundary_force(struct run_ctx *rc, const struct wl_particl
     }
   }
   const int laminar = k->visc == WL_SPH_VISC_LAMINAR;
-  /* with a symmetry plane, the modelled half of the wall also feels the
-   * mirror images of the fluid beside the plane (the second pass) */
-  const int passes = d3 && k->sym ? 2 : 1;
+  /* beside a mirror plane (symmetry plane or free-slip side wall) the wall
+   * also feels the mirror images of the fluid: pass 1 the low plane's,
+   * pass 2 the high plane's */
+  const int passes = 3;
   double fx = 0.0, my = 0.0;
   for (int j = 0; j < p->n_bound; j++) {
     if (p->body[j] != WL_FLUME_BODY_WALL) continue;
     wl_real rho_j = p->rho[j], p_j = wl_sph_eos_p(k, rho_j);
     for (size_t a = 0; a < n_near * (size_t)passes; a++) {
-      const int i = rc->near[a % n_near], mirror = a >= n_near;
+      const int i = rc->near[a % n_near], mirror = (int)(a / n_near);
+      if (mirror && !(d3 && (k->mirror & (1 << (mirror - 1))))) continue;
       wl_real dx = (wl_real)(p->pos[0][i] - p->pos[0][j]);
       wl_real dz = (wl_real)(p->pos[az][i] - p->pos[az][j]);
       wl_real r2 = dx * dx + dz * dz, dy = 0;
       if (d3) {
-        const double yi = mirror ? 2.0 * k->sym_y - p->pos[1][i] : p->pos[1][i];
+        const double yi = mirror ? 2.0 * k->mirror_y[mirror - 1] - p->pos[1][i] : p->pos[1][i];
         dy = (wl_real)(yi - p->pos[1][j]);
         r2 += dy * dy;
       }

@@ -504,6 +504,8 @@ static enum wl_status write_case_h5(struct wl_store *h5, const struct wl_case_re
     st = wl_store_attr_double(h5, g, "width", (f->symmetry ? 2 : 1) * f->width, "m", err);
   if (!st && f->dims == 3)
     st = wl_store_attr_text(h5, g, "symmetry", f->symmetry ? "centreline" : "none", err);
+  if (!st && f->dims == 3)
+    st = wl_store_attr_text(h5, g, "side_walls", f->slip_walls ? "free-slip" : "particles", err);
   if (!st) st = wl_store_attr_text(h5, g, "status", status_word(c->status), err);
   if (!st && c->status != WL_OK) st = wl_store_attr_text(h5, g, "stopped", c->message, err);
   return st;

@@ -932,9 +932,9 @@ static enum wl_status cuda_init(void **ctx, const struct wl_sph_config *cfg,
             : !strcmp(mode, "tile") ? MODE_TILE
             : !strcmp(mode, "fast") ? MODE_FAST
                                     : MODE_REF;
-  /* the symmetry plane's mirror pass is in wl_sph_gather only: the fast
-   * and tile loops do not have it */
-  if (k->sym) c->mode = MODE_REF;
+  /* the mirror planes' passes are in wl_sph_gather only: the fast and
+   * tile loops do not have them */
+  if (k->mirror) c->mode = MODE_REF;
   if ((st = wl_sph_grid_make(cfg, k, &c->grid, err))) {
     cuda_free(c);
     return st;

@@ -105,15 +105,15 @@ static void set_params(const struct wl_scenario *s, const struct wl_plan *plan, 
   if (!s->run.threads.is_auto) cfg->n_threads = (int)s->run.threads.q.si;
 }
 
-/* 3D side walls: the (x, z) lattice points inside the flume's profile (the
- * boundary polyline vx, vz: above the bed, seaward of the wall face or
- * above the land, below z_top, between its end faces) at least dp/2 from
- * the polyline, as layers behind y = 0 (unless a symmetry plane stands
- * there) and y = width (box3d.c). The extruded polyline's layers fill the
- * edges under them. */
+/* 3D side walls of boundary particles: the (x, z) lattice points inside
+ * the flume's profile (the boundary polyline vx, vz: above the bed,
+ * seaward of the wall face or above the land, below z_top, between its end
+ * faces) at least dp/2 from the polyline, as layers behind y = 0 (sides
+ * bit 0) and y = width (bit 1) (box3d.c). The extruded polyline's layers
+ * fill the edges under them. */
 static enum wl_status side_walls(struct wl_scene *sc, const double *vx, const double *vz, int nv,
                                  double xw, double z_crest, const struct wl_scenario *s,
-                                 double z_top, double width, int symmetry, int layers,
+                                 double z_top, double width, int sides, int layers,
                                  struct wl_error *err) {
   const double dp = sc->dp, tol = 1e-9 * dp;
   const double x0 = vx[0], x1 = vx[nv - 1];
@@ -134,7 +134,7 @@ static enum wl_status side_walls(struct wl_scene *sc, const double *vx, const do
       n++;
     }
   }
-  enum wl_status st = wl_scene_box3d_sides(sc, xz, n, 0.0, width, !symmetry, layers, err);
+  enum wl_status st = wl_scene_box3d_sides(sc, xz, n, 0.0, width, sides, layers, err);
   free(xz);
   return st;
 }
@@ -242,8 +242,13 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
     f->cfg.prm.damp_x1 = x_end;
     f->cfg.prm.damp_rate = 10.0 * sqrt(plan->g * depth) / zone;
   }
-  f->cfg.prm.symmetry = f->symmetry; /* the plane y = 0 (flume.h) */
-  f->cfg.prm.sym_y = 0.0;
+  /* 3D mirror planes (flume.h): y = 0 is the centreline (symmetry) or a
+   * free-slip side wall; y = width a free-slip side wall */
+  f->slip_walls = dim == 3 && s->domain.side_walls.choice == WL_SIDE_WALLS_FREE_SLIP;
+  f->cfg.prm.mirror_lo = f->symmetry || f->slip_walls;
+  f->cfg.prm.mirror_hi = f->slip_walls;
+  f->cfg.prm.mirror_y_lo = 0.0;
+  f->cfg.prm.mirror_y_hi = f->width;
   struct wl_sph_const k;
   enum wl_status st = wl_sph_const_make(&f->cfg.prm, &k, err);
   if (st) return st;
@@ -256,16 +261,19 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
   f->cfg.hi[0] = xw + plan->land_length + thick + 2 * dp;
   f->cfg.lo[dim - 1] = -thick - 2 * dp;
   f->cfg.hi[dim - 1] = z_top + thick + 2 * dp;
-  if (dim == 3) { /* just behind the side walls' layers (flume.h: guard) */
-    f->cfg.lo[1] = f->symmetry ? 0.0 : -thick - 2 * dp; /* the plane is the box's face */
-    f->cfg.hi[1] = f->width + thick + 2 * dp;
+  const int mirror_lo = f->cfg.prm.mirror_lo, mirror_hi = f->cfg.prm.mirror_hi;
+  if (dim == 3) { /* a mirror plane is the box's face; else just behind the
+                     side wall's layers (flume.h: guard) */
+    f->cfg.lo[1] = mirror_lo ? 0.0 : -thick - 2 * dp;
+    f->cfg.hi[1] = mirror_hi ? f->width : f->width + thick + 2 * dp;
   }
 
   /* 3D: the polyline's extrusion runs on the fluid's y lattice, (j + 1/2)
-   * dp, from under the left side wall's last layer to under the right's */
+   * dp, from under one side wall's last layer (or the first fluid row
+   * beside a mirror plane) to the other's */
   struct wl_scene sc;
-  wl_scene_init(&sc, &k, f->symmetry ? 0.5 * dp : -(layers - 0.5) * dp,
-                f->width + (layers - 0.5) * dp);
+  wl_scene_init(&sc, &k, mirror_lo ? 0.5 * dp : -(layers - 0.5) * dp,
+                mirror_hi ? f->width - 0.5 * dp : f->width + (layers - 0.5) * dp);
 
   /* Fixed boundary: (left wall,) bed with its bathymetry, wall face, land
    * at crest level, end wall; one polyline so its corners are mitred. */
@@ -291,8 +299,11 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
   vx[nv] = x_end, vz[nv++] = z_top;
   st = wl_scene_boundary_polyline(&sc, vx, vz, nv, layers, WL_KIND_FIXED, 0, &f->cfg, err);
   const int n_extruded = sc.n[0]; /* the seawall body is tagged among these */
-  if (!st && dim == 3) st = side_walls(&sc, vx, vz, nv, xw, f->z_crest, s, z_top, f->width, f->symmetry,
-                                       layers, err);
+  if (!st && dim == 3) st = (mirror_lo && mirror_hi)
+                                   ? WL_OK
+                                   : side_walls(&sc, vx, vz, nv, xw, f->z_crest, s, z_top, f->width,
+                                                (mirror_lo ? 0 : 1) | (mirror_hi ? 0 : 2),
+                                                layers, err);
   if (!st && f->has_paddle) {
     /* 3D: the piston spans the fluid rows only, inside the side walls */
     sc.y0 = 0.5 * dp;

@@ -324,7 +324,10 @@ static void case_cost(const struct wl_scenario *s, struct wl_plan *p, double x_l
     double profile = (x_end - x_left) * z_top - p->land_length * wall_top -
                      ((xw - x_left) * p->h - area);
     if (profile < 0) profile = 0;
-    const double sides = p->symmetry ? 1.0 : 2.0; /* side walls */
+    /* side walls of boundary particles (none where a mirror plane is) */
+    const double sides = s->domain.side_walls.choice == WL_SIDE_WALLS_FREE_SLIP ? 0.0
+                         : p->symmetry                                         ? 1.0
+                                                                               : 2.0;
     *n_boundary = (long)(layers * perimeter / p->dp * (across + sides * layers) +
                          sides * layers * profile / (p->dp * p->dp));
   }
@@ -349,6 +352,7 @@ static void plan_resolution(const struct wl_scenario *s, struct wl_plan *p) {
     const long rows = lround(s->domain.width.q.si / p->dp);
     p->symmetry = s->domain.symmetry.choice == WL_SYMMETRY_CENTRELINE || (rows >= 2 && rows % 2 == 0);
   }
+  p->slip_walls = p->dims == 3 && s->domain.side_walls.choice == WL_SIDE_WALLS_FREE_SLIP;
   if (!s->resolution.dp.is_auto && smallest / p->dp < 4)
     note(p, "dp = %g m gives only %.1f particles over the smallest wave height (%.3g m)", p->dp,
          smallest / p->dp, smallest);
@@ -497,6 +501,9 @@ void wl_plan_write(const struct wl_plan *p, FILE *out) {
   if (p->dims == 3)
     fprintf(out, "  %-36s %s\n", "symmetry plane",
             p->symmetry ? "centreline (half the width modelled)" : "none (the whole width)");
+  if (p->dims == 3)
+    fprintf(out, "  %-36s %s\n", "side walls",
+            p->slip_walls ? "free-slip (mirror planes)" : "dynamic boundary particles");
   fprintf(out, "  %-36s %12.5g m\n", "particle spacing dp", p->dp);
   fprintf(out, "  %-36s %12.5g m      (h/dp = %.3g)\n", "smoothing length h", p->h_sml,
           p->h_sml / p->dp);

@@ -25,6 +25,7 @@ static const char *const viscosity_choices[] = {"artificial", "laminar", NULL};
 static const char *const onoff_choices[] = {"off", "on", NULL};
 static const char *const far_end_choices[] = {"wall", "damping", NULL};
 static const char *const symmetry_choices[] = {"auto", "none", "centreline", NULL};
+static const char *const side_wall_choices[] = {"free-slip", "particles", NULL};
 
 /* Ranges are in SI. lo_open/hi_open: the bound itself is excluded. */
 
@@ -56,6 +57,10 @@ static const struct wl_key domain_keys[] = {
      "width rounds to an even number of rows), none (the whole width), or auto (centreline when "
      "the width is an even number of rows of dp: the flume, its wall and its load cases are "
      "symmetric about it)"},
+    {"side_walls", KT_ENUM, WL_DIM_NONE, OFF(domain.side_walls), side_wall_choices, NONE, NONE, 0,
+     0, "free-slip", NULL, NO_FLAG, 0,
+     "3D: free-slip (mirror planes: a smooth wall, no boundary particles) or particles (dynamic "
+     "boundary particles, which hold the fluid a gap away and disturb a narrow flume)"},
     {0}};
 
 static const struct wl_key wall_keys[] = {

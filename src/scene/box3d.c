@@ -149,7 +149,7 @@ enum wl_status wl_scene_box3d_solid(struct wl_scene *sc, const double *lo, const
 }
 
 enum wl_status wl_scene_box3d_sides(struct wl_scene *sc, const double *xz, int n, double y0,
-                                    double y1, int with_low, int n_layers, struct wl_error *err) {
+                                    double y1, int sides, int n_layers, struct wl_error *err) {
   if (sc->dim != 3)
     return wl_error_set(err, WL_EINPUT, "scene side walls: 3D only (the scene is %dD)", sc->dim);
   if (n_layers < 1 || n_layers > 16)
@@ -158,12 +158,14 @@ enum wl_status wl_scene_box3d_sides(struct wl_scene *sc, const double *xz, int n
     return wl_error_set(err, WL_EINPUT, "scene side walls: y range [%g, %g] m; need y0 < y1", y0,
                         y1);
   enum wl_status st = WL_OK;
-  for (int side = with_low ? 0 : 1; side < 2; side++)
+  for (int side = 0; side < 2; side++) {
+    if (!(sides & (1 << side))) continue;
     for (int k = 0; k < n_layers; k++)
       for (int i = 0; i < n && st == WL_OK; i++) {
         const double off = (k + 0.5) * sc->dp;
         const double q[3] = {xz[2 * i], side ? y1 + off : y0 - off, xz[2 * i + 1]};
         st = wl_scene_push(sc, 0, q, sc->k.rho0, WL_KIND_FIXED, 0, err);
       }
+  }
   return st;
 }

@@ -30,10 +30,16 @@ enum wl_status wl_sph_grid_make(const struct wl_sph_config *cfg, const struct wl
     return wl_error_set(err, WL_EINPUT, "the domain box needs %.3g cells of %g m (2h); at most %g: "
                         "shrink the box", cells, g->cell, (double)WL_SPH_CELLS_MAX);
   g->n_cells = (int)cells;
-  /* the mirror pass of sph/gather.h visits the cells of row iy = 0 */
-  if (k->sym && cfg->lo[1] != k->sym_y)
-    return wl_error_set(err, WL_EINPUT, "symmetry plane y = %g m must be the domain box's low y "
-                        "face (lo y = %g m)", k->sym_y, cfg->lo[1]);
+  /* the mirror passes of sph/gather.h visit the first and the last two
+   * cell layers in y; a plane's images of the other plane's images are
+   * left out, so the planes must be two cells (4h) apart */
+  if (((k->mirror & 1) && k->mirror_y[0] != cfg->lo[1]) ||
+      ((k->mirror & 2) && k->mirror_y[1] != cfg->hi[1]))
+    return wl_error_set(err, WL_EINPUT, "mirror planes must be the domain box's y faces (y = %g "
+                        "and %g m)", cfg->lo[1], cfg->hi[1]);
+  if (k->mirror == 3 && g->n[1] < 2)
+    return wl_error_set(err, WL_EINPUT, "mirror planes at y = %g and %g m: %g m apart, less than "
+                        "4h = %g m", cfg->lo[1], cfg->hi[1], cfg->hi[1] - cfg->lo[1], 2 * g->cell);
   return WL_OK;
 }
 

@@ -65,9 +65,8 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
   if (prm->damp_rate > 0 && !(fabs(prm->damp_x1 - prm->damp_x0) > 0))
     return bad(err, "damp_x1", prm->damp_x1, "must differ from damp_x0 (the zone's length)");
 
-  if (prm->symmetry && prm->dim != 3)
-    return bad(err, "symmetry", prm->symmetry, "a symmetry plane needs dim 3 (the plane is y = sym_y)");
-  if (prm->symmetry && !isfinite(prm->sym_y)) return bad(err, "sym_y", prm->sym_y, "must be finite [m]");
+  if ((prm->mirror_lo || prm->mirror_hi) && prm->dim != 3)
+    return bad(err, "mirror_lo/mirror_hi", 1, "mirror planes need dim 3 (they are planes y = const)");
 
   memset(k, 0, sizeof *k);
   const int dim = prm->dim;
@@ -112,8 +111,9 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
     k->damp_inv_len = 1.0 / (prm->damp_x1 - prm->damp_x0);
     k->damp_rate = prm->damp_rate;
   }
-  k->sym = prm->symmetry ? 1 : 0;
-  k->sym_y = prm->symmetry ? prm->sym_y : 0.0;
+  k->mirror = (prm->mirror_lo ? 1 : 0) | (prm->mirror_hi ? 2 : 0);
+  k->mirror_y[0] = prm->mirror_lo ? prm->mirror_y_lo : 0.0;
+  k->mirror_y[1] = prm->mirror_hi ? prm->mirror_y_hi : 0.0;
   return WL_OK;
 }
 

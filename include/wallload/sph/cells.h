@@ -77,27 +77,33 @@ WL_HD static WL_INLINE int wl_sph_cell_rows(const int dim, const struct wl_sph_g
   return nr;
 }
 
-/* The rows a symmetry plane at the grid's low y face adds (sph/gather.h's
- * mirror pass), 3D: for cells c .. c + span in the first cell layer (iy =
- * 0), the rows iy = 0, iz - 1 .. iz + 1, where the mirror images of the
- * particles within 2h of the plane's other side lie; none elsewhere (a
- * particle in layer iy >= 1 is at least one cell, >= 2h, from the plane).
- * Returns the number of rows (<= 3). */
+/* The rows a mirror plane adds (sph/gather.h's mirror passes), 3D, for
+ * cells c .. c + span: side 0, the plane at the grid's low y face: for the
+ * first cell layer (iy = 0) the rows iy = 0, iz - 1 .. iz + 1, where lie
+ * the particles within 2h of the plane whose images can be neighbours;
+ * none for iy >= 1 (a cell, >= 2h, from the plane). Side 1, the plane at
+ * the domain box's high y face, which lies in the last layer (or at its
+ * top): that layer may be thinner than a cell, so the last two layers
+ * (iy >= n - 2) are near the plane and their rows are visited. Rows
+ * farther than 2h add exact zeros. Returns the number of rows (<= 6). */
 WL_HD static WL_INLINE int wl_sph_cell_rows_mirror(const struct wl_sph_grid *g, int c, int span,
-                                                   int first[3], int last[3]) {
+                                                   int side, int first[6], int last[6]) {
   const int ix = c % g->n[0];
   const int rest = c / g->n[0];
   const int iy = rest % g->n[1], iz = rest / g->n[1];
-  if (iy != 0) return 0;
+  const int y_first = side ? wl_sph_maxi(g->n[1] - 2, 0) : 0, y_last = side ? g->n[1] - 1 : 0;
+  if (iy < y_first || iy > y_last) return 0;
   const int x0 = wl_sph_maxi(ix - 1, 0) - ix, x1 = wl_sph_mini(ix + span + 1, g->n[0] - 1) - ix;
   int nr = 0;
   for (int dz = -1; dz <= 1; dz++) {
     const int jz = iz + dz;
     if (jz < 0 || jz >= g->n[2]) continue;
-    const int base = jz * g->n[1] * g->n[0] + ix;
-    first[nr] = base + x0;
-    last[nr] = base + x1;
-    nr++;
+    for (int jy = y_first; jy <= y_last; jy++) {
+      const int base = (jz * g->n[1] + jy) * g->n[0] + ix;
+      first[nr] = base + x0;
+      last[nr] = base + x1;
+      nr++;
+    }
   }
   return nr;
 }

@@ -20,11 +20,12 @@
  * then gives the pressure that keeps fluid out). Boundary-boundary pairs are
  * never visited. Density diffusion acts between fluid pairs only.
  *
- * Symmetry plane (k->sym, 3D; sph/params.h): a particle in the first cell
- * layer beside the plane also sums, after each group's ordinary rows, the
- * mirror images of that group's particles in the layer (cells.h
- * wl_sph_cell_rows_mirror) as if they were neighbours: the images of a
- * symmetric scene's other half, so its half runs alone. */
+ * Mirror planes (k->mirror, 3D; sph/params.h), at the grid's low and high
+ * y faces: a particle in the cell layers beside a plane also sums, after
+ * each group's ordinary rows, the mirror images of that group's particles
+ * in those layers (cells.h wl_sph_cell_rows_mirror) as if they were
+ * neighbours: the images of a symmetric scene's other half, so its half
+ * runs alone; or a free-slip wall. */
 #ifndef WALLLOAD_SPH_GATHER_H
 #define WALLLOAD_SPH_GATHER_H
 
@@ -63,7 +64,8 @@ struct wl_sph_lanes {
 };
 
 /* Add the pairs of every lane with neighbours j in [j0, j1), or with their
- * mirror images in the symmetry plane y = k->sym_y when mirror is 1 (3D).
+ * mirror images in the plane y = k->mirror_y[mirror - 1] when mirror is 1
+ * (the low plane) or 2 (the high one), 3D.
  * dim, laminar, want_ace, with_ddt, lanes: compile-time constants. av, lam:
  * see wl_sph_pair_eval. */
 WL_HD static WL_INLINE void wl_sph_gather_range(const int dim, const int laminar,
@@ -76,7 +78,9 @@ WL_HD static WL_INLINE void wl_sph_gather_range(const int dim, const int laminar
   const int az = dim - 1; /* vertical axis */
   for (int j = j0; j < j1; j++) {
     const double xj = e->pos[0][j], zj = e->pos[az][j];
-    const double yj = dim != 3 ? 0.0 : mirror ? 2.0 * k->sym_y - e->pos[1][j] : e->pos[1][j];
+    const double yj = dim != 3 ? 0.0
+                      : mirror ? 2.0 * k->mirror_y[mirror - 1] - e->pos[1][j]
+                               : e->pos[1][j];
     const wl_real uxj = e->vel[0][j], uzj = e->vel[az][j];
     const wl_real uyj = dim != 3 ? WL_R(0.0) : mirror ? -e->vel[1][j] : e->vel[1][j];
     const wl_real rho_j = e->rho[j], p_j = e->press[j];
@@ -143,23 +147,29 @@ WL_HD static WL_INLINE void wl_sph_gather_block(const int dim, const int laminar
     for (int a = 0; a < WL_SPH_DIM_MAX; a++) f.a[a][l] = 0;
     f.cont[l] = f.ddt[l] = f.wsum[l] = f.visc[l] = 0;
   }
-  /* mirror rows: only next to a symmetry plane (3D) */
-  int mfirst[3], mlast[3];
-  const int nm = dim == 3 && k->sym ? wl_sph_cell_rows_mirror(g, cell, span, mfirst, mlast) : 0;
+  /* mirror rows: only next to a mirror plane (3D); side s in rows
+   * mfirst[s]..., mirror pass s + 1 */
+  int mfirst[2][6], mlast[2][6], nm[2] = {0, 0};
+  if (dim == 3)
+    for (int side = 0; side < 2; side++)
+      if (k->mirror & (1 << side))
+        nm[side] = wl_sph_cell_rows_mirror(g, cell, span, side, mfirst[side], mlast[side]);
   if (fluid) {
     struct wl_sph_acc b = f; /* boundary neighbours */
     for (int r = 0; r < nr; r++)
       wl_sph_gather_range(dim, laminar, 1, 1, lanes, k, e, &in, bf[first[r]], bf[last[r] + 1],
                           k->av_ff, k->lam_ff, 0, &f);
-    for (int r = 0; r < nm; r++)
-      wl_sph_gather_range(dim, laminar, 1, 1, lanes, k, e, &in, bf[mfirst[r]], bf[mlast[r] + 1],
-                          k->av_ff, k->lam_ff, 1, &f);
+    for (int side = 0; dim == 3 && side < 2; side++)
+      for (int r = 0; r < nm[side]; r++)
+        wl_sph_gather_range(dim, laminar, 1, 1, lanes, k, e, &in, bf[mfirst[side][r]],
+                            bf[mlast[side][r] + 1], k->av_ff, k->lam_ff, side + 1, &f);
     for (int r = 0; r < nr; r++)
       wl_sph_gather_range(dim, laminar, 1, 0, lanes, k, e, &in, bb[first[r]], bb[last[r] + 1],
                           k->av_fb, k->lam_fb, 0, &b);
-    for (int r = 0; r < nm; r++)
-      wl_sph_gather_range(dim, laminar, 1, 0, lanes, k, e, &in, bb[mfirst[r]], bb[mlast[r] + 1],
-                          k->av_fb, k->lam_fb, 1, &b);
+    for (int side = 0; dim == 3 && side < 2; side++)
+      for (int r = 0; r < nm[side]; r++)
+        wl_sph_gather_range(dim, laminar, 1, 0, lanes, k, e, &in, bb[mfirst[side][r]],
+                            bb[mlast[side][r] + 1], k->av_fb, k->lam_fb, side + 1, &b);
     for (int l = 0; l < m; l++) {
       const int i = i0 + l;
       /* DDT2 (not Full): no diffusion for a fluid particle next to a wall */
@@ -174,9 +184,10 @@ WL_HD static WL_INLINE void wl_sph_gather_block(const int dim, const int laminar
     for (int r = 0; r < nr; r++)
       wl_sph_gather_range(dim, laminar, 0, 0, lanes, k, e, &in, bf[first[r]], bf[last[r] + 1],
                           k->av_fb, k->lam_fb, 0, &f);
-    for (int r = 0; r < nm; r++)
-      wl_sph_gather_range(dim, laminar, 0, 0, lanes, k, e, &in, bf[mfirst[r]], bf[mlast[r] + 1],
-                          k->av_fb, k->lam_fb, 1, &f);
+    for (int side = 0; dim == 3 && side < 2; side++)
+      for (int r = 0; r < nm[side]; r++)
+        wl_sph_gather_range(dim, laminar, 0, 0, lanes, k, e, &in, bf[mfirst[side][r]],
+                            bf[mlast[side][r] + 1], k->av_fb, k->lam_fb, side + 1, &f);
     for (int l = 0; l < m; l++) {
       const int i = i0 + l;
       for (int a = 0; a < dim; a++) e->ace[a][i] = 0;

@@ -21,8 +21,8 @@
  * overtopping water entering the zone come to rest there instead of
  * reflecting.
  *
- * Symmetry plane (sph/params.h): a fluid particle the corrector carries
- * across y = sym_y is reflected back, its v_y reversed, as its mirror image
+ * Mirror planes (sph/params.h): a fluid particle the corrector carries
+ * across one is reflected back, its v_y reversed, as its mirror image
  * would have entered. */
 #ifndef WALLLOAD_SPH_INTEGRATE_H
 #define WALLLOAD_SPH_INTEGRATE_H
@@ -71,9 +71,12 @@ WL_HD static WL_INLINE void wl_sph_correct(const int dim, const struct wl_sph_co
       p->vel[a][i] = v;
       p->pos[a][i] = p->pos_h[a][i] + 0.5 * dt * (double)v;
     }
-    if (dim == 3 && k->sym && p->pos[1][i] < k->sym_y) { /* back across the symmetry plane */
-      p->pos[1][i] = 2.0 * k->sym_y - p->pos[1][i];
-      p->vel[1][i] = -p->vel[1][i];
+    if (dim == 3 && k->mirror) { /* back across a mirror plane */
+      const double y = p->pos[1][i];
+      if (((k->mirror & 1) && y < k->mirror_y[0]) || ((k->mirror & 2) && y > k->mirror_y[1])) {
+        p->pos[1][i] = 2.0 * k->mirror_y[y < k->mirror_y[0] ? 0 : 1] - y;
+        p->vel[1][i] = -p->vel[1][i];
+      }
     }
     if (k->damp_rate > 0) {
       double w = (p->pos[0][i] - k->damp_x0) * k->damp_inv_len;

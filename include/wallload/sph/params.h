@@ -62,14 +62,14 @@ struct wl_sph_params {
    * damp_rate is 0 (the default). */
   double damp_x0, damp_x1;  /* [m] */
   double damp_rate;         /* full-strength relaxation rate [1/s]; 0: no zone */
-  /* Symmetry plane (3D only): the plane y = sym_y, which must be the low y
-   * face of the domain box (cfg->lo[1]), mirrors the particles beside it:
-   * each particle within the kernel support of the plane also sees the
-   * mirror images of its neighbours (y -> 2 sym_y - y, v_y -> -v_y), and
-   * a fluid particle that crosses it is reflected back. A scene symmetric
-   * about the plane then runs on its half. Off when symmetry is 0. */
-  int symmetry;
-  double sym_y;             /* [m] */
+  /* Mirror planes (3D only) at the domain box's low and high y faces
+   * (cfg->lo[1], cfg->hi[1]): each particle within the kernel support of
+   * a plane also sees the mirror images of its neighbours there (y -> 2
+   * y_plane - y, v_y -> -v_y), and a fluid particle carried across is
+   * reflected back. A plane is a symmetry plane (a scene symmetric about
+   * it runs on its half) and, equally, a free-slip wall. Off when 0. */
+  int mirror_lo, mirror_hi;
+  double mirror_y_lo, mirror_y_hi; /* [m]: must be cfg->lo[1], cfg->hi[1] */
 };
 
 /* Derived constants (host computes, both backends read). Float members are
@@ -104,8 +104,8 @@ struct wl_sph_const {
   double penetration; /* guard: crossing depth [m] */
   double damp_x0, damp_inv_len, damp_rate; /* damping zone: start [m], 1/(x1 - x0) [1/m]
                                               (signed), rate [1/s] (0: none) */
-  int sym;            /* symmetry plane y = sym_y (the grid's low y face), 3D */
-  double sym_y;       /* [m] */
+  int mirror;         /* mirror planes, 3D: bit 0 the grid's low y face, bit 1 its high */
+  double mirror_y[2]; /* their y [m] (the domain box's lo[1] and hi[1]) */
 };
 
 #endif

@@ -24,7 +24,7 @@ struct wl_sph_point_sums {
 };
 
 /* Add the fluid particles of sorted range [j0, j1) to o, or their mirror
- * images in the symmetry plane (mirror 1, 3D). */
+ * images in the low (mirror 1) or high (mirror 2) mirror plane, 3D. */
 WL_HD static inline void wl_sph_point_add(const int dim, const struct wl_sph_const *k,
                                           double *const *pos, wl_real *const *vel,
                                           const wl_real *rho, const wl_real *press,
@@ -33,7 +33,7 @@ WL_HD static inline void wl_sph_point_add(const int dim, const struct wl_sph_con
   for (int j = j0; j < j1; j++) {
     wl_real r2 = 0;
     for (int a = 0; a < dim; a++) {
-      const double xj = a == 1 && mirror ? 2.0 * k->sym_y - pos[a][j] : pos[a][j];
+      const double xj = a == 1 && mirror ? 2.0 * k->mirror_y[mirror - 1] - pos[a][j] : pos[a][j];
       const wl_real d = (wl_real)(x[a] - xj);
       r2 += d * d;
     }
@@ -47,7 +47,7 @@ WL_HD static inline void wl_sph_point_add(const int dim, const struct wl_sph_con
 
 /* Sums at point x [m] over the fluid particles, using the sorted cell
  * ranges begin (2 n_cells + 1; the fluid group starts at n_cells), and over
- * their mirror images beside a symmetry plane (k->sym). press may be NULL
+ * their mirror images beside mirror planes (k->mirror). press may be NULL
  * (then p is 0). The cell of x is clamped into the grid. */
 WL_HD static inline struct wl_sph_point_sums
 wl_sph_point_sum(const int dim, const struct wl_sph_const *k, const struct wl_sph_grid *g,
@@ -61,10 +61,12 @@ wl_sph_point_sum(const int dim, const struct wl_sph_const *k, const struct wl_sp
   const int *const bf = begin + g->n_cells;
   for (int r = 0; r < nr; r++)
     wl_sph_point_add(dim, k, pos, vel, rho, press, x, bf[first[r]], bf[last[r] + 1], 0, &o);
-  if (dim == 3 && k->sym) {
-    const int nm = wl_sph_cell_rows_mirror(g, c, 0, first, last);
+  for (int side = 0; dim == 3 && side < 2; side++) {
+    if (!(k->mirror & (1 << side))) continue;
+    const int nm = wl_sph_cell_rows_mirror(g, c, 0, side, first, last);
     for (int r = 0; r < nm; r++)
-      wl_sph_point_add(dim, k, pos, vel, rho, press, x, bf[first[r]], bf[last[r] + 1], 1, &o);
+      wl_sph_point_add(dim, k, pos, vel, rho, press, x, bf[first[r]], bf[last[r] + 1], side + 1,
+                       &o);
   }
   return o;
 }
