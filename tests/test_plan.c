@@ -120,6 +120,8 @@ int main(void) {
         {"{length: 45 m, width: 17 m}", "explosion: {charge: 32 lb, at: 15 m, lip_form: plane}", 2,
          0, "a plane crater (line source): 2D"},
         {"{length: 45 m, width: 17 m}", "solitary: {height: 0.5 m}", 2, 0, "a solitary wave: 2D"},
+        {"{length: 45 m, width: 17 m}", "explosion: {charge: 32 lb, at: 15 m, model: thrown-mass}",
+         2, 0, "the thrown-mass model (2D only): 2D"},
         {"{length: 45 m, width: 3 m}", "explosion: {eta0: 0.5 m, r0: 1 m, at: 15 m}", 3, 1,
          "eta0 + r0 (2 r0 = 2 m) in a 3 m flume: 3D, 3 m = 6 rows of dp = 0.5 m: symmetry plane"},
         {"{length: 45 m, width: 3.5 m}", "explosion: {eta0: 0.5 m, r0: 1 m, at: 15 m}", 3, 0,

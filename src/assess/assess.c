@@ -67,16 +67,18 @@ static enum wl_status boundary_force(struct run_ctx *rc, const struct wl_particl
   }
   const int laminar = k->visc == WL_SPH_VISC_LAMINAR;
   /* beside a mirror plane (symmetry plane or free-slip side wall) the wall
-   * also feels the mirror images of the fluid: pass 1 the low plane's,
-   * pass 2 the high plane's */
-  const int passes = 3;
+   * also feels the mirror images of the fluid: mirror 1 the low plane's,
+   * mirror 2 the high plane's (sph/params.h) */
+  size_t n_pass[3] = {n_near, 0, 0};
+  for (int m = 1; m < 3; m++)
+    if (d3 && (k->mirror & (1 << (m - 1)))) n_pass[m] = n_near;
   double fx = 0.0, my = 0.0;
   for (int j = 0; j < p->n_bound; j++) {
     if (p->body[j] != WL_FLUME_BODY_WALL) continue;
     wl_real rho_j = p->rho[j], p_j = wl_sph_eos_p(k, rho_j);
-    for (size_t a = 0; a < n_near * (size_t)passes; a++) {
-      const int i = rc->near[a % n_near], mirror = (int)(a / n_near);
-      if (mirror && !(d3 && (k->mirror & (1 << (mirror - 1))))) continue;
+    for (int mirror = 0; mirror < 3; mirror++)
+    for (size_t a = 0; a < n_pass[mirror]; a++) {
+      const int i = rc->near[a];
       wl_real dx = (wl_real)(p->pos[0][i] - p->pos[0][j]);
       wl_real dz = (wl_real)(p->pos[az][i] - p->pos[az][j]);
       wl_real r2 = dx * dx + dz * dz, dy = 0;

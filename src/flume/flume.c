@@ -244,7 +244,7 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
   }
   /* 3D mirror planes (flume.h): y = 0 is the centreline (symmetry) or a
    * free-slip side wall; y = width a free-slip side wall */
-  f->slip_walls = dim == 3 && s->domain.side_walls.choice == WL_SIDE_WALLS_FREE_SLIP;
+  f->slip_walls = dim == 3 && plan->slip_walls;
   f->cfg.prm.mirror_lo = f->symmetry || f->slip_walls;
   f->cfg.prm.mirror_hi = f->slip_walls;
   f->cfg.prm.mirror_y_lo = 0.0;
@@ -299,11 +299,10 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
   vx[nv] = x_end, vz[nv++] = z_top;
   st = wl_scene_boundary_polyline(&sc, vx, vz, nv, layers, WL_KIND_FIXED, 0, &f->cfg, err);
   const int n_extruded = sc.n[0]; /* the seawall body is tagged among these */
-  if (!st && dim == 3) st = (mirror_lo && mirror_hi)
-                                   ? WL_OK
-                                   : side_walls(&sc, vx, vz, nv, xw, f->z_crest, s, z_top, f->width,
-                                                (mirror_lo ? 0 : 1) | (mirror_hi ? 0 : 2),
-                                                layers, err);
+  const int particle_sides = dim == 3 ? (mirror_lo ? 0 : 1) | (mirror_hi ? 0 : 2) : 0;
+  if (!st && particle_sides)
+    st = side_walls(&sc, vx, vz, nv, xw, f->z_crest, s, z_top, f->width, particle_sides, layers,
+                    err);
   if (!st && f->has_paddle) {
     /* 3D: the piston spans the fluid rows only, inside the side walls */
     sc.y0 = 0.5 * dp;

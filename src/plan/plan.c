@@ -68,6 +68,10 @@ static enum wl_status plan_dims(const struct wl_scenario *s, struct wl_plan *p,
   snprintf(p->dims_reason, sizeof p->dims_reason,
            "auto: long-crested waves and plane craters need no width");
   if (!s->explosion.present || s->explosion.lip_form.choice == WL_LIP_PLANE) return WL_OK;
+  if (s->explosion.model.choice == WL_MODEL_THROWN_MASS) { /* flume.c: 2D only */
+    snprintf(p->dims_reason, sizeof p->dims_reason, "auto: the thrown-mass model is 2D only");
+    return WL_OK;
+  }
   double r0 = NAN;
   if (s->explosion.charge.given) {
     enum wl_status st = wl_explosion_vandorn_r0(s->explosion.charge.q.si, &r0, err);
@@ -325,9 +329,7 @@ static void case_cost(const struct wl_scenario *s, struct wl_plan *p, double x_l
                      ((xw - x_left) * p->h - area);
     if (profile < 0) profile = 0;
     /* side walls of boundary particles (none where a mirror plane is) */
-    const double sides = s->domain.side_walls.choice == WL_SIDE_WALLS_FREE_SLIP ? 0.0
-                         : p->symmetry                                         ? 1.0
-                                                                               : 2.0;
+    const double sides = p->slip_walls ? 0.0 : p->symmetry ? 1.0 : 2.0;
     *n_boundary = (long)(layers * perimeter / p->dp * (across + sides * layers) +
                          sides * layers * profile / (p->dp * p->dp));
   }
