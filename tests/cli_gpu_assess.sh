@@ -2,7 +2,9 @@
 # `wallload assess` end to end on both backends: the same small scenario (a
 # solitary wave, H/h = 0.3, reflecting from a vertical wall on a flat bed, the
 # geometry of tests/test_solitary_wall.c at dp = 0.02 m) with --backend cpu
-# and --backend cuda, and the engineer-facing numbers of summary.json and the
+# and --backend cuda, in 2D and in a 3D flume 0.16 m wide (free-slip side
+# walls and the symmetry plane: the solver's mirror planes, on the GPU in
+# its tile force loop), and the engineer-facing numbers of summary.json and the
 # gauge series compared within the tolerances of BENCHMARKS.md ("assess end to
 # end, CPU vs CUDA"): the backends differ in float rounding (order of the
 # neighbour sums, FMA contraction, the GPU's square root and division), which
@@ -23,10 +25,16 @@ command -v nvidia-smi >/dev/null && nvidia-smi -L >/dev/null 2>&1 ||
   { echo "SKIP: no NVIDIA GPU (nvidia-smi -L)"; exit 77; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-cat > "$work/wall.yaml" <<'YAML'
-scenario: gpuwall
+for d in 2d 3d; do
+  extra=""
+  [ $d = 3d ] && extra="
+  dimensions: 3
+  width: 0.16 m"
+  cat > "$work/wall$d.yaml" <<YAML
+scenario: gpuwall$d
 water: {depth: 0.2 m}
-domain: {length: 3.787 m}
+domain:
+  length: 3.787 m$extra
 wall: {x: 3.287 m, height: 0.6 m, probes: 20}
 gauges: [{name: G1, x: 2.5 m}]
 loads:
@@ -34,24 +42,29 @@ loads:
 resolution: {dp: 0.02 m}
 run: {output_interval: 0.005 s}
 YAML
+done
 cd "$work" || exit 1
-# until the reflected crest is back at G1 (arrival at the wall 1.19 s)
-msg=$("$bin" assess wall.yaml --backend cuda --quiet --end-time 2.0 -o gpu 2>&1); rc=$?
-if [ $rc != 0 ] && grep -q "no usable GPU" <<<"$msg"; then
-  echo "SKIP: $msg"; exit 77
-fi
-[ $rc = 0 ] && ok "assess --backend cuda (exit 0)" || bad "assess --backend cuda: exit $rc: $msg"
-msg=$("$bin" assess wall.yaml --backend cpu --quiet --end-time 2.0 -o cpu 2>&1); rc=$?
-[ $rc = 0 ] && ok "assess --backend cpu (exit 0)" || bad "assess --backend cpu: exit $rc: $msg"
+for d in 2d 3d; do
+  # until the reflected crest is back at G1 (arrival at the wall 1.19 s)
+  msg=$("$bin" assess wall$d.yaml --backend cuda --quiet --end-time 2.0 -o gpu$d 2>&1); rc=$?
+  if [ $rc != 0 ] && grep -q "no usable GPU" <<<"$msg"; then
+    echo "SKIP: $msg"; exit 77
+  fi
+  [ $rc = 0 ] && ok "$d: assess --backend cuda (exit 0)" || bad "$d: assess --backend cuda: exit $rc: $msg"
+  msg=$("$bin" assess wall$d.yaml --backend cpu --quiet --end-time 2.0 -o cpu$d 2>&1); rc=$?
+  [ $rc = 0 ] && ok "$d: assess --backend cpu (exit 0)" || bad "$d: assess --backend cpu: exit $rc: $msg"
+done
 [ $fail = 0 ] || { echo "$fail failed"; exit 1; }
-python3 - <<'PY' || fail=$((fail+1))
-import csv, json
-a = json.load(open('cpu/summary.json'))
-b = json.load(open('gpu/summary.json'))
+for d in 2d 3d; do
+python3 - $d <<'PY' || fail=$((fail+1))
+import csv, json, sys
+d = sys.argv[1]
+a = json.load(open('cpu%s/summary.json' % d))
+b = json.load(open('gpu%s/summary.json' % d))
 bad = 0
 def check(what, ok, detail):
     global bad
-    print(('PASS ' if ok else 'FAIL ') + what + ': ' + detail)
+    print(('PASS ' if ok else 'FAIL ') + d + ': ' + what + ': ' + detail)
     bad += not ok
 check('backends named', a['backend'] == 'cpu' and b['backend'] == 'cuda',
       '%s / %s' % (a['backend'], b['backend']))
@@ -73,8 +86,8 @@ for key, tol in [('peak_force', 0.03), ('peak_force_boundary', 0.05), ('impulse'
           'cpu %.6g, cuda %.6g, %+.2f %%' % (x, y, 100 * (y - x) / abs(x)))
 # gauge G1 before the wave reaches the wall: the rounding has not grown yet
 H = 0.06
-ga = list(csv.DictReader(open('cpu/solitary_gauges.csv')))
-gb = list(csv.DictReader(open('gpu/solitary_gauges.csv')))
+ga = list(csv.DictReader(open('cpu%s/solitary_gauges.csv' % d)))
+gb = list(csv.DictReader(open('gpu%s/solitary_gauges.csv' % d)))
 n = min(len(ga), len(gb))
 pre = [abs(float(gb[i]['eta_G1_m']) - float(ga[i]['eta_G1_m']))
        for i in range(n) if float(ga[i]['time_s']) < 1.0]
@@ -85,4 +98,5 @@ check('gauge G1 over the record within 10 % of H', max(allt) <= 0.10 * H,
       'max |d| = %.3g H' % (max(allt) / H))
 raise SystemExit(1 if bad else 0)
 PY
+done
 [ $fail = 0 ] && echo "all passed" || { echo "$fail failed"; exit 1; }

@@ -570,6 +570,22 @@ static int render_full(const char *path, int *pages_out) {
   struct wl_report_table ltab = {"Probe pressures", lcols, 3, lcells, LONG_ROWS};
   STEP(wl_report_add_table(d, &ltab, &err));
 
+  /* A table too wide even at the smallest type: its words wrap (the
+   * widest left-aligned column takes what the others leave). */
+  struct wl_report_column wcols[] = {{"setting", NULL, WL_REPORT_ALIGN_AUTO, 0},
+                                     {"value", NULL, WL_REPORT_ALIGN_AUTO, 3},
+                                     {"reason", NULL, WL_REPORT_ALIGN_AUTO, 0}};
+  struct wl_report_cell wcells[] = {
+      {"dimensions", 0}, {NULL, 3.0},
+      {"wrapfirst the crater is axisymmetric and narrower than the flume, so its wave spreads "
+       "radially and a two-dimensional section of the flume cannot represent the decay of its "
+       "height with distance from the charge, which the wall sees as a much smaller load than "
+       "the plane wave of a section would give it; the plan therefore chooses three dimensions "
+       "wraplast", 0},
+      {"symmetry", 0}, {NULL, 1.0}, {"centreline", 0}};
+  struct wl_report_table wtab = {"Wrapped reasons", wcols, 3, wcells, 2};
+  STEP(wl_report_add_table(d, &wtab, &err));
+
   /* Plots. */
   STEP(wl_report_add_heading(d, 1, "Histories", &err));
   STEP(wl_report_add_heading(d, 2, "Free surface", &err));
@@ -813,7 +829,7 @@ static void inspect_full(const char *pdf, int pages) {
         "vertical exaggeration \xc3\x97" "10", "true scale", "depth: 0.36 m",
         "1 Peak loads", "2.1 Free surface", "Figure 7. Close to the wall at true scale.",
         "synthetic-seawall", "wallload ", "page 2", "Test Engineering Ltd",
-        "P69", "wall force [kN/m]"};
+        "P69", "wall force [kN/m]", "wrapfirst", "wraplast", "Wrapped reasons"};
     for (size_t i = 0; i < sizeof want / sizeof want[0]; i++) {
       int ok = contains(text, want[i]);
       printf("%s pdftotext shows '%s' [poppler pdftotext]\n", ok ? "PASS" : "FAIL", want[i]);

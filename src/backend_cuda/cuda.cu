@@ -42,7 +42,8 @@
  *    the candidates inside its support in a bit mask (a float test with a
  *    safe margin) and then evaluates only those (k_gather_tile).
  * The bookkeeping of wl_sph_gather_block (fluid then boundary sums, the
- * DDT2 switch, gravity) is mirrored in k_gather_fast and k_gather_tile: a
+ * DDT2 switch, gravity, the mirror planes' passes: mirror_fast) is mirrored
+ * in k_gather_fast and k_gather_tile: a
  * change there must be made here too (the test's comparison with the
  * reference loop catches a divergence). */
 #include <cuda_runtime.h>
@@ -279,18 +280,23 @@ static __device__ __forceinline__ void range_fast(const struct wl_sph_const *k,
                                                   const wl_real vi[3], wl_real rho_i,
                                                   wl_real inv_rho_i, wl_real p_i, int j0, int j1,
                                                   wl_real av, wl_real lam, wl_real r2_skip,
-                                                  struct acc1 *acc) {
+                                                  const int mirror, struct acc1 *acc) {
   const int az = DIM - 1;
   const double *__restrict__ px = e->pos[0];
   const double *__restrict__ py = e->pos[DIM == 3 ? 1 : 0];
   const double *__restrict__ pz = e->pos[az];
+  /* mirror 1 or 2: j's image in the plane y = k->mirror_y[mirror - 1], as
+   * wl_sph_gather_range */
+  const double y2 = DIM == 3 && mirror ? 2.0 * k->mirror_y[mirror - 1] : 0.0;
   for (int j = j0; j < j1; j++) {
+    const double yj = DIM != 3 ? 0.0 : mirror ? y2 - __ldg(py + j) : __ldg(py + j);
     const wl_real dx = (wl_real)(xi[0] - __ldg(px + j));
-    const wl_real dy = DIM == 3 ? (wl_real)(xi[1] - __ldg(py + j)) : WL_R(0.0);
+    const wl_real dy = DIM == 3 ? (wl_real)(xi[1] - yj) : WL_R(0.0);
     const wl_real dz = (wl_real)(xi[2] - __ldg(pz + j));
     const wl_real r2 = dx * dx + dy * dy + dz * dz;
     if (!(r2 < r2_skip)) continue;
-    const wl_real uxj = __ldg(e->vel[0] + j), uyj = DIM == 3 ? __ldg(e->vel[1] + j) : WL_R(0.0),
+    const wl_real vyj = DIM == 3 ? __ldg(e->vel[1] + j) : WL_R(0.0);
+    const wl_real uxj = __ldg(e->vel[0] + j), uyj = mirror ? -vyj : vyj,
                   uzj = __ldg(e->vel[az] + j);
     const wl_real rho_j = __ldg(e->rho + j), p_j = __ldg(e->press + j);
     wl_real inv_rho_j, vol_j;
@@ -311,6 +317,42 @@ static __device__ __forceinline__ void range_fast(const struct wl_sph_const *k,
     acc->wsum += o.wq;
     acc->visc = wl_sph_max_nonneg(acc->visc, o.visc);
   }
+}
+
+/* The mirror planes' passes of wl_sph_gather_block for one particle (3D,
+ * k->mirror set): the images of the fluid rows beside each plane into f,
+ * and for a fluid particle the images of the boundary rows into b. Called
+ * after the ordinary rows; f and b are separate sums, so each still gets
+ * its terms in the reference loop's order (ordinary rows, low plane, high
+ * plane). A particle away from the planes has no mirror rows. */
+template <int DIM, int LAM>
+static __device__ __forceinline__ void mirror_fast(const struct wl_sph_const *k,
+                                                   const struct wl_sph_grid *g,
+                                                   const struct wl_sph_eval *e, int cell,
+                                                   int fluid, const double xi[3],
+                                                   const wl_real vi[3], wl_real rho_i,
+                                                   wl_real inv_rho_i, wl_real p_i,
+                                                   wl_real r2_skip, struct acc1 *f,
+                                                   struct acc1 *b) {
+  if (DIM != 3 || !k->mirror) return;
+  const int *const bf = e->begin + g->n_cells, *const bb = e->begin;
+  int mf[2][6], ml[2][6], nm[2] = {0, 0};
+  for (int side = 0; side < 2; side++)
+    if (k->mirror & (1 << side)) nm[side] = wl_sph_cell_rows_mirror(g, cell, 0, side, mf[side], ml[side]);
+  for (int side = 0; side < 2; side++)
+    for (int r = 0; r < nm[side]; r++) {
+      if (fluid)
+        range_fast<DIM, LAM, 1, 1>(k, e, xi, vi, rho_i, inv_rho_i, p_i, bf[mf[side][r]],
+                                   bf[ml[side][r] + 1], k->av_ff, k->lam_ff, r2_skip, side + 1, f);
+      else
+        range_fast<DIM, LAM, 0, 0>(k, e, xi, vi, rho_i, inv_rho_i, p_i, bf[mf[side][r]],
+                                   bf[ml[side][r] + 1], k->av_fb, k->lam_fb, r2_skip, side + 1, f);
+    }
+  if (fluid)
+    for (int side = 0; side < 2; side++)
+      for (int r = 0; r < nm[side]; r++)
+        range_fast<DIM, LAM, 1, 0>(k, e, xi, vi, rho_i, inv_rho_i, p_i, bb[mf[side][r]],
+                                   bb[ml[side][r] + 1], k->av_fb, k->lam_fb, r2_skip, side + 1, b);
 }
 
 /* wl_sph_gather_block for one particle (lanes = 1, span 0) with range_fast. */
@@ -346,10 +388,11 @@ __global__ void __launch_bounds__(THREADS)
       struct acc1 b = f;
       for (int r = 0; r < nr; r++)
         range_fast<DIM, LAM, 1, 1>(&k, &e, xi, vi, rho_i, inv_rho_i, p_i, bf[first[r]],
-                                   bf[last[r] + 1], k.av_ff, k.lam_ff, r2_skip, &f);
+                                   bf[last[r] + 1], k.av_ff, k.lam_ff, r2_skip, 0, &f);
       for (int r = 0; r < nr; r++)
         range_fast<DIM, LAM, 1, 0>(&k, &e, xi, vi, rho_i, inv_rho_i, p_i, bb[first[r]],
-                                   bb[last[r] + 1], k.av_fb, k.lam_fb, r2_skip, &b);
+                                   bb[last[r] + 1], k.av_fb, k.lam_fb, r2_skip, 0, &b);
+      mirror_fast<DIM, LAM>(&k, &g, &e, cell, 1, xi, vi, rho_i, inv_rho_i, p_i, r2_skip, &f, &b);
       const wl_real ddt = (k.ddt == WL_SPH_DDT_FOURTAKAS && b.wsum > 0) ? WL_R(0.0) : f.ddt;
       e.ace[0][i] = f.a[0] + b.a[0] + k.gravity[0];
       if (DIM == 3) e.ace[1][i] = f.a[1] + b.a[1] + k.gravity[1];
@@ -359,7 +402,8 @@ __global__ void __launch_bounds__(THREADS)
     } else {
       for (int r = 0; r < nr; r++)
         range_fast<DIM, LAM, 0, 0>(&k, &e, xi, vi, rho_i, inv_rho_i, p_i, bf[first[r]],
-                                   bf[last[r] + 1], k.av_fb, k.lam_fb, r2_skip, &f);
+                                   bf[last[r] + 1], k.av_fb, k.lam_fb, r2_skip, 0, &f);
+      mirror_fast<DIM, LAM>(&k, &g, &e, cell, 0, xi, vi, rho_i, inv_rho_i, p_i, r2_skip, &f, &f);
       for (int a = 0; a < DIM; a++) e.ace[a][i] = 0;
       e.ar[i] = rho_i * f.cont;
       e.visc[i] = k.h * f.visc;
@@ -439,7 +483,8 @@ static __device__ __forceinline__ void tile_pairs(const struct wl_sph_const *k,
 template <int DIM, int LAM>
 __global__ void __launch_bounds__(THREADS, WL_TILE_MIN_BLOCKS)
     k_gather_tile(const struct wl_sph_const kp, const struct wl_sph_grid gp,
-                  const struct wl_sph_eval ep, int n, int nb, float skip2, struct dstats *st) {
+                  const struct wl_sph_eval ep, int n, int nb, float skip2, wl_real r2_skip,
+                  struct dstats *st) {
   __shared__ struct cand tile[THREADS / 32][TILE];
   const struct wl_sph_const k = kp;
   const struct wl_sph_grid g = gp;
@@ -540,6 +585,11 @@ __global__ void __launch_bounds__(THREADS, WL_TILE_MIN_BLOCKS)
       }
     }
   }
+  /* the mirror planes' rows, per thread (only the particles beside a plane
+   * have any); the tile loop above did the ordinary rows of f and b */
+  if (active)
+    mirror_fast<DIM, LAM>(&k, &g, &e, cx + nx * rest, fluid, xi, vi, rho_i, inv_rho_i, p_i, r2_skip,
+                          &f, &b);
   double a2 = 0, v2 = 0, vmax = 0;
   if (active) {
     if (fluid) {
@@ -728,10 +778,10 @@ static enum wl_status evaluate(struct gpu *c, double *const *pos, wl_real *const
   cudaStream_t s = c->stream;
   if (c->mode == MODE_TILE) {
     const float skip2 = (float)(4.0 * c->k.h_d * c->k.h_d * 1.0001);
-    if (c->dim == 3 && !lam) k_gather_tile<3, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, skip2, c->stats);
-    else if (c->dim == 3) k_gather_tile<3, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, skip2, c->stats);
-    else if (!lam) k_gather_tile<2, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, skip2, c->stats);
-    else k_gather_tile<2, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, skip2, c->stats);
+    if (c->dim == 3 && !lam) k_gather_tile<3, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, skip2, r2_skip, c->stats);
+    else if (c->dim == 3) k_gather_tile<3, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, skip2, r2_skip, c->stats);
+    else if (!lam) k_gather_tile<2, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, skip2, r2_skip, c->stats);
+    else k_gather_tile<2, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, skip2, r2_skip, c->stats);
   } else if (c->mode == MODE_FAST) {
     if (c->dim == 3 && !lam) k_gather_fast<3, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, r2_skip, c->stats);
     else if (c->dim == 3) k_gather_fast<3, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, r2_skip, c->stats);
@@ -932,9 +982,6 @@ static enum wl_status cuda_init(void **ctx, const struct wl_sph_config *cfg,
             : !strcmp(mode, "tile") ? MODE_TILE
             : !strcmp(mode, "fast") ? MODE_FAST
                                     : MODE_REF;
-  /* the mirror planes' passes are in wl_sph_gather only: the fast and
-   * tile loops do not have them */
-  if (k->mirror) c->mode = MODE_REF;
   if ((st = wl_sph_grid_make(cfg, k, &c->grid, err))) {
     cuda_free(c);
     return st;

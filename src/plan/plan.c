@@ -336,7 +336,65 @@ static void case_cost(const struct wl_scenario *s, struct wl_plan *p, double x_l
   *particle_steps = (double)(*n_fluid + *n_boundary) * t_end / p->dt;
 }
 
-static void plan_resolution(const struct wl_scenario *s, struct wl_plan *p) {
+/* "line" of a value for an error message, or "default". */
+static const char *where(const struct wl_scenario_value *v, char buf[32]) {
+  if (!v->line) return "default";
+  snprintf(buf, 32, "%d", v->line);
+  return buf;
+}
+
+/* Rows of dp across the modelled width (flume.c rounds it the same way). */
+static long modelled_rows(const struct wl_scenario *s, const struct wl_plan *p, int half) {
+  const long rows = lround(s->domain.width.q.si / (half ? 2 : 1) / p->dp);
+  return rows < 1 ? 1 : rows;
+}
+
+/* Whether two mirror planes `rows` rows of dp apart are far enough apart
+ * for the solver: more than one cell of the neighbour search (2h; cells.c
+ * checks the same on the grid it builds). */
+static int planes_apart(const struct wl_plan *p, long rows) {
+  return ceil((double)rows * p->dp / (2.0 * p->h_sml)) >= 2;
+}
+
+/* 3D: the side walls and the symmetry plane on the centreline (every flume
+ * scene is symmetric about it). auto takes the plane when the width is an
+ * even number of lattice rows, so that the half is whole rows and the
+ * modelled flume is the one the full width would give, and when the half
+ * is wide enough for its two planes (with free-slip side walls);
+ * centreline takes it always (the width then rounds to an even number of
+ * rows). A flume between free-slip walls narrower than the solver's
+ * mirror planes allow is refused. */
+static enum wl_status plan_sides(const struct wl_scenario *s, struct wl_plan *p,
+                                 struct wl_error *err) {
+  p->slip_walls = p->dims == 3 && s->domain.side_walls.choice == WL_SIDE_WALLS_FREE_SLIP;
+  p->symmetry = 0;
+  if (p->dims != 3) return WL_OK;
+  const struct wl_scenario_value *w = &s->domain.width;
+  char wbuf[32];
+  if (p->slip_walls && !planes_apart(p, modelled_rows(s, p, 0)))
+    return wl_error_set(err, WL_EINPUT,
+                        "%s:%s: domain.width: free-slip side walls %g m apart; they must be more "
+                        "than 2h = %.3g m (one cell of the neighbour search) apart; expected a "
+                        "wider flume, a smaller dp, or domain.side_walls: particles",
+                        s->path, where(w, wbuf), w->q.si, 2.0 * p->h_sml);
+  if (s->domain.symmetry.choice == WL_SYMMETRY_CENTRELINE) {
+    p->symmetry = 1;
+    if (p->slip_walls && !planes_apart(p, modelled_rows(s, p, 1)))
+      return wl_error_set(err, WL_EINPUT,
+                          "%s:%s: domain.symmetry: centreline: the half width, %g m, between the "
+                          "symmetry plane and a free-slip side wall is not more than 2h = %.3g m; "
+                          "expected domain.symmetry: none or auto, a wider flume or a smaller dp",
+                          s->path, where(&s->domain.symmetry, wbuf), modelled_rows(s, p, 1) * p->dp,
+                          2.0 * p->h_sml);
+  } else if (s->domain.symmetry.choice == WL_SYMMETRY_AUTO) {
+    const long rows = lround(w->q.si / p->dp);
+    p->symmetry = rows >= 2 && rows % 2 == 0 && (!p->slip_walls || planes_apart(p, rows / 2));
+  }
+  return WL_OK;
+}
+
+static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_plan *p,
+                                      struct wl_error *err) {
   p->fluid_area = wet_area(s, p->h, 0.0);
   p->land_length = fmin(s->domain.length.q.si - s->wall.x.q.si,
                         fmax(LAND_MIN, LAND_PER_HEIGHT * s->wall.height.q.si));
@@ -345,22 +403,14 @@ static void plan_resolution(const struct wl_scenario *s, struct wl_plan *p) {
   if (p->explosion.present) smallest = fmin(smallest, p->explosion.eta0);
   double ppH = s->resolution.particles_per_height.q.si;
   p->dp = s->resolution.dp.is_auto ? smallest / ppH : s->resolution.dp.q.si;
-  /* 3D: the symmetry plane on the centreline (every flume scene is
-   * symmetric about it). auto takes it when the width is an even number of
-   * lattice rows, so that the half is whole rows and the modelled flume is
-   * the one the full width would give; centreline takes it always (the
-   * width then rounds to an even number of rows). */
-  if (p->dims == 3 && s->domain.symmetry.choice != WL_SYMMETRY_NONE) {
-    const long rows = lround(s->domain.width.q.si / p->dp);
-    p->symmetry = s->domain.symmetry.choice == WL_SYMMETRY_CENTRELINE || (rows >= 2 && rows % 2 == 0);
-  }
-  p->slip_walls = p->dims == 3 && s->domain.side_walls.choice == WL_SIDE_WALLS_FREE_SLIP;
   if (!s->resolution.dp.is_auto && smallest / p->dp < 4)
     note(p, "dp = %g m gives only %.1f particles over the smallest wave height (%.3g m)", p->dp,
          smallest / p->dp, smallest);
   p->coefh = s->numerics.coefh.is_auto ? (p->dims == 2 ? WL_PLAN_COEFH_2D : WL_PLAN_COEFH_3D)
                                         : s->numerics.coefh.q.si;
   p->h_sml = p->coefh * sqrt((double)p->dims) * p->dp;
+  enum wl_status st = plan_sides(s, p, err);
+  if (st) return st;
   double h_max = p->h;
   if (p->solitary.present) h_max += p->solitary.wave.H;
   if (p->explosion.present) h_max = fmax(h_max, p->h + p->explosion.eta0);
@@ -395,6 +445,7 @@ static void plan_resolution(const struct wl_scenario *s, struct wl_plan *p) {
   if (p->explosion.present)
     p->gpu_seconds += fmax(p->explosion.end_time / p->dt * WL_PLAN_GPU_STEP_S,
                            p->explosion.particle_steps / gpu_rate);
+  return WL_OK;
 }
 
 enum wl_status wl_plan_make(const struct wl_scenario *s, struct wl_plan *p,
@@ -419,8 +470,7 @@ enum wl_status wl_plan_make(const struct wl_scenario *s, struct wl_plan *p,
     if (p->solitary.present && xg < p->solitary.x_left) p->solitary.x_left = fmax(0.0, xg);
     if (p->explosion.present && xg < p->explosion.x_left) p->explosion.x_left = fmax(0.0, xg);
   }
-  plan_resolution(s, p);
-  return WL_OK;
+  return plan_resolution(s, p, err);
 }
 
 void wl_plan_write(const struct wl_plan *p, FILE *out) {

@@ -17,6 +17,7 @@
 #define RULE_LIGHT 0.45
 #define CELL_BYTES 64      /* bytes of a formatted number */
 #define DEFAULT_SIG 3
+#define WRAP_MIN_W 60.0    /* narrowest text a too-wide table's words wrap into [pt] */
 
 struct tcell {
   const char *text;     /* what is printed (points into buf or the caller's text) */
@@ -194,12 +195,24 @@ static enum wl_status draw_table(struct wl_report_doc *d, const char *caption,
     size -= SIZE_STEP;
     total = measure(d, cols, n_cols, cells, n_rows, size, tc);
   }
-  if (total > CONTENT_W)
-    return wl_report_doc_fail(d, err, WL_EINPUT,
-                              "%s: table '%s': %d columns need %.0f mm at %.1f pt; the page has "
-                              "%.0f mm",
-                              d->path, caption ? caption : "", n_cols, total / WL_REPORT_PT_PER_MM,
-                              size, CONTENT_W / WL_REPORT_PT_PER_MM);
+  /* Still too wide at the smallest type: the widest left-aligned column
+   * (words: a note, a reason) takes the width the others leave and its
+   * cells wrap onto more lines. */
+  int wrap_col = -1;
+  if (total > CONTENT_W) {
+    for (int c = 0; c < n_cols; c++)
+      if (tc[c].align == WL_REPORT_ALIGN_LEFT && (wrap_col < 0 || tc[c].width > tc[wrap_col].width))
+        wrap_col = c;
+    const double avail = wrap_col < 0 ? 0 : CONTENT_W - (total - tc[wrap_col].width);
+    if (avail < 2.0 * CELL_PAD + WRAP_MIN_W)
+      return wl_report_doc_fail(d, err, WL_EINPUT,
+                                "%s: table '%s': %d columns need %.0f mm at %.1f pt; the page has "
+                                "%.0f mm",
+                                d->path, caption ? caption : "", n_cols,
+                                total / WL_REPORT_PT_PER_MM, size, CONTENT_W / WL_REPORT_PT_PER_MM);
+    tc[wrap_col].width = avail;
+    total = CONTENT_W;
+  }
   double row_h = ROW_LEADING * size, head_h = head_height(cols, n_cols, size);
   int first_rows = n_rows < 3 ? n_rows : 3;
   /* Caption, header and the first rows stay together. */
@@ -229,21 +242,44 @@ static enum wl_status draw_table(struct wl_report_doc *d, const char *caption,
   }
   draw_head(d, cols, tc, n_cols, size, total);
   for (int r = 0; r < n_rows; r++) {
-    if (d->y + row_h + 2.0 > CONTENT_BOTTOM) {
+    struct text_span *wrapped = NULL;
+    size_t n_wrapped = 1;
+    if (wrap_col >= 0) {
+      st = wl_report_text_break(d, FONT_SANS, size, tc[wrap_col].width - 2.0 * CELL_PAD,
+                                cells[(size_t)r * n_cols + wrap_col].text, &wrapped, &n_wrapped,
+                                err);
+      if (st != WL_OK) {
+        d->failed = st;
+        return st;
+      }
+      if (n_wrapped < 1) n_wrapped = 1;
+    }
+    const double this_h = row_h * (double)n_wrapped;
+    if (d->y + this_h + 2.0 > CONTENT_BOTTOM) {
       rule(cr, MARGIN_X, total, d->y + 1.0, RULE_LIGHT);
       st = wl_report_break_page(d, err);
       if (st == WL_OK) st = wl_report_doc_ensure_page(d, err);
-      if (st != WL_OK) return st;
+      if (st != WL_OK) {
+        free(wrapped);
+        return st;
+      }
       draw_head(d, cols, tc, n_cols, size, total);
     }
     double x = MARGIN_X, baseline = d->y + 0.75 * row_h;
     cairo_set_source_rgb(cr, 0, 0, 0);
     for (int c = 0; c < n_cols; c++) {
       const struct tcell *cell = &cells[(size_t)r * n_cols + c];
-      put(d, FONT_SANS, size, &tc[c], x, baseline, cell->text, cell->numeric ? CELL_NUMBER : CELL_TEXT);
+      if (c == wrap_col && wrapped)
+        for (size_t k = 0; k < n_wrapped; k++)
+          wl_report_text_draw_span(d, FONT_SANS, size, x + CELL_PAD, baseline + (double)k * row_h,
+                                   cell->text, wrapped[k]);
+      else
+        put(d, FONT_SANS, size, &tc[c], x, baseline, cell->text,
+            cell->numeric ? CELL_NUMBER : CELL_TEXT);
       x += tc[c].width;
     }
-    d->y += row_h;
+    free(wrapped);
+    d->y += this_h;
   }
   d->y += 1.0;
   rule(cr, MARGIN_X, total, d->y, RULE_HEAVY);

@@ -32,14 +32,17 @@ enum wl_status wl_sph_grid_make(const struct wl_sph_config *cfg, const struct wl
   g->n_cells = (int)cells;
   /* the mirror passes of sph/gather.h visit the first and the last two
    * cell layers in y; a plane's images of the other plane's images are
-   * left out, so the planes must be two cells (4h) apart */
+   * left out: they are 2W from their particle (W the planes' distance), out
+   * of reach (2h) when W > 2h, which two cell layers (W > one cell)
+   * ensure */
   if (((k->mirror & 1) && k->mirror_y[0] != cfg->lo[1]) ||
       ((k->mirror & 2) && k->mirror_y[1] != cfg->hi[1]))
     return wl_error_set(err, WL_EINPUT, "mirror planes must be the domain box's y faces (y = %g "
                         "and %g m)", cfg->lo[1], cfg->hi[1]);
   if (k->mirror == 3 && g->n[1] < 2)
-    return wl_error_set(err, WL_EINPUT, "mirror planes at y = %g and %g m: %g m apart, less than "
-                        "4h = %g m", cfg->lo[1], cfg->hi[1], cfg->hi[1] - cfg->lo[1], 2 * g->cell);
+    return wl_error_set(err, WL_EINPUT, "mirror planes at y = %g and %g m: %g m apart; they must "
+                        "be more than one cell (2h = %g m) apart", cfg->lo[1], cfg->hi[1],
+                        cfg->hi[1] - cfg->lo[1], g->cell);
   return WL_OK;
 }
 
