@@ -122,8 +122,15 @@ int main(void) {
         {"{length: 45 m, width: 17 m}", "solitary: {height: 0.5 m}", 2, 0, "a solitary wave: 2D"},
         {"{length: 45 m, width: 17 m}", "explosion: {charge: 32 lb, at: 15 m, model: thrown-mass}",
          2, 0, "the thrown-mass model (2D only): 2D"},
-        {"{length: 45 m, width: 3 m}", "explosion: {eta0: 0.5 m, r0: 1 m, at: 15 m}", 3, 1,
-         "eta0 + r0 (2 r0 = 2 m) in a 3 m flume: 3D, 3 m = 6 rows of dp = 0.5 m: symmetry plane"},
+        {"{length: 45 m, width: 4 m}", "explosion: {eta0: 0.5 m, r0: 1 m, at: 15 m}", 3, 1,
+         "eta0 + r0 (2 r0 = 2 m) in a 4 m flume: 3D, 4 m = 8 rows of dp = 0.5 m: symmetry plane"},
+        /* the half between the symmetry plane and a free-slip wall must be
+         * more than 2h = 2 x 1.0 sqrt(3) x 0.5 m = 1.732 m (3D, coefh 1.0) */
+        {"{length: 45 m, width: 3 m}", "explosion: {eta0: 0.5 m, r0: 1 m, at: 15 m}", 3, 0,
+         "... a 3 m flume = 6 rows: its half, 1.5 m, is within 2h = 1.73 m: no symmetry plane"},
+        {"{length: 45 m, width: 3 m, side_walls: particles}",
+         "explosion: {eta0: 0.5 m, r0: 1 m, at: 15 m}", 3, 1,
+         "... with particle side walls it has one mirror plane: symmetry plane"},
         {"{length: 45 m, width: 3.5 m}", "explosion: {eta0: 0.5 m, r0: 1 m, at: 15 m}", 3, 0,
          "... a 3.5 m flume = 7 rows: no symmetry plane (auto)"},
         {"{length: 45 m, width: 3.5 m, symmetry: centreline}",
