@@ -50,6 +50,28 @@ m = max(float(r['force_filtered_N_per_m']) for r in rows if float(r['time_s']) >
 v = s['peak_force']['value']
 raise SystemExit(0 if abs(m - v) <= 1e-5 * abs(v) else 1)
 PY
+# the late-peak caution: present exactly when the filtered force's maximum
+# (recomputed here from the CSV) lies in the last tenth of the searched
+# record. The solitary wave alone: at 0.9 s its crest is just reaching the
+# wall (caution), by 1.6 s it has passed (none).
+sed '/explosion:/d; s/scenario: tiny/scenario: late/' tiny.yaml > late.yaml
+for end in 0.9 1.6; do
+  msg=$("$bin" assess late.yaml --quiet --end-time $end -o late$end 2>&1) || bad "late.yaml: $msg"
+  python3 - late$end $end <<'PY' && ok "late-peak caution at end time $end s matches the stored series" || bad "late-peak caution at end time $end s"
+import json, csv, sys
+d, end = sys.argv[1], float(sys.argv[2])
+s = json.load(open(d + '/summary.json'))['cases']['solitary']
+rows = list(csv.DictReader(open(d + '/solitary_wall.csv')))
+t0 = s['peaks_from']['value']
+t1 = float(rows[-1]['time_s'])
+tp = max((float(r['force_filtered_N_per_m']), float(r['time_s'])) for r in rows
+         if float(r['time_s']) >= t0)[1]
+late = tp >= t1 - 0.1 * (t1 - t0)
+has = 'caution' in s and 'last tenth' in s['caution']
+print('  peak at %.3f s, searched %.3f..%.3f s: late %s, caution %s' % (tp, t0, t1, late, has))
+raise SystemExit(0 if late == has and late == (end < 1.0) else 1)
+PY
+done
 msg=$("$bin" assess tiny.yaml --quiet --end-time 0.1 2>&1); rc=$?
 [ $rc = 2 ] && grep -q -- "--force" <<<"$msg" && ok "existing output directory refused (exit 2)" || bad "overwrite: exit $rc: $msg"
 "$bin" assess tiny.yaml --quiet --force --end-time 0.1 >/dev/null 2>&1 && ok "--force writes into it" || bad "--force failed"

@@ -101,6 +101,10 @@ struct wl_case_result {
    * explosion: 30 N/m at t = 0.02 s against a 17.7 N/m static force, with
    * its wave arriving at 5.8 s). The impulse runs over the whole record. */
   double peak_from;
+  /* A caution about the result, empty when there is none: the peak force
+   * came in the last tenth of the record, so a larger load may follow
+   * (case_caution in assess.c). */
+  char caution[320];
   struct wl_flume flume;    /* geometry, probes, gauges */
   struct wl_record rec;
   struct wl_case_loads loads;

@@ -374,6 +374,23 @@ void wl_assess_result_clear(struct wl_assess_result *res) {
   memset(res, 0, sizeof *res);
 }
 
+/* Late peak: the planned end time is an estimate (plan.c: the solitary
+ * wave's passage, the explosion train's travel at 2/3 of sqrt(g h)); when
+ * the filtered peak force falls in the last tenth of the searched record
+ * the load may still be rising (seawall.yaml's explosion at 8 m peaked
+ * 0.5 s before its end), and the result says so rather than passing the
+ * record's last maximum off as the peak. */
+static void case_caution(struct wl_case_result *c) {
+  c->caution[0] = '\0';
+  const double t0 = c->peak_from, t1 = c->t_reached, tp = c->loads.force_peak.time;
+  if (c->status != WL_OK || !c->rec.n || !(t1 > t0) || !isfinite(tp)) return;
+  if (tp >= t1 - 0.1 * (t1 - t0))
+    snprintf(c->caution, sizeof c->caution,
+             "the peak force comes at t = %.3g s, in the last tenth of the record (%.3g to %.3g "
+             "s): a larger load may follow; run longer (run.end_time)",
+             tp, t0, t1);
+}
+
 enum wl_status wl_assess_case(const struct wl_scenario *s, const struct wl_plan *plan,
                               enum wl_load_case load, const struct wl_assess_opts *opts,
                               const char *snapshots, struct wl_case_result *c,
@@ -408,6 +425,7 @@ enum wl_status wl_assess_case(const struct wl_scenario *s, const struct wl_plan 
     if (c->status == WL_OK) *err = lerr;
     return c->status ? c->status : st;
   }
+  case_caution(c);
   return c->status;
 }
 

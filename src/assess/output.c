@@ -324,6 +324,10 @@ static enum wl_status write_summary(const struct wl_scenario *s, const struct wl
       put(&t, ",\n      \"stopped\": ");
       jstr(&t, c->message);
     }
+    if (c->caution[0]) {
+      put(&t, ",\n      \"caution\": ");
+      jstr(&t, c->caution);
+    }
     put(&t, ",\n");
     char filt[96];
     snprintf(filt, sizeof filt, "pressure probes, low-pass %.4g Hz", l->cutoff);
@@ -508,6 +512,7 @@ static enum wl_status write_case_h5(struct wl_store *h5, const struct wl_case_re
     st = wl_store_attr_text(h5, g, "side_walls", f->slip_walls ? "free-slip" : "particles", err);
   if (!st) st = wl_store_attr_text(h5, g, "status", status_word(c->status), err);
   if (!st && c->status != WL_OK) st = wl_store_attr_text(h5, g, "stopped", c->message, err);
+  if (!st && c->caution[0]) st = wl_store_attr_text(h5, g, "caution", c->caution, err);
   return st;
 }
 

@@ -146,6 +146,7 @@ static void print_case(const struct wl_case_result *c) {
   printf("  %-34s %12.5g m\n", "max run-up at the wall", l->runup);
   printf("  %-34s %12.5g s\n", "rise time", l->force_peak.rise_time);
   printf("  %-34s %12.5g s\n", "load duration", l->force_peak.duration);
+  if (c->caution[0]) printf("  caution: %s\n", c->caution);
 }
 
 static void print_convergence(const struct wl_case_result *c,

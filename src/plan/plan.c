@@ -8,10 +8,14 @@
 
 #include "wallload/units.h"
 
-/* Fraction of a wave's length that must pass the wall for the load to have
- * decayed: the load lasts about one effective wavelength at celerity c; twice
- * that covers run-down and the reflected wave leaving the wall. */
-#define LOAD_PASSES 2.0
+/* Wave lengths (at the celerity offshore) that must pass the wall after the
+ * crest for the load to have decayed: the rear half of the wave (its tail
+ * at 1 % of H) passes in half a length, the other half covers run-down and
+ * overtopping water coming to rest. A wave keeps its duration while it
+ * shoals, so the offshore celerity is the right one here. Two lengths, as
+ * before 2026-11-23, spent a third of seawall.yaml's solitary case on
+ * still water. */
+#define LOAD_PASSES 1.0
 /* Effective solitary wavelength: the distance over which eta > 1 % of H is
  * 2 arccosh(10)/K (first order), about 6/K. */
 #define SOLITARY_LENGTH_FACTOR 6.0
@@ -92,6 +96,27 @@ static enum wl_status plan_dims(const struct wl_scenario *s, struct wl_plan *p,
   return WL_OK;
 }
 
+/* Time [s] a long wave takes from x0 to x1 > x0 over the scenario's bed:
+ * the integral of dx / c(x), with c(x) = c_flat sqrt((d(x) + a) / (h + a))
+ * (shallow-water scaling of the celerity c_flat it has on the flat depth
+ * h; d(x) the still depth, a the wave's amplitude, 0 for a linear wave).
+ * Shoaling slows a wave: seawall.yaml's wave reaches its 0.06 m deep toe
+ * at half its offshore speed. The depth is floored at a tenth of h + a (a
+ * dry toe: the wave runs up a beach to reach the wall). */
+static double travel_time(const struct wl_scenario *s, double h, double a, double c_flat,
+                          double x0, double x1) {
+  enum { STEPS = 400 };
+  if (!(x1 > x0)) return 0.0;
+  const double dx = (x1 - x0) / STEPS;
+  double t = 0.0;
+  for (int i = 0; i < STEPS; i++) {
+    const double x = x0 + (i + 0.5) * dx;
+    const double depth = fmax(h - wl_scenario_bed_z(s, x) + a, 0.1 * (h + a));
+    t += dx / (c_flat * sqrt(depth / (h + a)));
+  }
+  return t;
+}
+
 static enum wl_status plan_solitary(const struct wl_scenario *s, struct wl_plan *p,
                                     struct wl_error *err) {
   struct wl_plan_solitary *ps = &p->solitary;
@@ -116,7 +141,7 @@ static enum wl_status plan_solitary(const struct wl_scenario *s, struct wl_plan 
     st = wl_waves_goring_init(&ps->goring, p->h, H, p->g, 0.002, err);
     if (st) return st;
     /* The crest leaves the paddle about lambda/c after the start. */
-    ps->arrival_time = ps->goring.lambda / c + xw / c;
+    ps->arrival_time = ps->goring.lambda / c + travel_time(s, p->h, H, c, 0.0, xw);
     ps->fits = 1;
   } else {
     /* auto: the wave's front (1 % of H) just reaches the first slope's toe
@@ -143,7 +168,7 @@ static enum wl_status plan_solitary(const struct wl_scenario *s, struct wl_plan 
       note(p, "the %.3g m solitary wave is %.3g m long (2 x 3/K) and does not fit seaward of the "
               "wall at x = %g m: its case cannot run (wall.x >= %.3g m needed)",
            H, length, xw, length);
-    ps->arrival_time = (xw - ps->crest_x0) / c;
+    ps->arrival_time = travel_time(s, p->h, H, c, ps->crest_x0, xw);
     /* Model only what the wave needs: the flume starts behind its tail. */
     ps->x_left = fmax(0.0, ps->crest_x0 - 0.5 * length);
   }
@@ -266,11 +291,12 @@ static enum wl_status plan_explosion(const struct wl_scenario *s, struct wl_plan
             "the start; the empirical crater formulae do not cover this",
          px->eta0, p->h);
   double c_lin = sqrt(p->g * p->h);
-  px->arrival_time = (xw - px->x_center - px->extent) / c_lin;
+  px->arrival_time = travel_time(s, p->h, 0.0, c_lin, px->x_center + px->extent, xw);
   /* The explosion's wave train is dispersive: shorter waves travel slower
    * than sqrt(g h). Run until the slowest part that matters (the train
    * behind the leading wave) has reached the wall. */
-  px->end_time = EXPLOSION_TRAIN_FACTOR * (xw - px->x_center + 2.0 * px->extent) / c_lin;
+  px->end_time =
+      EXPLOSION_TRAIN_FACTOR * travel_time(s, p->h, 0.0, c_lin, px->x_center - 2.0 * px->extent, xw);
   /* The left end may come as close as lets the wave reflected there reach
    * the wall only after the end time: it travels 2 (x_c - extent - x_left)
    * further than the direct wave. */

@@ -354,6 +354,7 @@ static enum wl_status read_case(hid_t file, const char *file_name, int index,
     *attrs[i].v = attr_double(grp, attrs[i].name);
   attr_text(grp, "status", c->status, sizeof c->status);
   attr_text(grp, "stopped", c->stopped, sizeof c->stopped);
+  attr_text(grp, "caution", c->caution, sizeof c->caution);
   H5Gclose(grp);
 
   void *data;

@@ -43,6 +43,7 @@ struct wl_report_case {
   char name[32];
   char status[32];    /* "complete", "unstable", "interrupted", "failed" ("" not stored) */
   char stopped[2048]; /* why it stopped ("" when complete) */
+  char caution[512];  /* a caution about the result (late peak; "" when none) */
   /* scalar attributes (NAN when absent) */
   double dp, h, c0, particles, fluid_particles, steps, runtime, end_time, time_reached;
   double cutoff;        /* low-pass cut-off of the filtered series [Hz] */

@@ -247,6 +247,9 @@ static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
     if (cs[i].n == 0)
       put(&b, "It stored no samples at all. ");
   }
+  for (int i = 0; i < WL_REPORT_N_CASES; i++)
+    if (cs[i].present && cs[i].caution[0])
+      put(&b, "Caution, %s case: %s. ", cs[i].name, cs[i].caution);
 }
 
 enum wl_status wl_report_render_title(struct wl_report_ctx *c, const struct wl_report_section *s,
