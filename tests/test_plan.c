@@ -85,7 +85,8 @@ int main(void) {
   wl_scenario_clear(&s);
   /* The GPU runtime estimate of `check` against what scenarios/seawall.yaml
    * took on the H100 (BENCHMARKS.md "assess end to end, CPU vs CUDA",
-   * 2026-11-23, the explosion at 12 m: 7.1 s + 10.1 s for its two cases):
+   * 2026-11-23, the explosion at 12 m, its end time from the group
+   * velocity, an absorbing seaward end: 7.4 s + 18.9 s for its two cases):
    * a measurement, not this code's output. Within 25 %: an estimate, not a
    * prediction to the second. */
   {
@@ -97,11 +98,46 @@ int main(void) {
     wl_error_clear(&err);
     wl_scenario_init(&sw);
     if (wl_scenario_load(path, &sw, &err) == WL_OK && wl_plan_make(&sw, &pw, &err) == WL_OK)
-      CHECK_REL(pw.gpu_seconds, 7.1 + 10.1, 0.25,
+      CHECK_REL(pw.gpu_seconds, 7.4 + 18.9, 0.25,
                 "GPU runtime estimate of seawall.yaml vs its H100 run (BENCHMARKS.md)");
     else
       printf("FAIL seawall.yaml: %s\n", err.msg), wl_test_failures++;
     wl_scenario_clear(&sw);
+  }
+  /* The explosion's end time: the train's waves of the crater's diameter
+   * (lambda = 2 r0) must have reached the wall at their group velocity.
+   * A small crater in deep water (r0 = 0.25 m, h = 5 m: k h = 63) has the
+   * deep-water group velocity c_g = sqrt(g / k) / 2, k = 2 pi / lambda
+   * (Lamb, Hydrodynamics, section 236), from the crater's outer edge
+   * (x = 15 m - extent) to the wall (40 m); the leading edge's 1.5 x
+   * travel at sqrt(g h) is far shorter. A crater wide against the depth
+   * (r0 = 2 m in 0.5 m) is not dispersive: 1.5 x its long-wave travel from
+   * 2 extents behind the centre. The seaward end absorbs over four extents
+   * (or two depths), from two extents behind the centre. */
+  {
+    const char *text =
+        "scenario: t\nwater: {depth: 5 m}\ndomain: {length: 45 m}\n"
+        "wall: {x: 40 m, height: 10 m}\nloads: {explosion: {eta0: 0.1 m, r0: 0.25 m, at: 15 m}}\n"
+        "resolution: {dp: 0.05 m}\n";
+    if (make(text, &s, &p)) {
+      const double g = 9.81, k = 2 * 3.14159265358979 / 0.5, e = p.explosion.extent;
+      CHECK_REL(p.explosion.end_time, (40.0 - (15.0 - e)) / (0.5 * sqrt(g / k)), 1e-3,
+                "explosion end time: deep-water group velocity of lambda = 2 r0 (Lamb 236)");
+      CHECK_REL(p.explosion.absorber, fmax(4 * e, 10.0), 1e-12, "absorbing zone: 2 depths");
+      CHECK_REL(p.explosion.x_left, 15.0 - 2 * e - 10.0, 1e-12,
+                "the flume starts an absorbing zone behind the crater");
+    }
+    wl_scenario_clear(&s);
+    text = "scenario: t\nwater: {depth: 0.5 m}\ndomain: {length: 45 m}\n"
+           "wall: {x: 40 m, height: 2 m}\nloads: {explosion: {eta0: 0.1 m, r0: 2 m, at: 15 m}}\n"
+           "resolution: {dp: 0.05 m}\n";
+    if (make(text, &s, &p)) {
+      const double e = p.explosion.extent;
+      CHECK_REL(p.explosion.end_time, 1.5 * (40.0 - (15.0 - 2 * e)) / sqrt(9.81 * 0.5), 1e-3,
+                "explosion end time, crater wide against the depth: 1.5 x long-wave travel");
+      CHECK_REL(p.explosion.absorber, 4 * e, 1e-12, "absorbing zone: 4 extents");
+    }
+    wl_scenario_clear(&s);
   }
   /* domain.dimensions auto (plan_dims): 2D unless an axisymmetric crater
    * is narrower than the flume. Seed 001: 32 lb gives R0 = 8.28 m (Van

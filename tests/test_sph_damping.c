@@ -27,9 +27,9 @@ static void check_zone(double x0, double x1, double rate) {
   wl_error_clear(&err);
   struct wl_sph_params prm;
   wl_sph_params_default(&prm, 2, 0.01, 1.0);
-  prm.damp_x0 = x0;
-  prm.damp_x1 = x1;
-  prm.damp_rate = rate;
+  prm.damp_x0[0] = x0;
+  prm.damp_x1[0] = x1;
+  prm.damp_rate[0] = rate;
   struct wl_sph_const k;
   if (wl_sph_const_make(&prm, &k, &err) != WL_OK) {
     printf("FAIL const: %s\n", err.msg);
@@ -102,12 +102,12 @@ static void check_scenario(const char *far_end, int want_zone) {
   const struct wl_sph_params *prm = &f.cfg.prm;
   if (want_zone) {
     const double x_end = 3.0 + plan.land_length;
-    CHECK_TRUE(prm->damp_rate > 0, "far_end: damping switches the zone on");
-    CHECK_REL(prm->damp_x1, x_end, 1e-12, "the zone reaches the end of the land");
-    CHECK_REL(prm->damp_x0, x_end - 0.5 * plan.land_length, 1e-12,
+    CHECK_TRUE(prm->damp_rate[0] > 0, "far_end: damping switches the zone on");
+    CHECK_REL(prm->damp_x1[0], x_end, 1e-12, "the zone reaches the end of the land");
+    CHECK_REL(prm->damp_x0[0], x_end - 0.5 * plan.land_length, 1e-12,
               "the zone covers the far half of the land");
   } else {
-    CHECK_TRUE(prm->damp_rate == 0, "far_end: wall has no damping zone");
+    CHECK_TRUE(prm->damp_rate[0] == 0, "far_end: wall has no damping zone");
   }
   wl_flume_clear(&f);
   wl_scenario_clear(&s);

@@ -238,9 +238,18 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
     /* over the far half of the land, at a rate that stops water arriving at
      * the long-wave speed within about a tenth of the zone's crossing time */
     const double x_end = s->wall.x.q.si + plan->land_length, zone = 0.5 * plan->land_length;
-    f->cfg.prm.damp_x0 = x_end - zone;
-    f->cfg.prm.damp_x1 = x_end;
-    f->cfg.prm.damp_rate = 10.0 * sqrt(plan->g * depth) / zone;
+    f->cfg.prm.damp_x0[0] = x_end - zone;
+    f->cfg.prm.damp_x1[0] = x_end;
+    f->cfg.prm.damp_rate[0] = 10.0 * sqrt(plan->g * depth) / zone;
+  }
+  if (load == WL_CASE_EXPLOSION && plan->explosion.absorber > 0) {
+    /* the seaward end absorbs the waves running away from the wall
+     * (plan.c): the flume ends just behind the crater instead of far
+     * enough back for their reflection to arrive after the end time */
+    const double zone = plan->explosion.absorber;
+    f->cfg.prm.damp_x0[1] = x_left + zone;
+    f->cfg.prm.damp_x1[1] = x_left;
+    f->cfg.prm.damp_rate[1] = 10.0 * sqrt(plan->g * depth) / zone;
   }
   /* 3D mirror planes (flume.h): y = 0 is the centreline (symmetry) or a
    * free-slip side wall; y = width a free-slip side wall */

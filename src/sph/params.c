@@ -60,10 +60,12 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
     return bad(err, "rho_min_factor", prm->rho_min_factor, "must be in [0, 1)");
   if (!(prm->rho_max_factor > 1)) return bad(err, "rho_max_factor", prm->rho_max_factor, "must be > 1");
   if (!(prm->penetration > 0)) return bad(err, "penetration", prm->penetration, "must be > 0 (units of dp)");
-  if (!(prm->damp_rate >= 0 && isfinite(prm->damp_rate)))
-    return bad(err, "damp_rate", prm->damp_rate, "must be >= 0 and finite [1/s]");
-  if (prm->damp_rate > 0 && !(fabs(prm->damp_x1 - prm->damp_x0) > 0))
-    return bad(err, "damp_x1", prm->damp_x1, "must differ from damp_x0 (the zone's length)");
+  for (int z = 0; z < WL_SPH_DAMP_ZONES; z++) {
+    if (!(prm->damp_rate[z] >= 0 && isfinite(prm->damp_rate[z])))
+      return bad(err, "damp_rate", prm->damp_rate[z], "must be >= 0 and finite [1/s]");
+    if (prm->damp_rate[z] > 0 && !(fabs(prm->damp_x1[z] - prm->damp_x0[z]) > 0))
+      return bad(err, "damp_x1", prm->damp_x1[z], "must differ from damp_x0 (the zone's length)");
+  }
 
   if ((prm->mirror_lo || prm->mirror_hi) && prm->dim != 3)
     return bad(err, "mirror_lo/mirror_hi", 1, "mirror planes need dim 3 (they are planes y = const)");
@@ -106,11 +108,12 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
   k->rho_min = prm->rho_min_factor * prm->rho0;
   k->rho_max = prm->rho_max_factor * prm->rho0;
   k->penetration = prm->penetration * prm->dp;
-  if (prm->damp_rate > 0) {
-    k->damp_x0 = prm->damp_x0;
-    k->damp_inv_len = 1.0 / (prm->damp_x1 - prm->damp_x0);
-    k->damp_rate = prm->damp_rate;
-  }
+  for (int z = 0; z < WL_SPH_DAMP_ZONES; z++)
+    if (prm->damp_rate[z] > 0) {
+      k->damp_x0[z] = prm->damp_x0[z];
+      k->damp_inv_len[z] = 1.0 / (prm->damp_x1[z] - prm->damp_x0[z]);
+      k->damp_rate[z] = prm->damp_rate[z];
+    }
   k->mirror = (prm->mirror_lo ? 1 : 0) | (prm->mirror_hi ? 2 : 0);
   k->mirror_y[0] = prm->mirror_lo ? prm->mirror_y_lo : 0.0;
   k->mirror_y[1] = prm->mirror_hi ? prm->mirror_y_hi : 0.0;

@@ -49,6 +49,8 @@ typedef float wl_real;
 /* Largest dimension and number of moving bodies (paddles) a run may have. */
 #define WL_SPH_DIM_MAX 3
 #define WL_SPH_BODIES_MAX 8
+/* Damping zones along x (sph/params.h). */
+#define WL_SPH_DAMP_ZONES 2
 
 /* OpenMP SIMD hint for the neighbour loops. It permits the compiler to
  * reorder the listed sums (vector lanes), which changes rounding but not the

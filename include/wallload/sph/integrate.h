@@ -78,13 +78,14 @@ WL_HD static WL_INLINE void wl_sph_correct(const int dim, const struct wl_sph_co
         p->vel[1][i] = -p->vel[1][i];
       }
     }
-    if (k->damp_rate > 0) {
-      double w = (p->pos[0][i] - k->damp_x0) * k->damp_inv_len;
-      w = w < 0 ? 0 : w > 1 ? 1 : w;
-      double f = 1.0 - dt * k->damp_rate * w * w;
-      f = f < 0 ? 0 : f;
-      for (int a = 0; a < dim; a++) p->vel[a][i] = (wl_real)(f * (double)p->vel[a][i]);
-    }
+    for (int z = 0; z < WL_SPH_DAMP_ZONES; z++)
+      if (k->damp_rate[z] > 0) {
+        double w = (p->pos[0][i] - k->damp_x0[z]) * k->damp_inv_len[z];
+        w = w < 0 ? 0 : w > 1 ? 1 : w;
+        double f = 1.0 - dt * k->damp_rate[z] * w * w;
+        f = f < 0 ? 0 : f;
+        for (int a = 0; a < dim; a++) p->vel[a][i] = (wl_real)(f * (double)p->vel[a][i]);
+      }
   } else {
     p->rho[i] = rho > k->rho0 ? rho : k->rho0;
     if (p->kind[i] == WL_KIND_MOVING)

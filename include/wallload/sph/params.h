@@ -56,12 +56,14 @@ struct wl_sph_params {
   double rho_max_factor;    /* ... above rho_max_factor rho0 (DualSPHysics RhopOut); 1.3 */
   double penetration;       /* fluid depth behind a wall face that counts as crossing
                                it, in units of dp [-]; default 0.5 */
-  /* Damping zone along x (DualSPHysics "Damping"): fluid velocities are
-   * relaxed towards rest at the rate damp_rate w^2, w rising linearly from 0
-   * at x = damp_x0 to 1 at x = damp_x1 (either order) and 1 beyond. Off when
+  /* Damping zones along x (DualSPHysics "Damping"), up to WL_SPH_DAMP_ZONES
+   * (the flume uses zone 0 beyond the seawall, zone 1 at its seaward end):
+   * in zone z, fluid velocities are relaxed towards rest at the rate
+   * damp_rate[z] w^2, w rising linearly from 0 at x = damp_x0[z] to 1 at
+   * x = damp_x1[z] (either order) and 1 beyond. A zone is off when its
    * damp_rate is 0 (the default). */
-  double damp_x0, damp_x1;  /* [m] */
-  double damp_rate;         /* full-strength relaxation rate [1/s]; 0: no zone */
+  double damp_x0[WL_SPH_DAMP_ZONES], damp_x1[WL_SPH_DAMP_ZONES]; /* [m] */
+  double damp_rate[WL_SPH_DAMP_ZONES]; /* full-strength relaxation rate [1/s]; 0: none */
   /* Mirror planes (3D only) at the domain box's low and high y faces
    * (cfg->lo[1], cfg->hi[1]): each particle within the kernel support of
    * a plane also sees the mirror images of its neighbours there (y -> 2
@@ -102,8 +104,9 @@ struct wl_sph_const {
   double cfl;         /* [-] */
   double dt_collapse, rho_min, rho_max; /* guard thresholds ([-], kg/m^3, kg/m^3) */
   double penetration; /* guard: crossing depth [m] */
-  double damp_x0, damp_inv_len, damp_rate; /* damping zone: start [m], 1/(x1 - x0) [1/m]
-                                              (signed), rate [1/s] (0: none) */
+  /* damping zones: start [m], 1/(x1 - x0) [1/m] (signed), rate [1/s] (0: none) */
+  double damp_x0[WL_SPH_DAMP_ZONES], damp_inv_len[WL_SPH_DAMP_ZONES];
+  double damp_rate[WL_SPH_DAMP_ZONES];
   int mirror;         /* mirror planes, 3D: bit 0 the grid's low y face, bit 1 its high */
   double mirror_y[2]; /* their y [m] (the domain box's lo[1] and hi[1]) */
 };
