@@ -14,6 +14,7 @@
 #include "wallload/sph.h"
 #include "wallload/sph/cells.h"
 #include "wallload/sph/gather.h"
+#include "wallload/sph/shift.h"
 #include "wallload/sph/guard.h"
 #include "wallload/sph/integrate.h"
 
@@ -270,6 +271,24 @@ static void evaluate(struct cpu *c, double *const *pos, wl_real *const *vel, wl_
   }
 }
 
+/* Particle shifting of the step (sph/shift.h) from the sorted step-start
+ * state, for the corrector to add. */
+static void shift(struct cpu *c, double dt) {
+  struct wl_particles *p = &c->p;
+  const int n = p->n, nb = p->n_bound, dim = p->dim;
+  struct wl_sph_eval e;
+  memset(&e, 0, sizeof e);
+  for (int a = 0; a < dim; a++) {
+    e.pos[a] = p->pos[a];
+    e.vel[a] = p->vel[a];
+  }
+  e.rho = p->rho;
+  e.key = p->key;
+  e.begin = c->begin;
+#pragma omp parallel for schedule(static) num_threads(threads(c))
+  for (int i = nb; i < n; i++) wl_sph_shift(dim, &c->k, &c->grid, &e, nb, i, dt, p->shift);
+}
+
 /* dt from the maxima of the evaluations of a step (DualSPHysics DtVariable):
  * CFL min(sqrt(h/|a|max), h/(max(c0, 10|v|max) + max h|v.r|/(r^2+eta^2))). */
 static void fill_dt(const struct cpu *c, const struct eval_stats *st, struct wl_sph_step_out *out) {
@@ -339,6 +358,7 @@ static enum wl_status cpu_step(void *ctx, const struct wl_sph_step_in *in,
   /* four parallel regions: sort; forces at the start; predictor and forces
    * at the half step; corrector and guard */
   rebuild(c);
+  if (in && c->k.shift_coef > 0) shift(c, in->dt);
   evaluate(c, p->pos, p->vel, p->rho, NULL, &st);
   evaluate(c, p->pos_h, p->vel_h, p->rho_h, in, &st);
   guard(c, in, out);

@@ -65,6 +65,7 @@ extern "C" {
 #include "wallload/sph/gather.h"
 #include "wallload/sph/guard.h"
 #include "wallload/sph/integrate.h"
+#include "wallload/sph/shift.h"
 
 /* Threads per block of every particle kernel. */
 enum { THREADS = 128 };
@@ -121,6 +122,7 @@ struct gpu {
   double *pos[WL_SPH_DIM_MAX], *pos_h[WL_SPH_DIM_MAX];
   wl_real *vel[WL_SPH_DIM_MAX], *vel_h[WL_SPH_DIM_MAX], *ace[WL_SPH_DIM_MAX];
   wl_real *rho, *rho_h, *press, *ar, *visc;
+  wl_real *shift[WL_SPH_DIM_MAX]; /* particle shifting (NULL when off) */
   unsigned int *key, *id;
   unsigned char *kind, *kind_alt, *body, *body_alt;
   int *begin; /* 2 n_cells + 1 */
@@ -610,6 +612,22 @@ __global__ void __launch_bounds__(THREADS, WL_TILE_MIN_BLOCKS)
 }
 
 /* Predictor (sph/integrate.h) and the pressure of the half-step density. */
+/* Particle shifting of the step (sph/shift.h), one thread per fluid
+ * particle, from the sorted step-start state. */
+struct shiftptr {
+  wl_real *s[WL_SPH_DIM_MAX];
+};
+template <int DIM>
+__global__ void __launch_bounds__(THREADS)
+    k_shift(const struct wl_sph_const kp, const struct wl_sph_grid gp, const struct wl_sph_eval ep,
+            int n, int nb, double dt, struct shiftptr sp) {
+  const struct wl_sph_const k = kp;
+  const struct wl_sph_grid g = gp;
+  const struct wl_sph_eval e = ep;
+  const int i = nb + tid();
+  if (i < n) wl_sph_shift(DIM, &k, &g, &e, nb, i, dt, sp.s);
+}
+
 template <int DIM>
 __global__ void k_predict(struct wl_sph_const kp, struct wl_particles p, double dt,
                           struct bodyvel bv, int n) {
@@ -676,6 +694,7 @@ static struct wl_particles view(const struct gpu *c) {
     p.pos_h[a] = c->pos_h[a];
     p.vel_h[a] = c->vel_h[a];
     p.ace[a] = c->ace[a];
+    p.shift[a] = c->shift[a];
   }
   p.rho = c->rho;
   p.rho_h = c->rho_h;
@@ -864,6 +883,24 @@ static enum wl_status cuda_step(void *ctx, const struct wl_sph_step_in *in,
   memcpy(bv.v, in->body_vel, sizeof bv.v);
   enum wl_status st = rebuild(c, err);
   if (st) return st;
+  if (c->k.shift_coef > 0 && c->n > c->nb) {
+    struct wl_sph_eval e;
+    memset(&e, 0, sizeof e);
+    struct shiftptr sp;
+    memset(&sp, 0, sizeof sp);
+    for (int a = 0; a < c->dim; a++) {
+      e.pos[a] = c->pos[a];
+      e.vel[a] = c->vel[a];
+      sp.s[a] = c->shift[a];
+    }
+    e.rho = c->rho;
+    e.key = c->key;
+    e.begin = c->begin;
+    const int nf = c->n - c->nb;
+    if (c->dim == 3) k_shift<3><<<blocks(nf), THREADS, 0, c->stream>>>(c->k, c->grid, e, c->n, c->nb, in->dt, sp);
+    else k_shift<2><<<blocks(nf), THREADS, 0, c->stream>>>(c->k, c->grid, e, c->n, c->nb, in->dt, sp);
+    CKL("shift");
+  }
   if ((st = evaluate(c, c->pos, c->vel, c->rho, err))) return st;
   struct wl_particles p = view(c);
   if (c->dim == 3) k_predict<3><<<blocks(c->n), THREADS, 0, c->stream>>>(c->k, p, in->dt, bv, c->n);
@@ -926,11 +963,12 @@ static enum wl_status dalloc(struct gpu *c, void **p, size_t bytes, const char *
 }
 
 /* Device bytes per particle of the arrays (dim components where vectors). */
-static size_t bytes_per_particle(int dim) {
+static size_t bytes_per_particle(int dim, int shifting) {
   return (size_t)dim * (2 * sizeof(double) + 3 * sizeof(wl_real)) /* pos, pos_h, vel, vel_h, ace */
          + 5 * sizeof(wl_real)                                      /* rho, rho_h, press, ar, visc */
          + 2 * sizeof(unsigned int)                                 /* key, id */
-         + 4;                                                       /* kind, body and their alts */
+         + 4                                                        /* kind, body and their alts */
+         + (shifting ? (size_t)dim * sizeof(wl_real) : 0);          /* shift (sph/shift.h) */
 }
 
 static enum wl_status cuda_init(void **ctx, const struct wl_sph_config *cfg,
@@ -1002,7 +1040,8 @@ static enum wl_status cuda_init(void **ctx, const struct wl_sph_config *cfg,
                           cudaGetErrorString(e));
     }
   }
-  const size_t per = bytes_per_particle(dim);
+  const int shifting = k->shift_coef > 0;
+  const size_t per = bytes_per_particle(dim, shifting);
   const size_t need = per * (size_t)n + sizeof(int) * (size_t)(n_keys + 1) + c->sort_tmp_bytes +
                       sizeof(struct dmeta) + sizeof(struct dstats);
   size_t free_b = 0, total_b = 0;
@@ -1043,6 +1082,7 @@ static enum wl_status cuda_init(void **ctx, const struct wl_sph_config *cfg,
     A(c->vel[a], nr, "vel");
     A(c->vel_h[a], nr, "vel_h");
     A(c->ace[a], nr, "ace");
+    if (shifting) A(c->shift[a], nr, "shift");
   }
   A(c->rho, nr, "rho");
   A(c->rho_h, nr, "rho_h");

@@ -102,6 +102,8 @@ static void set_params(const struct wl_scenario *s, const struct wl_plan *plan, 
   if (prm->delta == 0.0) prm->ddt = WL_SPH_DDT_NONE;
   prm->rho0 = plan->rho;
   prm->g = plan->g;
+  /* particle shifting (sph/shift.h) with DualSPHysics' coefficient */
+  prm->shift_coef = s->numerics.shifting.choice != 0 ? 2.0 : 0.0;
   if (!s->run.threads.is_auto) cfg->n_threads = (int)s->run.threads.q.si;
 }
 
@@ -147,9 +149,6 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
   f->dims = dim;
   if (dim != 2 && dim != 3)
     return wl_error_set(err, WL_EINPUT, "%s: domain.dimensions: %d; valid 2 or 3", s->path, dim);
-  if (s->numerics.shifting.choice != 0)
-    return wl_error_set(err, WL_EUNSUPPORTED,
-                        "%s: numerics.shifting: on is not implemented yet; use off", s->path);
   if (load == WL_CASE_SOLITARY && !plan->solitary.present)
     return wl_error_set(err, WL_EINPUT, "%s: the scenario has no solitary load case", s->path);
   if (load == WL_CASE_SOLITARY && plan->solitary.present) {

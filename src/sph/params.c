@@ -60,6 +60,10 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
     return bad(err, "rho_min_factor", prm->rho_min_factor, "must be in [0, 1)");
   if (!(prm->rho_max_factor > 1)) return bad(err, "rho_max_factor", prm->rho_max_factor, "must be > 1");
   if (!(prm->penetration > 0)) return bad(err, "penetration", prm->penetration, "must be > 0 (units of dp)");
+  if (!(prm->shift_coef >= 0 && prm->shift_coef <= 10))
+    return bad(err, "shift_coef", prm->shift_coef, "must be in [0, 10] (0: no shifting; 1-6 usual)");
+  if (!(prm->shift_tfs >= 0 && prm->shift_tfs < prm->dim))
+    return bad(err, "shift_tfs", prm->shift_tfs, "must be in [0, dim) (0: 1.5 in 2D, 2.75 in 3D)");
   for (int z = 0; z < WL_SPH_DAMP_ZONES; z++) {
     if (!(prm->damp_rate[z] >= 0 && isfinite(prm->damp_rate[z])))
       return bad(err, "damp_rate", prm->damp_rate[z], "must be >= 0 and finite [1/s]");
@@ -108,6 +112,8 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
   k->rho_min = prm->rho_min_factor * prm->rho0;
   k->rho_max = prm->rho_max_factor * prm->rho0;
   k->penetration = prm->penetration * prm->dp;
+  k->shift_coef = prm->shift_coef;
+  k->shift_tfs = prm->shift_tfs > 0 ? prm->shift_tfs : dim == 2 ? 1.5 : 2.75;
   for (int z = 0; z < WL_SPH_DAMP_ZONES; z++)
     if (prm->damp_rate[z] > 0) {
       k->damp_x0[z] = prm->damp_x0[z];

@@ -27,6 +27,8 @@ static const struct wl_field_desc fields[] = {
     {"ace", "m/s^2", WL_FIELD_REAL, WL_FIELD_VECTOR | WL_FIELD_WORK, F(ace), "acceleration"},
     {"ar", "kg/m^3/s", WL_FIELD_REAL, WL_FIELD_WORK, F(ar), "density rate"},
     {"visc", "m/s", WL_FIELD_REAL, WL_FIELD_WORK, F(visc), "time-step viscous term"},
+    {"shift", "m", WL_FIELD_REAL, WL_FIELD_VECTOR | WL_FIELD_WORK, F(shift),
+     "particle shifting displacement of the step"},
     {"key", "", WL_FIELD_U32, WL_FIELD_WORK, F(key), "cell sort key"},
     {"perm", "", WL_FIELD_U32, WL_FIELD_WORK, F(perm), "sort permutation"},
 };

@@ -21,6 +21,9 @@
  * overtopping water entering the zone come to rest there instead of
  * reflecting.
  *
+ * Particle shifting (sph/shift.h), when on: the corrector adds the step's
+ * shift to a fluid particle's position.
+ *
  * Mirror planes (sph/params.h): a fluid particle the corrector carries
  * across one is reflected back, its v_y reversed, as its mirror image
  * would have entered. */
@@ -70,6 +73,7 @@ WL_HD static WL_INLINE void wl_sph_correct(const int dim, const struct wl_sph_co
       const wl_real v = p->vel[a][i] + (wl_real)dt * p->ace[a][i];
       p->vel[a][i] = v;
       p->pos[a][i] = p->pos_h[a][i] + 0.5 * dt * (double)v;
+      if (k->shift_coef > 0) p->pos[a][i] += (double)p->shift[a][i]; /* sph/shift.h */
     }
     if (dim == 3 && k->mirror) { /* back across a mirror plane */
       const double y = p->pos[1][i];

@@ -56,6 +56,15 @@ struct wl_sph_params {
   double rho_max_factor;    /* ... above rho_max_factor rho0 (DualSPHysics RhopOut); 1.3 */
   double penetration;       /* fluid depth behind a wall face that counts as crossing
                                it, in units of dp [-]; default 0.5 */
+  /* Particle shifting (sph/shift.h; Lind et al. 2012, Skillen et al. 2013,
+   * as DualSPHysics): each step moves a fluid particle by -A h |v| dt
+   * grad C, away from where its neighbours crowd. shift_coef is A (0: off,
+   * the default; DualSPHysics uses 2, range 1-6); shift_tfs the free-
+   * surface threshold on div r below which a particle is not shifted (0:
+   * 1.5 in 2D, 2.75 in 3D, DualSPHysics' values; div r = dim inside the
+   * fluid). */
+  double shift_coef;        /* [-] */
+  double shift_tfs;         /* [-] */
   /* Damping zones along x (DualSPHysics "Damping"), up to WL_SPH_DAMP_ZONES
    * (the flume uses zone 0 beyond the seawall, zone 1 at its seaward end):
    * in zone z, fluid velocities are relaxed towards rest at the rate
@@ -104,6 +113,8 @@ struct wl_sph_const {
   double cfl;         /* [-] */
   double dt_collapse, rho_min, rho_max; /* guard thresholds ([-], kg/m^3, kg/m^3) */
   double penetration; /* guard: crossing depth [m] */
+  double shift_coef;  /* particle shifting A [-] (0: off) */
+  double shift_tfs;   /* its free-surface threshold on div r [-] */
   /* damping zones: start [m], 1/(x1 - x0) [1/m] (signed), rate [1/s] (0: none) */
   double damp_x0[WL_SPH_DAMP_ZONES], damp_inv_len[WL_SPH_DAMP_ZONES];
   double damp_rate[WL_SPH_DAMP_ZONES];

@@ -40,6 +40,7 @@ struct wl_particles {
   wl_real *ace[WL_SPH_DIM_MAX];   /* acceleration incl. gravity [m/s^2] */
   wl_real *ar;                    /* density rate d(rho)/dt [kg/m^3/s] */
   wl_real *visc;                  /* max_j h|v_ij.r_ij|/(r^2+eta^2) of particle i [m/s] */
+  wl_real *shift[WL_SPH_DIM_MAX]; /* particle shifting of this step [m] (sph/shift.h) */
   unsigned int *key;              /* sort key: group * n_cells + cell */
   unsigned int *perm;             /* sorted position -> previous index */
 };
