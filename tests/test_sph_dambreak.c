@@ -28,6 +28,9 @@
  * 8 with every value finite and no particle through a wall (the guard
  * would stop it with WL_EUNSTABLE).
  *
+ * With the argument `shift` (ctest sph_dambreak_shift) the same run and
+ * checks with particle shifting on.
+ *
  * Resolution a/dp = 40 (3200 fluid particles), coefsound 20 (see below). */
 #include <math.h>
 #include <stdio.h>
@@ -86,6 +89,10 @@ static double interp(const double *x, const double *y, int n, double xq) {
 
 int main(int argc, char **argv) {
   const int front_only = argc > 1 && !strcmp(argv[1], "front");
+  /* `shift`: the same run and checks with particle shifting on (sph/shift.h,
+   * A = 2; ctest sph_dambreak_shift): the overturning jet and its splash
+   * are where shifting works hardest */
+  const int shifting = argc > 1 && !strcmp(argv[1], "shift");
   const double dp = A / N_A, H = 2 * A, L = 4 * A, g = 9.81;
   const int layers = 3;
   struct wl_error err;
@@ -102,6 +109,7 @@ int main(int argc, char **argv) {
    * the fluid compresses visibly at the impact (DualSPHysics' dam-break
    * examples use 20 as well) */
   cfg.prm.coefsound = 20;
+  if (shifting) cfg.prm.shift_coef = 2.0;
   struct wl_sph_const k;
   if (wl_sph_const_make(&cfg.prm, &k, &err) != WL_OK) {
     printf("FAIL const: %s\n", err.msg);
