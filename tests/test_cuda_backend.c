@@ -30,7 +30,9 @@
  * GPU against the CPU is as close (|dx|max 9e-7 dp, KE 9e-7), and the
  * default (tile) loop against the reference loop is no longer bit for bit
  * (KE 5e-9, |dx|max 9e-8 dp): the image's y, 2 y_plane - y_j, is formed
- * in different code, whose float contraction the compiler chooses. */
+ * in different code, whose float contraction the compiler chooses. With
+ * particle shifting (same day) GPU against CPU: 2D |dx|max 3.6e-6 dp,
+ * kinetic energy 2.1e-6; 3D between free-slip walls 6.6e-7 dp, 8.8e-7. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
