@@ -128,8 +128,10 @@ struct wl_plan {
 void wl_plan_default_numerics(struct wl_sph_params *prm);
 
 /* Reference throughput used for runtime estimates [particle-steps/s]; the
- * measured values are in BENCHMARKS.md. */
-#define WL_PLAN_CPU_RATE 3.0e6
+ * measured values are in BENCHMARKS.md: scenarios/seawall.yaml on the
+ * 2-core development machine, 2 threads, 2026-11-23: 4.18e6 (solitary
+ * case) and 4.81e6 (explosion). */
+#define WL_PLAN_CPU_RATE 4.5e6
 /* The same in 3D (about 100 neighbours per particle instead of 20, and a
  * flume's side walls): test_flume3d's still-water flume (16k particles)
  * ran at about 3e5 particle-steps/s on the 2-core development machine. */
