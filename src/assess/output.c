@@ -353,6 +353,15 @@ static enum wl_status write_summary(const struct wl_scenario *s, const struct wl
     jval(&t, "dp", c->dp, "m", NULL, 0);
     jval(&t, "smoothing_length", c->h, "m", NULL, 0);
     jval(&t, "c0", c->c0, "m/s", NULL, 0);
+    {
+      const struct wl_sph_params *prm = &c->flume.cfg.prm;
+      const int lam = prm->visc == WL_SPH_VISC_LAMINAR;
+      jval(&t, "viscosity", lam ? prm->nu : prm->alpha, lam ? "m^2/s" : "1",
+           lam ? "laminar, kinematic viscosity nu" : "artificial, alpha", 0);
+      jval(&t, "density_diffusion", prm->ddt == WL_SPH_DDT_NONE ? 0.0 : prm->delta, "1",
+           "delta-SPH coefficient (0: off)", 0);
+      jval(&t, "shifting", prm->shift_coef, "1", "particle shifting coefficient A (0: off)", 0);
+    }
     jval(&t, "particles", c->n_particles, "1", NULL, 0);
     jval(&t, "steps", (double)c->steps, "1", NULL, 0);
     jval(&t, "end_time", c->t_end, "s", "planned", 0);
