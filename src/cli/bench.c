@@ -41,6 +41,7 @@ struct bench_opts {
   double particles;     /* target total particle count */
   long steps;
   double coefh;         /* 0: default (1) */
+  double shift;         /* particle shifting coefficient A (0: off) */
   int threads;
 };
 
@@ -51,13 +52,14 @@ static double now_s(void) {
 }
 
 /* Build the case at spacing dp into cfg and p. */
-static enum wl_status build_case(int dim, double dp, double coefh, int threads,
+static enum wl_status build_case(int dim, double dp, double coefh, double shift, int threads,
                                  struct wl_sph_config *cfg, struct wl_particles *p,
                                  struct wl_error *err) {
   const int layers = 2;
   const double H = dim == 2 ? 2.0 : 0.3; /* water column height [m] */
   wl_sph_config_default(cfg, dim, dp, H);
   if (coefh > 0) cfg->prm.coefh = coefh;
+  cfg->prm.shift_coef = shift;
   cfg->n_threads = threads;
   struct wl_sph_const k;
   enum wl_status st = wl_sph_const_make(&cfg->prm, &k, err);
@@ -105,7 +107,7 @@ static enum wl_status choose_dp(int dim, double target, double coefh, double *dp
   for (int it = 0; it < 2; it++) {
     struct wl_sph_config cfg;
     struct wl_particles p = {0};
-    enum wl_status st = build_case(dim, d, coefh, 0, &cfg, &p, err);
+    enum wl_status st = build_case(dim, d, coefh, 0.0, 0, &cfg, &p, err);
     if (st) return st;
     const double n = p.n;
     wl_particles_clear(&p);
@@ -119,7 +121,7 @@ static enum wl_status run_one(const struct bench_opts *o, int dim, double dp,
                               const struct wl_backend_ops *ops, struct wl_error *err) {
   struct wl_sph_config cfg;
   struct wl_particles init = {0};
-  enum wl_status st = build_case(dim, dp, o->coefh, o->threads, &cfg, &init, err);
+  enum wl_status st = build_case(dim, dp, o->coefh, o->shift, o->threads, &cfg, &init, err);
   if (st) return st;
   const int n = init.n, nb = init.n_bound;
   const int gpu = !strcmp(ops->name, "cuda");
@@ -150,8 +152,8 @@ static enum wl_status run_one(const struct bench_opts *o, int dim, double dp,
   printf("%-10s %-5s %10d %6ld %12.4e %9.3f %12.4e %12.4e  Wendland %.2f %8.1f\n",
          dim == 2 ? "dambreak2d" : "dambreak3d", ops->name, n, o->steps,
          2.0 * n * (double)o->steps, sec, ps, 2 * ps, h_dp, bytes / n);
-  printf("    dp %.5g m, %d boundary + %d fluid, simulated %.4g s, dt %.3g s; %s\n", dp, nb, n - nb,
-         t_sim, dt, what);
+  printf("    dp %.5g m, %d boundary + %d fluid, simulated %.4g s, dt %.3g s%s; %s\n", dp, nb,
+         n - nb, t_sim, dt, o->shift > 0 ? ", particle shifting on" : "", what);
   fflush(stdout);
   return WL_OK;
 }
@@ -166,7 +168,8 @@ static enum wl_status parse(int argc, char **argv, struct bench_opts *o, struct 
     if (!strcmp(a, "-h") || !strcmp(a, "--help"))
       return wl_error_set(err, WL_EUSAGE,
                           "usage: wallload bench [--case dambreak2d|dambreak3d|all] [--backend "
-                          "cpu|cuda|all] [--particles N] [--steps N] [--coefh C] [--threads N]");
+                          "cpu|cuda|all] [--particles N] [--steps N] [--coefh C] [--shifting A] "
+                          "[--threads N]");
     if (i + 1 >= argc) return wl_error_set(err, WL_EUSAGE, "bench: %s needs a value", a);
     const char *v = argv[++i];
     char *end;
@@ -188,6 +191,11 @@ static enum wl_status parse(int argc, char **argv, struct bench_opts *o, struct 
       if (*end || !(o->coefh >= 0.5 && o->coefh <= 3))
         return wl_error_set(err, WL_EUSAGE, "bench: --coefh: found '%s'; expected 0.5 to 3 (h = "
                             "coefh sqrt(dim) dp)", v);
+    } else if (!strcmp(a, "--shifting")) {
+      o->shift = strtod(v, &end);
+      if (*end || !(o->shift >= 0 && o->shift <= 10))
+        return wl_error_set(err, WL_EUSAGE, "bench: --shifting: found '%s'; expected 0 (off) to "
+                            "10 (the coefficient A; 2 as DualSPHysics)", v);
     } else if (!strcmp(a, "--threads")) {
       const long t = strtol(v, &end, 10);
       if (*end || t < 1 || t > 4096)
@@ -196,7 +204,7 @@ static enum wl_status parse(int argc, char **argv, struct bench_opts *o, struct 
     } else {
       return wl_error_set(err, WL_EUSAGE,
                           "bench: unknown option '%s'; valid: --case, --backend, --particles, "
-                          "--steps, --coefh, --threads", a);
+                          "--steps, --coefh, --shifting, --threads", a);
     }
   }
   if (!strcmp(cases, "all")) o->case2d = o->case3d = 1;
