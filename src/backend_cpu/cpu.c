@@ -22,6 +22,7 @@ struct cpu;
 struct eval_stats;
 typedef void (*block_fn)(const struct cpu *, const struct wl_sph_eval *, int, int,
                          struct eval_stats *);
+typedef void (*shift_fn)(const struct cpu *, const struct wl_sph_eval *, int, int, double);
 
 struct cpu {
   struct wl_sph_config cfg;
@@ -33,6 +34,7 @@ struct cpu {
   int *cursor;             /* 2 n_cells: scatter positions of the counting sort */
   unsigned int *key_tmp;   /* keys in sorted order */
   block_fn block;          /* force loop for this dimension, viscosity and CPU */
+  shift_fn shift;          /* particle shifting loop (sph/shift.h), the same ISA */
   const char *isa;         /* which build of it */
   int n_threads;
 };
@@ -121,6 +123,35 @@ static void rebuild(struct cpu *c) {
 
 /* ---- force evaluation ------------------------------------------------------ */
 
+/* The block starting at sorted index i0: up to WL_SPH_LANES consecutive
+ * particles in at most two neighbouring cells of one row and group (keys
+ * never straddle groups: the boundary keys end at nc), keys below c1.
+ * Returns its size m; *span = last key - first key (0 or 1). */
+static WL_INLINE int next_block(const struct wl_sph_eval *e, int nc, int nx, int c1, int i0,
+                                int i_stop, int *span) {
+  const int key0 = (int)e->key[i0];
+  const int cell0 = key0 % nc;
+  const int key_max = (cell0 % nx) + 1 < nx && key0 + 1 < c1 && key0 + 1 != nc ? key0 + 1 : key0;
+  int m = 1;
+  while (m < WL_SPH_LANES && i0 + m < i_stop && (int)e->key[i0 + m] <= key_max) m++;
+  *span = (int)e->key[i0 + m - 1] - key0;
+  return m;
+}
+
+/* Particle shifting (sph/shift.h) of the fluid particles of keys [c0, c1)
+ * (fluid keys, >= n_cells), WL_SPH_LANES at a time as the force loop. */
+static WL_INLINE void shift_generic(const int dim, const struct cpu *c,
+                                    const struct wl_sph_eval *e, int c0, int c1, double dt) {
+  const int nc = c->grid.n_cells, nx = c->grid.n[0];
+  const int i_stop = e->begin[c1];
+  for (int i0 = e->begin[c0]; i0 < i_stop;) {
+    int span;
+    const int m = next_block(e, nc, nx, c1, i0, i_stop, &span);
+    wl_sph_shift_block(dim, WL_SPH_LANES, &c->k, &c->grid, e, i0, m, span, dt, c->p.shift);
+    i0 += m;
+  }
+}
+
 /* Forces on the particles of cells (keys) [c0, c1), WL_SPH_LANES at a time,
  * and the maxima the time step needs; dim and laminar are compile-time
  * constants in each instantiation below. Out of line (not inside the
@@ -136,16 +167,8 @@ static WL_INLINE void block_generic(const int dim, const int laminar, const stru
   const int nc = c->grid.n_cells, nx = c->grid.n[0];
   const int i_stop = e->begin[c1];
   for (int i0 = e->begin[c0]; i0 < i_stop;) {
-    /* a block: up to WL_SPH_LANES consecutive particles in at most two
-     * neighbouring cells of one row and group (keys never straddle groups:
-     * the boundary keys end at nc) */
-    const int key0 = (int)e->key[i0];
-    const int cell0 = key0 % nc;
-    const int key_max =
-        (cell0 % nx) + 1 < nx && key0 + 1 < c1 && key0 + 1 != nc ? key0 + 1 : key0;
-    int m = 1;
-    while (m < WL_SPH_LANES && i0 + m < i_stop && (int)e->key[i0 + m] <= key_max) m++;
-    const int span = (int)e->key[i0 + m - 1] - key0;
+    int span;
+    const int m = next_block(e, nc, nx, c1, i0, i_stop, &span);
     wl_sph_gather_block(dim, laminar, WL_SPH_LANES, &c->k, &c->grid, e, nb, i0, m, span);
     for (int i = i0; i < i0 + m; i++) {
       visc = visc > e->visc[i] ? visc : e->visc[i];
@@ -172,34 +195,44 @@ static WL_INLINE void block_generic(const int dim, const int laminar, const stru
  * masked 512-bit registers and runs at half speed (measured). */
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
 #define HAVE_ISA_BUILDS 1
-#define BLOCK(name, dim, laminar)                                                                 \
+#define ISA_BUILDS(name, params, call)                                                            \
   static __attribute__((noinline, target("avx2,avx512f,avx512vl,avx512bw,avx512dq"))) void       \
-      name##_v4(const struct cpu *c, const struct wl_sph_eval *e, int c0, int c1,                \
-                struct eval_stats *st) {                                                         \
-    block_generic(dim, laminar, c, e, c0, c1, st);                                                \
-  }                                                                                               \
-  static __attribute__((noinline, target("avx2"))) void name##_v3(                               \
-      const struct cpu *c, const struct wl_sph_eval *e, int c0, int c1, struct eval_stats *st) { \
-    block_generic(dim, laminar, c, e, c0, c1, st);                                                \
-  }                                                                                               \
-  static __attribute__((noinline)) void name##_v1(const struct cpu *c,                           \
-                                                  const struct wl_sph_eval *e, int c0, int c1,   \
-                                                  struct eval_stats *st) {                       \
-    block_generic(dim, laminar, c, e, c0, c1, st);                                                \
-  }
+      name##_v4 params { call; }                                                                  \
+  static __attribute__((noinline, target("avx2"))) void name##_v3 params { call; }                \
+  static __attribute__((noinline)) void name##_v1 params { call; }
 #else
 #define HAVE_ISA_BUILDS 0
-#define BLOCK(name, dim, laminar)                                                                 \
-  static void name##_v1(const struct cpu *c, const struct wl_sph_eval *e, int c0, int c1,        \
-                        struct eval_stats *st) {                                                 \
-    block_generic(dim, laminar, c, e, c0, c1, st);                                                \
-  }
+#define ISA_BUILDS(name, params, call) static void name##_v1 params { call; }
 #endif
+#define BLOCK(name, dim, laminar)                                                                 \
+  ISA_BUILDS(name,                                                                                \
+             (const struct cpu *c, const struct wl_sph_eval *e, int c0, int c1,                   \
+              struct eval_stats *st),                                                             \
+             block_generic(dim, laminar, c, e, c0, c1, st))
 BLOCK(block_2a, 2, 0)
 BLOCK(block_2l, 2, 1)
 BLOCK(block_3a, 3, 0)
 BLOCK(block_3l, 3, 1)
 #undef BLOCK
+#define SHIFT(name, dim)                                                                          \
+  ISA_BUILDS(name, (const struct cpu *c, const struct wl_sph_eval *e, int c0, int c1, double dt), \
+             shift_generic(dim, c, e, c0, c1, dt))
+SHIFT(shift_2, 2)
+SHIFT(shift_3, 3)
+#undef SHIFT
+
+/* The shifting loop for this run's dimension on this CPU (the force loop's
+ * ISA, select_block). */
+static shift_fn select_shift(int dim) {
+#if HAVE_ISA_BUILDS
+  __builtin_cpu_init();
+  if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+      __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512dq"))
+    return dim == 2 ? shift_2_v4 : shift_3_v4;
+  if (__builtin_cpu_supports("avx2")) return dim == 2 ? shift_2_v3 : shift_3_v3;
+#endif
+  return dim == 2 ? shift_2_v1 : shift_3_v1;
+}
 
 /* The force loop for this run's dimension and viscosity on this CPU. */
 static block_fn select_block(int dim, int laminar, const char **isa) {
@@ -275,7 +308,7 @@ static void evaluate(struct cpu *c, double *const *pos, wl_real *const *vel, wl_
  * state, for the corrector to add. */
 static void shift(struct cpu *c, double dt) {
   struct wl_particles *p = &c->p;
-  const int n = p->n, nb = p->n_bound, dim = p->dim;
+  const int dim = p->dim, nc = c->grid.n_cells;
   struct wl_sph_eval e;
   memset(&e, 0, sizeof e);
   for (int a = 0; a < dim; a++) {
@@ -285,8 +318,13 @@ static void shift(struct cpu *c, double dt) {
   e.rho = p->rho;
   e.key = p->key;
   e.begin = c->begin;
-#pragma omp parallel for schedule(static) num_threads(threads(c))
-  for (int i = nb; i < n; i++) wl_sph_shift(dim, &c->k, &c->grid, &e, nb, i, dt, p->shift);
+  const shift_fn run = c->shift;
+  const int n_chunks = (nc + CELLS_PER_CHUNK - 1) / CELLS_PER_CHUNK;
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads(c))
+  for (int b = 0; b < n_chunks; b++) { /* the fluid keys nc .. 2 nc - 1 */
+    const int c0 = nc + b * CELLS_PER_CHUNK;
+    run(c, &e, c0, c0 + CELLS_PER_CHUNK < 2 * nc ? c0 + CELLS_PER_CHUNK : 2 * nc, dt);
+  }
 }
 
 /* dt from the maxima of the evaluations of a step (DualSPHysics DtVariable):
@@ -416,6 +454,7 @@ static enum wl_status cpu_init(void **ctx, const struct wl_sph_config *cfg,
     c->n_threads = by_work < 1 ? 1 : by_work > most ? most : by_work;
   }
   c->block = select_block(dim, k->visc == WL_SPH_VISC_LAMINAR, &c->isa);
+  c->shift = select_shift(dim);
   /* the grid: cells of side 2h over the domain box */
   struct wl_sph_grid *g = &c->grid;
   const enum wl_status gst = wl_sph_grid_make(cfg, k, g, err);

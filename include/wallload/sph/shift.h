@@ -29,75 +29,113 @@
 #include "wallload/sph/cells.h"
 #include "wallload/sph/gather.h"
 
-/* Adds the concentration gradient and -div r of the neighbours j in
- * [j0, j1) (or their mirror images in plane `mirror` 1 or 2, 3D) of the
- * particle at xi to gc[3] and divr. */
-WL_HD static WL_INLINE void wl_sph_shift_range(const int dim, const struct wl_sph_const *k,
-                                               const struct wl_sph_eval *e, const double xi[3],
-                                               int j0, int j1, const int mirror, double gc[3],
-                                               double *divr) {
+/* Adds, for every lane, the concentration gradient and -div r of the
+ * neighbours j in [j0, j1) (or their mirror images in plane `mirror` 1 or
+ * 2, 3D). Branch-free: a j outside the support has wq = 0 and adds zeros;
+ * the lane loop is what the CPU compiler vectorises, and each lane sums
+ * its neighbours in the order of a lone particle (as sph/gather.h). */
+WL_HD static WL_INLINE void wl_sph_shift_range(const int dim, const int lanes,
+                                               const struct wl_sph_const *k,
+                                               const struct wl_sph_eval *e,
+                                               const double x[WL_SPH_DIM_MAX][WL_SPH_LANES],
+                                               int j0, int j1, const int mirror,
+                                               wl_real gc[3][WL_SPH_LANES],
+                                               wl_real divr[WL_SPH_LANES]) {
   const int az = dim - 1;
   for (int j = j0; j < j1; j++) {
+    const double xj = e->pos[0][j], zj = e->pos[az][j];
     const double yj = dim != 3 ? 0.0
                       : mirror ? 2.0 * k->mirror_y[mirror - 1] - e->pos[1][j]
                                : e->pos[1][j];
-    const wl_real dx = (wl_real)(xi[0] - e->pos[0][j]);
-    const wl_real dy = dim == 3 ? (wl_real)(xi[1] - yj) : WL_R(0.0);
-    const wl_real dz = (wl_real)(xi[2] - e->pos[az][j]);
-    const wl_real r2 = dx * dx + dy * dy + dz * dz;
-    if (!(r2 < k->support2)) continue;
     wl_real inv_rho_j, vol_j;
     wl_sph_pair_j(k, e->rho[j], &inv_rho_j, &vol_j);
-    const wl_real wq = wl_sph_kernel_wq(k, r2);
-    const wl_real vF = vol_j * k->kf * wq * wq * wq; /* V_j grad W = vF r_ij */
-    gc[0] += (double)(vF * dx);
-    gc[1] += (double)(vF * dy);
-    gc[2] += (double)(vF * dz);
-    *divr -= (double)(vF * r2);
+    const wl_real vkf = vol_j * k->kf;
+    for (int l = 0; l < lanes; l++) {
+      const wl_real dx = (wl_real)(x[0][l] - xj);
+      const wl_real dy = dim == 3 ? (wl_real)(x[1][l] - yj) : WL_R(0.0);
+      const wl_real dz = (wl_real)(x[az][l] - zj);
+      const wl_real r2 = dx * dx + dy * dy + dz * dz;
+      const wl_real wq = wl_sph_kernel_wq(k, r2);
+      const wl_real vF = vkf * wq * wq * wq; /* V_j grad W = vF r_ij */
+      gc[0][l] += vF * dx;
+      gc[1][l] += vF * dy;
+      gc[2][l] += vF * dz;
+      divr[l] -= vF * r2;
+    }
   }
 }
 
-/* The shift of fluid particle i (sorted index, i >= n_bound) for a step of
- * dt at the state e (positions, velocities, densities of the step start):
- * writes shift[a][i], a < dim. Off (zeros) when k->shift_coef is 0. */
+/* The shifts of fluid particles i0 .. i0 + m - 1 (sorted indices >=
+ * n_bound, 1 <= m <= lanes, in cells `span` + 1 consecutive cells of one
+ * row, as wl_sph_gather_block) for a step of dt at the state e (positions,
+ * velocities, densities of the step start): writes shift[a][i], a < dim.
+ * Zeros when k->shift_coef is 0. dim, lanes: compile-time constants. */
+WL_HD static WL_INLINE void wl_sph_shift_block(const int dim, const int lanes,
+                                               const struct wl_sph_const *k,
+                                               const struct wl_sph_grid *g,
+                                               const struct wl_sph_eval *e, int i0, int m,
+                                               int span, double dt, wl_real *const *shift) {
+  const int az = dim - 1;
+  if (!(k->shift_coef > 0)) {
+    for (int l = 0; l < m; l++)
+      for (int a = 0; a < dim; a++) shift[a][i0 + l] = 0;
+    return;
+  }
+  const int nc = g->n_cells;
+  const int cell = (int)e->key[i0] - nc;
+  int first[9], last[9];
+  const int nr = wl_sph_cell_rows(dim, g, cell, span, first, last);
+  int mf[2][6], ml[2][6], nm[2] = {0, 0};
+  if (dim == 3)
+    for (int side = 0; side < 2; side++)
+      if (k->mirror & (1 << side)) nm[side] = wl_sph_cell_rows_mirror(g, cell, span, side, mf[side], ml[side]);
+  double x[WL_SPH_DIM_MAX][WL_SPH_LANES];
+  wl_real gc[3][WL_SPH_LANES], divr[WL_SPH_LANES];
+  for (int l = 0; l < lanes; l++) {
+    const int i = i0 + (l < m ? l : m - 1);
+    for (int a = 0; a < dim; a++) x[a][l] = e->pos[a][i];
+    gc[0][l] = gc[1][l] = gc[2][l] = divr[l] = 0;
+  }
+  for (int grp = 1; grp >= 0; grp--) { /* fluid, then boundary neighbours */
+    const int *const b = e->begin + (grp ? nc : 0);
+    for (int r = 0; r < nr; r++)
+      wl_sph_shift_range(dim, lanes, k, e, x, b[first[r]], b[last[r] + 1], 0, gc, divr);
+    for (int side = 0; dim == 3 && side < 2; side++)
+      for (int r = 0; r < nm[side]; r++)
+        wl_sph_shift_range(dim, lanes, k, e, x, b[mf[side][r]], b[ml[side][r] + 1], side + 1, gc,
+                           divr);
+  }
+  const double cap = 0.1 * k->dp;
+  for (int l = 0; l < m; l++) {
+    const int i = i0 + l;
+    double s[3] = {0, 0, 0};
+    if (divr[l] >= k->shift_tfs) { /* else at the free surface: no shift */
+      double ramp = ((double)divr[l] - k->shift_tfs) / ((double)dim - k->shift_tfs);
+      ramp = ramp > 1.0 ? 1.0 : ramp;
+      double v2 = 0;
+      for (int a = 0; a < dim; a++) v2 += (double)e->vel[a][i] * (double)e->vel[a][i];
+      const double scale = -k->shift_coef * k->h_d * sqrt(v2) * dt * ramp;
+      for (int a = 0; a < dim; a++) {
+        const double sa = scale * (double)gc[a == az ? 2 : a][l];
+        s[a] = sa > cap ? cap : sa < -cap ? -cap : sa;
+      }
+    }
+    for (int a = 0; a < dim; a++) shift[a][i] = (wl_real)s[a];
+  }
+}
+
+/* The shift of the single fluid particle i (one CUDA thread each); the
+ * same bits as wl_sph_shift_block. Boundary particles (i < n_bound) get
+ * zeros. */
 WL_HD static WL_INLINE void wl_sph_shift(const int dim, const struct wl_sph_const *k,
                                          const struct wl_sph_grid *g, const struct wl_sph_eval *e,
                                          int n_bound, int i, double dt,
                                          wl_real *const *shift) {
-  const int az = dim - 1;
-  for (int a = 0; a < dim; a++) shift[a][i] = 0;
-  if (!(k->shift_coef > 0) || i < n_bound) return;
-  const int nc = g->n_cells;
-  const int cell = (int)e->key[i] - nc;
-  int first[9], last[9];
-  const int nr = wl_sph_cell_rows(dim, g, cell, 0, first, last);
-  const double xi[3] = {e->pos[0][i], dim == 3 ? e->pos[1][i] : 0.0, e->pos[az][i]};
-  double gc[3] = {0, 0, 0}, divr = 0;
-  for (int grp = 1; grp >= 0; grp--) { /* fluid, then boundary neighbours */
-    const int *const b = e->begin + (grp ? nc : 0);
-    for (int r = 0; r < nr; r++)
-      wl_sph_shift_range(dim, k, e, xi, b[first[r]], b[last[r] + 1], 0, gc, &divr);
-    for (int side = 0; dim == 3 && side < 2; side++) {
-      if (!(k->mirror & (1 << side))) continue;
-      int mf[6], ml[6];
-      const int nm = wl_sph_cell_rows_mirror(g, cell, 0, side, mf, ml);
-      for (int r = 0; r < nm; r++)
-        wl_sph_shift_range(dim, k, e, xi, b[mf[r]], b[ml[r] + 1], side + 1, gc, &divr);
-    }
+  if (i < n_bound) {
+    for (int a = 0; a < dim; a++) shift[a][i] = 0;
+    return;
   }
-  if (divr < k->shift_tfs) return; /* at the free surface */
-  double ramp = (divr - k->shift_tfs) / ((double)dim - k->shift_tfs);
-  ramp = ramp > 1.0 ? 1.0 : ramp;
-  double v2 = 0;
-  for (int a = 0; a < dim; a++) v2 += (double)e->vel[a][i] * (double)e->vel[a][i];
-  const double scale = -k->shift_coef * k->h_d * sqrt(v2) * dt * ramp;
-  const double cap = 0.1 * k->dp;
-  const double g3[3] = {gc[0], gc[1], gc[2]};
-  for (int a = 0; a < dim; a++) {
-    double s = scale * g3[a == az ? 2 : a];
-    s = s > cap ? cap : s < -cap ? -cap : s;
-    shift[a][i] = (wl_real)s;
-  }
+  wl_sph_shift_block(dim, 1, k, g, e, i, 1, 0, dt, shift);
 }
 
 #endif
