@@ -308,16 +308,8 @@ static void evaluate(struct cpu *c, double *const *pos, wl_real *const *vel, wl_
  * state, for the corrector to add. */
 static void shift(struct cpu *c, double dt) {
   struct wl_particles *p = &c->p;
-  const int dim = p->dim, nc = c->grid.n_cells;
-  struct wl_sph_eval e;
-  memset(&e, 0, sizeof e);
-  for (int a = 0; a < dim; a++) {
-    e.pos[a] = p->pos[a];
-    e.vel[a] = p->vel[a];
-  }
-  e.rho = p->rho;
-  e.key = p->key;
-  e.begin = c->begin;
+  const int nc = c->grid.n_cells;
+  const struct wl_sph_eval e = wl_sph_eval_inputs(p->dim, p->pos, p->vel, p->rho, p->key, c->begin);
   const shift_fn run = c->shift;
   const int n_chunks = (nc + CELLS_PER_CHUNK - 1) / CELLS_PER_CHUNK;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads(c))

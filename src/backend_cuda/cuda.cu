@@ -884,18 +884,10 @@ static enum wl_status cuda_step(void *ctx, const struct wl_sph_step_in *in,
   enum wl_status st = rebuild(c, err);
   if (st) return st;
   if (c->k.shift_coef > 0 && c->n > c->nb) {
-    struct wl_sph_eval e;
-    memset(&e, 0, sizeof e);
+    const struct wl_sph_eval e = wl_sph_eval_inputs(c->dim, c->pos, c->vel, c->rho, c->key, c->begin);
     struct shiftptr sp;
     memset(&sp, 0, sizeof sp);
-    for (int a = 0; a < c->dim; a++) {
-      e.pos[a] = c->pos[a];
-      e.vel[a] = c->vel[a];
-      sp.s[a] = c->shift[a];
-    }
-    e.rho = c->rho;
-    e.key = c->key;
-    e.begin = c->begin;
+    for (int a = 0; a < c->dim; a++) sp.s[a] = c->shift[a];
     const int nf = c->n - c->nb;
     if (c->dim == 3) k_shift<3><<<blocks(nf), THREADS, 0, c->stream>>>(c->k, c->grid, e, c->n, c->nb, in->dt, sp);
     else k_shift<2><<<blocks(nf), THREADS, 0, c->stream>>>(c->k, c->grid, e, c->n, c->nb, in->dt, sp);

@@ -29,6 +29,8 @@
 #ifndef WALLLOAD_SPH_GATHER_H
 #define WALLLOAD_SPH_GATHER_H
 
+#include <string.h>
+
 #include "wallload/sph/cells.h"
 #include "wallload/sph/interact.h"
 #include "wallload/sph/particles.h"
@@ -49,6 +51,23 @@ struct wl_sph_eval {
   wl_real *ar;                   /* out: drho/dt [kg/m^3/s] */
   wl_real *visc;                 /* out: h max_j |v_ij.r_ij|/(r^2+eta^2) [m/s] */
 };
+
+/* An evaluation's inputs (outputs NULL): the state at which a neighbour
+ * loop runs and the cell lists it walks. */
+static inline struct wl_sph_eval wl_sph_eval_inputs(int dim, double *const *pos,
+                                                    wl_real *const *vel, const wl_real *rho,
+                                                    const unsigned int *key, const int *begin) {
+  struct wl_sph_eval e;
+  memset(&e, 0, sizeof e);
+  for (int a = 0; a < dim; a++) {
+    e.pos[a] = pos[a];
+    e.vel[a] = vel[a];
+  }
+  e.rho = rho;
+  e.key = key;
+  e.begin = begin;
+  return e;
+}
 
 /* Running sums of the lanes (one particle each). */
 struct wl_sph_acc {
