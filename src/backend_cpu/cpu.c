@@ -190,7 +190,7 @@ static WL_INLINE void block_generic(const int dim, const int laminar, const stru
 }
 
 /* Each instantiation in three builds on x86-64 (AVX-512 with VL, AVX2,
- * baseline SSE2), picked at run time by select_block; elsewhere one. The
+ * baseline SSE2), picked at run time by select_loops; elsewhere one. The
  * AVX-512 build needs VL: with AVX-512F alone GCC keeps the 8 lanes in
  * masked 512-bit registers and runs at half speed (measured). */
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
@@ -221,36 +221,45 @@ SHIFT(shift_2, 2)
 SHIFT(shift_3, 3)
 #undef SHIFT
 
-/* The shifting loop for this run's dimension on this CPU (the force loop's
- * ISA, select_block). */
-static shift_fn select_shift(int dim) {
-#if HAVE_ISA_BUILDS
-  __builtin_cpu_init();
-  if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
-      __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512dq"))
-    return dim == 2 ? shift_2_v4 : shift_3_v4;
-  if (__builtin_cpu_supports("avx2")) return dim == 2 ? shift_2_v3 : shift_3_v3;
-#endif
-  return dim == 2 ? shift_2_v1 : shift_3_v1;
-}
-
-/* The force loop for this run's dimension and viscosity on this CPU. */
-static block_fn select_block(int dim, int laminar, const char **isa) {
-  const int v = dim * 2 + laminar; /* 4, 5, 6, 7 */
+/* The widest build this CPU runs: 4 (AVX-512 with VL), 3 (AVX2) or 1
+ * (baseline), and its name. */
+static int isa_level(const char **isa) {
 #if HAVE_ISA_BUILDS
   __builtin_cpu_init();
   if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
       __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512dq")) {
     *isa = "avx512";
-    return v == 4 ? block_2a_v4 : v == 5 ? block_2l_v4 : v == 6 ? block_3a_v4 : block_3l_v4;
+    return 4;
   }
   if (__builtin_cpu_supports("avx2")) {
     *isa = "avx2";
-    return v == 4 ? block_2a_v3 : v == 5 ? block_2l_v3 : v == 6 ? block_3a_v3 : block_3l_v3;
+    return 3;
   }
 #endif
   *isa = "baseline";
-  return v == 4 ? block_2a_v1 : v == 5 ? block_2l_v1 : v == 6 ? block_3a_v1 : block_3l_v1;
+  return 1;
+}
+
+/* The force loop for this run's dimension and viscosity, and the shifting
+ * loop for its dimension, in the build isa_level chose. */
+static void select_loops(int dim, int laminar, block_fn *block, shift_fn *shift, const char **isa) {
+  const int lv = isa_level(isa), v = dim * 2 + laminar; /* 4, 5, 6, 7 */
+#if HAVE_ISA_BUILDS
+  if (lv == 4) {
+    *block = v == 4 ? block_2a_v4 : v == 5 ? block_2l_v4 : v == 6 ? block_3a_v4 : block_3l_v4;
+    *shift = dim == 2 ? shift_2_v4 : shift_3_v4;
+    return;
+  }
+  if (lv == 3) {
+    *block = v == 4 ? block_2a_v3 : v == 5 ? block_2l_v3 : v == 6 ? block_3a_v3 : block_3l_v3;
+    *shift = dim == 2 ? shift_2_v3 : shift_3_v3;
+    return;
+  }
+#else
+  (void)lv;
+#endif
+  *block = v == 4 ? block_2a_v1 : v == 5 ? block_2l_v1 : v == 6 ? block_3a_v1 : block_3l_v1;
+  *shift = dim == 2 ? shift_2_v1 : shift_3_v1;
 }
 
 /* Cells per OpenMP work chunk. */
@@ -385,8 +394,8 @@ static enum wl_status cpu_step(void *ctx, const struct wl_sph_step_in *in,
   memset(out, 0, sizeof *out);
   struct eval_stats st = {0, 0, 0};
 
-  /* four parallel regions: sort; forces at the start; predictor and forces
-   * at the half step; corrector and guard */
+  /* four parallel regions (five with shifting): sort; (shifts;) forces at
+   * the start; predictor and forces at the half step; corrector and guard */
   rebuild(c);
   if (in && c->k.shift_coef > 0) shift(c, in->dt);
   evaluate(c, p->pos, p->vel, p->rho, NULL, &st);
@@ -445,8 +454,7 @@ static enum wl_status cpu_init(void **ctx, const struct wl_sph_config *cfg,
     const int most = omp_get_max_threads();
     c->n_threads = by_work < 1 ? 1 : by_work > most ? most : by_work;
   }
-  c->block = select_block(dim, k->visc == WL_SPH_VISC_LAMINAR, &c->isa);
-  c->shift = select_shift(dim);
+  select_loops(dim, k->visc == WL_SPH_VISC_LAMINAR, &c->block, &c->shift, &c->isa);
   /* the grid: cells of side 2h over the domain box */
   struct wl_sph_grid *g = &c->grid;
   const enum wl_status gst = wl_sph_grid_make(cfg, k, g, err);

@@ -338,9 +338,8 @@ static __device__ __forceinline__ void mirror_fast(const struct wl_sph_const *k,
                                                    struct acc1 *b) {
   if (DIM != 3 || !k->mirror) return;
   const int *const bf = e->begin + g->n_cells, *const bb = e->begin;
-  int mf[2][6], ml[2][6], nm[2] = {0, 0};
-  for (int side = 0; side < 2; side++)
-    if (k->mirror & (1 << side)) nm[side] = wl_sph_cell_rows_mirror(g, cell, 0, side, mf[side], ml[side]);
+  int mf[2][6], ml[2][6], nm[2];
+  wl_sph_cell_rows_mirrors(g, k->mirror, cell, 0, mf, ml, nm);
   for (int side = 0; side < 2; side++)
     for (int r = 0; r < nm[side]; r++) {
       if (fluid)

@@ -108,4 +108,16 @@ WL_HD static WL_INLINE int wl_sph_cell_rows_mirror(const struct wl_sph_grid *g, 
   return nr;
 }
 
+/* Both planes' mirror rows for cells c .. c + span (3D): side s's rows in
+ * first[s], last[s] and their count in n[s]; 0 rows for a plane not in
+ * mask (bit 0 the low plane, bit 1 the high one; sph/params.h's mirror). */
+WL_HD static WL_INLINE void wl_sph_cell_rows_mirrors(const struct wl_sph_grid *g, int mask, int c,
+                                                     int span, int first[2][6], int last[2][6],
+                                                     int n[2]) {
+  for (int side = 0; side < 2; side++)
+    n[side] = (mask & (1 << side))
+                  ? wl_sph_cell_rows_mirror(g, c, span, side, first[side], last[side])
+                  : 0;
+}
+
 #endif

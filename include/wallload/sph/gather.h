@@ -169,10 +169,7 @@ WL_HD static WL_INLINE void wl_sph_gather_block(const int dim, const int laminar
   /* mirror rows: only next to a mirror plane (3D); side s in rows
    * mfirst[s]..., mirror pass s + 1 */
   int mfirst[2][6], mlast[2][6], nm[2] = {0, 0};
-  if (dim == 3)
-    for (int side = 0; side < 2; side++)
-      if (k->mirror & (1 << side))
-        nm[side] = wl_sph_cell_rows_mirror(g, cell, span, side, mfirst[side], mlast[side]);
+  if (dim == 3) wl_sph_cell_rows_mirrors(g, k->mirror, cell, span, mfirst, mlast, nm);
   if (fluid) {
     struct wl_sph_acc b = f; /* boundary neighbours */
     for (int r = 0; r < nr; r++)

@@ -86,9 +86,7 @@ WL_HD static WL_INLINE void wl_sph_shift_block(const int dim, const int lanes,
   int first[9], last[9];
   const int nr = wl_sph_cell_rows(dim, g, cell, span, first, last);
   int mf[2][6], ml[2][6], nm[2] = {0, 0};
-  if (dim == 3)
-    for (int side = 0; side < 2; side++)
-      if (k->mirror & (1 << side)) nm[side] = wl_sph_cell_rows_mirror(g, cell, span, side, mf[side], ml[side]);
+  if (dim == 3) wl_sph_cell_rows_mirrors(g, k->mirror, cell, span, mf, ml, nm);
   double x[WL_SPH_DIM_MAX][WL_SPH_LANES];
   wl_real gc[3][WL_SPH_LANES], divr[WL_SPH_LANES];
   for (int l = 0; l < lanes; l++) {
