@@ -65,6 +65,8 @@ struct wl_record {
   double *moment_bound; /* their moment about the toe [N m/m] */
   double *kinetic;      /* fluid kinetic energy [J/m] */
   double *potential;    /* fluid potential energy above the floor [J/m] */
+  double *momentum;     /* fluid horizontal momentum, sum of m u over the fluid [N s/m]; its
+                           change is the impulse the fluid gave all boundaries (wall, bed, ends) */
 };
 
 /* Post-processed series and peaks of one case (computed from its record). */

@@ -250,9 +250,10 @@ static enum wl_status on_output(void *user, struct wl_sph_sim *sim, double t,
   const struct wl_sph_const *k = wl_sph_sim_const(sim);
   if ((st = boundary_force(rc, p, k, &r->force_bound[row], &r->moment_bound[row], err)))
     return st;
-  double kin = 0.0, pot = 0.0;
+  double kin = 0.0, pot = 0.0, mom = 0.0;
   const int az = p->dim - 1;
   for (int i = p->n_bound; i < p->n; i++) {
+    mom += (double)k->mass * p->vel[0][i];
     double v2 = (double)p->vel[0][i] * p->vel[0][i] + (double)p->vel[1][i] * p->vel[1][i];
     if (az == 2) v2 += (double)p->vel[2][i] * p->vel[2][i];
     kin += 0.5 * (double)k->mass * v2;
@@ -261,9 +262,11 @@ static enum wl_status on_output(void *user, struct wl_sph_sim *sim, double t,
   if (az == 2) { /* 3D: per metre of width, as in 2D */
     kin /= f->width;
     pot /= f->width;
+    mom /= f->width;
   }
   r->kinetic[row] = kin;
   r->potential[row] = pot;
+  r->momentum[row] = mom;
   if (rc->snaps && t >= rc->next_snapshot - 1e-12) {
     if ((st = write_snapshot(rc, p, k, t, err))) return st;
     rc->next_snapshot += rc->snapshot_interval;

@@ -462,6 +462,8 @@ static enum wl_status write_case_h5(struct wl_store *h5, const struct wl_case_re
   VEC("wall/moment_filtered", l->moment_filtered, "N m/m", "low-pass filtered");
   VEC("energy/kinetic", r->kinetic, "J/m", "fluid kinetic energy");
   VEC("energy/potential", r->potential, "J/m", "fluid potential energy above the floor");
+  VEC("momentum/x", r->momentum, "N s/m",
+      "fluid horizontal momentum; its change is the impulse given to all boundaries");
 #undef VEC
   if (!st) {
     snprintf(p, sizeof p, "%s/wall/pressure", g);

@@ -16,6 +16,7 @@ void record_clear(struct wl_record *r) {
   free(r->moment_bound);
   free(r->kinetic);
   free(r->potential);
+  free(r->momentum);
   memset(r, 0, sizeof *r);
 }
 
@@ -34,7 +35,7 @@ enum wl_status record_push(struct wl_record *r, struct wl_error *err) {
              grow(&r->force, cap, 1) && grow(&r->moment, cap, 1) &&
              grow(&r->force_bound, cap, 1) && grow(&r->moment_bound, cap, 1) &&
              grow(&r->kinetic, cap, 1) &&
-             grow(&r->potential, cap, 1);
+             grow(&r->potential, cap, 1) && grow(&r->momentum, cap, 1);
     if (!ok)
       return wl_error_set(err, WL_ENOMEM, "record: no memory for %zu output samples", cap);
     r->cap = cap;
