@@ -50,6 +50,35 @@ m = max(float(r['force_filtered_N_per_m']) for r in rows if float(r['time_s']) >
 v = s['peak_force']['value']
 raise SystemExit(0 if abs(m - v) <= 1e-5 * abs(v) else 1)
 PY
+# summary positive-phase impulse == the trapezoid integral of (raw force -
+# static force) from the CSV over the filtered force's positive phase around
+# its peak, recomputed here in Python (loads.h definition), for both cases
+python3 - <<'PY' && ok "summary positive-phase impulse = integral of the stored force over the peak's positive phase" || bad "positive-phase impulse differs from the stored series"
+import json, csv
+summ = json.load(open('tiny-results/summary.json'))['cases']
+bad = 0
+for case, c in summ.items():
+    rows = list(csv.DictReader(open('tiny-results/%s_wall.csv' % case)))
+    t = [float(r['time_s']) for r in rows]
+    f = [float(r['force_N_per_m']) for r in rows]
+    ff = [float(r['force_filtered_N_per_m']) for r in rows]
+    fs = c['static_force']['value']
+    t0 = c['peaks_from']['value']
+    ip = max((k for k in range(len(t)) if t[k] >= t0), key=lambda k: ff[k])
+    a = b = ip
+    if ff[ip] > fs:
+        while a > 0 and ff[a] > fs: a -= 1
+        while b + 1 < len(t) and ff[b] > fs: b += 1
+    imp = sum(0.5 * (f[k] + f[k + 1] - 2 * fs) * (t[k + 1] - t[k]) for k in range(a, b))
+    v = c['impulse_positive_phase']['value']
+    ok = abs(imp - v) <= 1e-4 * max(1.0, abs(v))
+    print('%s: positive phase %.4g to %.4g s, %.6g N s/m (summary %.6g)' % (case, t[a], t[b], imp, v))
+    bad += not ok
+cmp = json.load(open('tiny-results/summary.json'))['comparison']
+larger = max(summ, key=lambda k: summ[k]['impulse_positive_phase']['value'])
+if cmp['larger_impulse_positive_phase'] != larger: bad += 1
+raise SystemExit(1 if bad else 0)
+PY
 # the late-peak caution: present exactly when the filtered force's maximum
 # (recomputed here from the CSV) lies in the last tenth of the searched
 # record. The solitary wave alone: at 0.9 s its crest is just reaching the

@@ -91,6 +91,49 @@ int main(void) {
   CHECK_ABS(pk.rise_time, 0.9, 0.0005, "rise time 10 % -> peak (by hand)");
   CHECK_ABS(pk.duration, 2.7, 0.0005, "duration above 10 % (by hand)");
   CHECK_REL(wl_loads_cutoff(40.0, 0.5, 1e-3), 10.0, 1e-12, "cut-off c0/(8 d)");
+
+  /* Positive phase: x = base + A sin(w t) e^(-t/tau) on 0..4 periods, a
+   * decaying oscillating train (its net impulse nearly cancels). The peak
+   * lies in the first half period, so the phase is [0, pi/w] (x = base at
+   * t = 0 and at pi/w exactly), and int (x - base) dt over it is
+   * A w / (w^2 + 1/tau^2) (1 + e^(-pi/(w tau))) (by hand: int e^(-t/tau)
+   * sin(w t) dt). The trapezoid rule on 2001 samples is good to 1e-5; the
+   * sample at pi/w may read a rounding above base (sin(pi) ~ 1e-16), so
+   * the phase may end one sample late, adding at most A w dt^2 / 2 ~ 6e-4
+   * (1e-4 of the impulse): the tolerance is 2e-4. */
+  {
+    const double A = 50.0, w = 2.0 * WL_PI, tau = 20.0, base = 100.0, T4 = 4.0;
+    const int m = 2001;
+    double *ts = malloc(m * sizeof *ts), *xs = malloc(m * sizeof *xs),
+           *net = malloc(m * sizeof *net), *cum = malloc(m * sizeof *cum);
+    for (int k = 0; k < m; k++) {
+      ts[k] = T4 * k / (m - 1);
+      net[k] = A * sin(w * ts[k]) * exp(-ts[k] / tau);
+      xs[k] = base + net[k];
+    }
+    struct wl_peak pp;
+    wl_loads_peak(ts, xs, (size_t)m, base, &pp);
+    size_t i0, i1;
+    wl_loads_positive_phase(xs, (size_t)m, base, pp.index, &i0, &i1);
+    wl_loads_cumulative(ts, net, (size_t)m, cum);
+    double exact = A * w / (w * w + 1.0 / (tau * tau)) * (1.0 + exp(-WL_PI / (w * tau)));
+    CHECK_ABS(ts[i0], 0.0, 1e-12, "positive phase starts at the record's start");
+    CHECK_ABS(ts[i1], 0.5, 1.01 * T4 / (m - 1), "positive phase ends at pi/w");
+    CHECK_REL(cum[i1] - cum[i0], exact, 2e-4, "positive-phase impulse (closed form)");
+    /* over 4 whole periods the net impulse is A w / (w^2 + 1/tau^2)
+     * (1 - e^(-4 T / tau)): a tenth of the first phase's here */
+    double net_exact = A * w / (w * w + 1.0 / (tau * tau)) * (1.0 - exp(-T4 / tau));
+    CHECK_REL(cum[m - 1], net_exact, 1e-4, "net impulse of the train (closed form)");
+    CHECK_TRUE(cum[m - 1] < 0.15 * (cum[i1] - cum[i0]), "the net impulse is far below the phase's");
+    /* a phase that is still positive at the record's end ends there */
+    wl_loads_positive_phase(xs, 200, base, pp.index, &i0, &i1); /* 0 .. 0.398 s */
+    CHECK_TRUE(i0 == 0 && i1 == 199, "phase cut by the record's end");
+    /* a peak at or below base has an empty phase */
+    for (int k = 0; k < m; k++) xs[k] = base - 1.0;
+    wl_loads_positive_phase(xs, (size_t)m, base, 7, &i0, &i1);
+    CHECK_TRUE(i0 == 7 && i1 == 7, "no positive phase: i0 = i1 = the peak");
+    free(ts), free(xs), free(net), free(cum);
+  }
   free(t), free(f), free(I), free(x), free(y), free(tt);
   return TEST_RESULT();
 }

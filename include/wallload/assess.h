@@ -79,6 +79,8 @@ struct wl_case_loads {
   double *impulse_bound;    /* the same from the boundary particles [N s/m] */
   struct wl_peak force_peak, moment_peak, force_bound_peak; /* of the filtered series */
   double impulse_total;     /* [N s/m] at the end of the record */
+  double impulse_peak;      /* of the peak force's positive phase (loads.h), probes [N s/m] */
+  double impulse_peak_from, impulse_peak_to; /* that phase [s] */
   double runup;             /* max eta at the wall face [m] */
   double runup_time;        /* [s] */
 };

@@ -20,6 +20,13 @@
  *    F - F_static was below 10 % of its peak, to the peak.
  *  - duration: the time the net force stays above 10 % of its peak, from
  *    its first upward crossing to its last downward crossing.
+ *  - positive-phase impulse [N s/m]: the integral of F - F_static over the
+ *    positive phase of the peak, from the last time before the peak that
+ *    the filtered net force was at or below zero to the first time after
+ *    it. It is the impulse that acts with the peak force. The net impulse
+ *    of a whole record can be far smaller: an explosion's oscillating wave
+ *    train pushes and pulls in turn, and its net impulse is a small
+ *    difference of large numbers whose sign changes with the resolution.
  *  - run-up: the highest water level at the wall face above still water. */
 #ifndef WALLLOAD_LOADS_H
 #define WALLLOAD_LOADS_H
@@ -65,6 +72,15 @@ struct wl_peak {
 /* Peak of (x - base) over the record and its rise time and duration with
  * WL_LOADS_THRESHOLD; value is the peak of x itself. n >= 1. */
 void wl_loads_peak(const double *t, const double *x, size_t n, double base, struct wl_peak *pk);
+
+/* The positive phase of the peak at index ip of x - base (a filtered
+ * force): *i0 is the last sample at or before ip where x <= base (0 when
+ * there is none), *i1 the first at or after ip where x <= base (n - 1 when
+ * there is none). A peak at or below base gives *i0 = *i1 = ip. The
+ * phase's impulse is I[*i1] - I[*i0] of a cumulative integral I of
+ * x - base (wl_loads_cumulative). n >= 1, ip < n. */
+void wl_loads_positive_phase(const double *x, size_t n, double base, size_t ip, size_t *i0,
+                             size_t *i1);
 
 /* ---- convergence over a resolution ladder --------------------------------- */
 

@@ -343,6 +343,14 @@ static enum wl_status write_summary(const struct wl_scenario *s, const struct wl
          "integral of (force - static force), raw pressure-probe force", 0);
     jval(&t, "impulse_boundary", c->rec.n ? l->impulse_bound[c->rec.n - 1] : NAN, "N s/m",
          "integral of (force - static force), boundary particles", 0);
+    {
+      char ph[160];
+      snprintf(ph, sizeof ph,
+               "integral of (force - static force) over the peak's positive phase, %.4g to %.4g s, "
+               "raw pressure-probe force",
+               l->impulse_peak_from, l->impulse_peak_to);
+      jval(&t, "impulse_positive_phase", l->impulse_peak, "N s/m", ph, 0);
+    }
     jval(&t, "peak_moment", l->moment_peak.value, "N m/m", filt, 0);
     jval(&t, "max_runup", l->runup, "m", "water level at the wall face above still water", 0);
     jval(&t, "rise_time", l->force_peak.rise_time, "s", "10 % of the dynamic peak to the peak", 0);
@@ -378,6 +386,7 @@ static enum wl_status write_summary(const struct wl_scenario *s, const struct wl
     const struct wl_case_loads *a = &res->cases[0].loads, *b = &res->cases[1].loads;
     int f = a->force_peak.value >= b->force_peak.value ? 0 : 1;
     int im = a->impulse_total >= b->impulse_total ? 0 : 1;
+    int ip = a->impulse_peak >= b->impulse_peak ? 0 : 1;
     put(&t, ",\n  \"comparison\": {\n    \"larger_peak_force\": ");
     jstr(&t, res->cases[f].name);
     put(&t, ",\n    \"peak_force_ratio\": ");
@@ -386,6 +395,10 @@ static enum wl_status write_summary(const struct wl_scenario *s, const struct wl
     jstr(&t, res->cases[im].name);
     put(&t, ",\n    \"impulse_ratio\": ");
     jnum(&t, res->cases[im].loads.impulse_total / res->cases[1 - im].loads.impulse_total);
+    put(&t, ",\n    \"larger_impulse_positive_phase\": ");
+    jstr(&t, res->cases[ip].name);
+    put(&t, ",\n    \"impulse_positive_phase_ratio\": ");
+    jnum(&t, res->cases[ip].loads.impulse_peak / res->cases[1 - ip].loads.impulse_peak);
     put(&t, "\n  }");
   }
   (void)plan;

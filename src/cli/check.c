@@ -141,7 +141,10 @@ static void print_case(const struct wl_case_result *c) {
   printf("  %-34s %12.5g kN/m  (boundary particles, filtered)\n", "peak force",
          l->force_bound_peak.value / 1e3);
   printf("  %-34s %12.5g kN/m  (rho g d^2/2)\n", "static force", c->static_force / 1e3);
-  printf("  %-34s %12.5g kN s/m\n", "impulse (force - static)", l->impulse_total / 1e3);
+  printf("  %-34s %12.5g kN s/m (whole record)\n", "impulse (force - static)",
+         l->impulse_total / 1e3);
+  printf("  %-34s %12.5g kN s/m (%.3f to %.3f s)\n", "impulse of the peak's positive phase",
+         l->impulse_peak / 1e3, l->impulse_peak_from, l->impulse_peak_to);
   printf("  %-34s %12.5g kN m/m\n", "peak overturning moment", l->moment_peak.value / 1e3);
   printf("  %-34s %12.5g m\n", "max run-up at the wall", l->runup);
   printf("  %-34s %12.5g s\n", "rise time", l->force_peak.rise_time);

@@ -94,6 +94,17 @@ enum wl_status wl_loads_lowpass(const double *x, size_t n, double dt, double fc,
   return WL_OK;
 }
 
+void wl_loads_positive_phase(const double *x, size_t n, double base, size_t ip, size_t *i0,
+                             size_t *i1) {
+  size_t a = ip, b = ip;
+  if (x[ip] > base) {
+    while (a > 0 && x[a] > base) a--;
+    while (b + 1 < n && x[b] > base) b++;
+  }
+  *i0 = a;
+  *i1 = b;
+}
+
 void wl_loads_peak(const double *t, const double *x, size_t n, double base, struct wl_peak *pk) {
   size_t ip = 0;
   for (size_t k = 1; k < n; k++)

@@ -287,6 +287,7 @@ static void case_derive(struct wl_report_case *c) {
   static const struct wl_peak none = {NAN, NAN, 0, NAN, NAN};
   c->force_peak = c->force_b_peak = c->moment_peak = none;
   c->impulse_total = c->impulse_b_total = c->runup = c->runup_time = NAN;
+  c->impulse_peak = c->impulse_peak_from = c->impulse_peak_to = NAN;
   c->wall_gauge = -1;
   for (int g = 0; g < c->n_gauges; g++)
     if (!strcmp(c->gauges[g].name, "wall"))
@@ -300,14 +301,26 @@ static void case_derive(struct wl_report_case *c) {
   const double *f = c->force_f ? c->force_f : c->force;
   const double *fb = c->force_bf ? c->force_bf : c->force_b;
   const double *m = c->moment_f ? c->moment_f : c->moment;
+  /* from peaks_from on, as the assessment searched them; indices made
+   * absolute (sample numbers of the stored series) */
+  size_t k0 = 0;
+  while (isfinite(c->peaks_from) && k0 + 1 < n && c->t[k0] < c->peaks_from)
+    k0++;
   if (f)
-    wl_loads_peak(c->t, f, n, fs, &c->force_peak);
+    wl_loads_peak(c->t + k0, f + k0, n - k0, fs, &c->force_peak), c->force_peak.index += k0;
   if (fb)
-    wl_loads_peak(c->t, fb, n, fs, &c->force_b_peak);
+    wl_loads_peak(c->t + k0, fb + k0, n - k0, fs, &c->force_b_peak), c->force_b_peak.index += k0;
   if (m)
-    wl_loads_peak(c->t, m, n, ms, &c->moment_peak);
+    wl_loads_peak(c->t + k0, m + k0, n - k0, ms, &c->moment_peak), c->moment_peak.index += k0;
   if (c->impulse)
     c->impulse_total = c->impulse[n - 1];
+  if (f && c->impulse) {
+    size_t p0, p1;
+    wl_loads_positive_phase(f, n, fs, c->force_peak.index, &p0, &p1);
+    c->impulse_peak = c->impulse[p1] - c->impulse[p0];
+    c->impulse_peak_from = c->t[p0];
+    c->impulse_peak_to = c->t[p1];
+  }
   if (c->impulse_b)
     c->impulse_b_total = c->impulse_b[n - 1];
   if (c->wall_gauge >= 0 && c->gauges[c->wall_gauge].eta) {
@@ -343,6 +356,7 @@ static enum wl_status read_case(hid_t file, const char *file_name, int index,
       {"end_time", &c->end_time},
       {"time_reached", &c->time_reached},
       {"filter_cutoff", &c->cutoff},
+      {"peaks_from", &c->peaks_from},
       {"static_force", &c->static_force},
       {"static_moment", &c->static_moment},
       {"wall_x", &c->wall_x},

@@ -47,6 +47,7 @@ struct wl_report_case {
   /* scalar attributes (NAN when absent) */
   double dp, h, c0, particles, fluid_particles, steps, runtime, end_time, time_reached;
   double cutoff;        /* low-pass cut-off of the filtered series [Hz] */
+  double peaks_from;    /* peaks are searched from this time on [s] (assess.h; 0 when absent) */
   double static_force;  /* [N/m] */
   double static_moment; /* [N m/m] */
   double wall_x, wall_toe_z, wall_crest_z, still_water_z; /* [m] */
@@ -69,6 +70,8 @@ struct wl_report_case {
   struct wl_peak force_b_peak;           /* of force_bf */
   struct wl_peak moment_peak;            /* of moment_f (base static_moment) */
   double impulse_total, impulse_b_total; /* last samples [N s/m] */
+  double impulse_peak;                   /* of the force peak's positive phase [N s/m] */
+  double impulse_peak_from, impulse_peak_to; /* that phase [s] */
   double runup, runup_time;              /* max eta of the wall gauge [m], when [s] */
 };
 

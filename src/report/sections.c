@@ -146,7 +146,7 @@ static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
   char f[2][64], im[2][64], tf[2][64];
   for (int i = 0; i < WL_REPORT_N_CASES; i++) {
     wl_report_fmt(cs[i].force_peak.value / KILO, dg, f[i], sizeof f[i]);
-    wl_report_fmt(cs[i].impulse_total / KILO, dg, im[i], sizeof im[i]);
+    wl_report_fmt(cs[i].impulse_peak / KILO, dg, im[i], sizeof im[i]);
     wl_report_fmt(cs[i].force_peak.time, TIME_DIGITS, tf[i], sizeof tf[i]);
   }
   const int S = WL_REPORT_CASE_SOLITARY, X = WL_REPORT_CASE_EXPLOSION;
@@ -156,18 +156,19 @@ static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
     int i = cs[S].present ? S : X;
     put(&b,
         "Only the %s case is in the results (no %s case was run), so the two cases are not "
-        "compared. Its peak force is %s kN/m (at t = %s s) and its impulse %s kN s/m per metre "
-        "of wall. ",
+        "compared. Its peak force is %s kN/m (at t = %s s) and the impulse of the peak's "
+        "positive phase %s kN s/m per metre of wall. ",
         cs[i].name, cs[1 - i].name, f[i], tf[i], im[i]);
   } else {
     int gf = wl_report_governs(cs[S].force_peak.value, cs[X].force_peak.value);
-    int gi = wl_report_governs(cs[S].impulse_total, cs[X].impulse_total);
+    int gi = wl_report_governs(cs[S].impulse_peak, cs[X].impulse_peak);
     if (gf < 0) {
       put(&b, "Neither case has a peak force in its record, so none governs. ");
     } else if (gf == gi) {
       put(&b,
-          "The %s case governs: its peak force, %s kN/m (at t = %s s), and its impulse, %s kN s/m "
-          "per metre of wall, exceed the %s case's %s kN/m and %s kN s/m. ",
+          "The %s case governs: its peak force, %s kN/m (at t = %s s), and the impulse of that "
+          "peak's positive phase, %s kN s/m per metre of wall, exceed the %s case's %s kN/m and "
+          "%s kN s/m. ",
           cs[gf].name, f[gf], tf[gf], im[gf], cs[1 - gf].name, f[1 - gf], im[1 - gf]);
     } else {
       put(&b,
@@ -175,7 +176,8 @@ static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
           "(at t = %s s) against %s kN/m",
           cs[gf].name, f[gf], tf[gf], f[1 - gf]);
       if (gi >= 0)
-        put(&b, ", the %s case the larger impulse, %s kN s/m against %s kN s/m", cs[gi].name,
+        put(&b, ", the %s case the larger positive-phase impulse, %s kN s/m against %s kN s/m",
+            cs[gi].name,
             im[gi], im[1 - gi]);
       put(&b, " (per metre of wall). ");
     }
@@ -190,7 +192,8 @@ static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
     char cut[64], fs[64];
     put(&b,
         "Peak forces are those of the pressure probes on the wall face, %s (cut-off %s Hz); "
-        "impulses integrate the force in excess of the hydrostatic force at rest (%s kN/m). ",
+        "impulses integrate the force in excess of the hydrostatic force at rest (%s kN/m) over "
+        "the peak's positive phase (the net impulse of the whole record is in the peaks table). ",
         cs[first].filtered ? "low-pass filtered" : "unfiltered (no filtered series stored)",
         wl_report_fmt(cs[first].cutoff, 3, cut, sizeof cut),
         wl_report_fmt(cs[first].static_force / KILO, dg, fs, sizeof fs));
@@ -340,7 +343,11 @@ enum wl_status wl_report_render_peaks(struct wl_report_ctx *c, const struct wl_r
         "Peak force and peak moment are taken from the low-pass filtered series (zero-phase "
         "Butterworth, cut-off c0/(8 d), d the water depth at the wall: %s), not from the raw "
         "ones. Impulse is the time integral of the raw probe force minus the hydrostatic force "
-        "at rest, to the end of the record. Run-up is the highest water level at the wall face "
+        "at rest, to the end of the record; the positive phase's impulse is that integral over "
+        "the peak's positive phase only (from the last time before the peak that the filtered "
+        "force was at or below the force at rest to the first time after it): the impulse "
+        "that acts with the peak, where an oscillating wave train's net impulse nearly "
+        "cancels. Run-up is the highest water level at the wall face "
         "above still water. Rise time and duration are those of the filtered force in excess "
         "of the force at rest (10 %% of its peak). All per metre of wall.",
         k ? cuts : "no case in the results");
@@ -350,12 +357,13 @@ enum wl_status wl_report_render_peaks(struct wl_report_ctx *c, const struct wl_r
       {"peak force", "kN/m", WL_REPORT_ALIGN_AUTO, 0},
       {"at", "s", WL_REPORT_ALIGN_AUTO, 0},
       {"impulse", "kN s/m", WL_REPORT_ALIGN_AUTO, 0},
+      {"positive phase", "kN s/m", WL_REPORT_ALIGN_AUTO, 0},
       {"peak moment", "kN m/m", WL_REPORT_ALIGN_AUTO, 0},
       {"run-up", "m", WL_REPORT_ALIGN_AUTO, 0},
       {"rise time", "s", WL_REPORT_ALIGN_AUTO, 0},
       {"duration", "s", WL_REPORT_ALIGN_AUTO, 0},
   };
-  enum { NC = 8 };
+  enum { NC = 9 };
   struct wl_report_column cols[NC];
   memcpy(cols, cols0, sizeof cols);
   for (int k = 1; k < NC; k++)
@@ -375,10 +383,11 @@ enum wl_status wl_report_render_peaks(struct wl_report_ctx *c, const struct wl_r
       row[1] = (struct wl_report_cell){NULL, k->force_peak.value / KILO};
       row[2] = (struct wl_report_cell){NULL, k->force_peak.time};
       row[3] = (struct wl_report_cell){NULL, k->impulse_total / KILO};
-      row[4] = (struct wl_report_cell){NULL, k->moment_peak.value / KILO};
-      row[5] = (struct wl_report_cell){NULL, k->runup};
-      row[6] = (struct wl_report_cell){NULL, k->force_peak.rise_time};
-      row[7] = (struct wl_report_cell){NULL, k->force_peak.duration};
+      row[4] = (struct wl_report_cell){NULL, k->impulse_peak / KILO};
+      row[5] = (struct wl_report_cell){NULL, k->moment_peak.value / KILO};
+      row[6] = (struct wl_report_cell){NULL, k->runup};
+      row[7] = (struct wl_report_cell){NULL, k->force_peak.rise_time};
+      row[8] = (struct wl_report_cell){NULL, k->force_peak.duration};
     }
     rows++;
   }
@@ -392,10 +401,12 @@ enum wl_status wl_report_render_peaks(struct wl_report_ctx *c, const struct wl_r
     row[1].text = g < 0 ? "n/a" : cs[g].name;
     g = wl_report_governs(cs[0].impulse_total, cs[1].impulse_total);
     row[3].text = g < 0 ? "n/a" : cs[g].name;
-    g = wl_report_governs(cs[0].moment_peak.value, cs[1].moment_peak.value);
+    g = wl_report_governs(cs[0].impulse_peak, cs[1].impulse_peak);
     row[4].text = g < 0 ? "n/a" : cs[g].name;
-    g = wl_report_governs(cs[0].runup, cs[1].runup);
+    g = wl_report_governs(cs[0].moment_peak.value, cs[1].moment_peak.value);
     row[5].text = g < 0 ? "n/a" : cs[g].name;
+    g = wl_report_governs(cs[0].runup, cs[1].runup);
+    row[6].text = g < 0 ? "n/a" : cs[g].name;
     rows++;
   }
   struct wl_report_table tab = {
