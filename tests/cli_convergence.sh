@@ -68,6 +68,7 @@ report(all(same(l['dp'], 0.025 * f) for l, f in zip(lv, (1, 0.71, 0.5))),
 rows = [r for r in csv.DictReader(open(sys.argv[2])) if r['case'] == 'solitary']
 keys = [('dp', 'dp_m'), ('particles', 'particles'), ('steps', 'steps'), ('runtime', 'runtime_s'),
         ('peak_force', 'peak_force_N_per_m'), ('impulse', 'impulse_Ns_per_m'),
+        ('impulse_positive_phase', 'impulse_positive_phase_Ns_per_m'),
         ('peak_moment', 'peak_moment_Nm_per_m'), ('max_runup', 'max_runup_m'),
         ('estimated_error', 'estimated_error')]
 report(len(rows) == 3 and all(same(l[j], float(r[c])) for l, r in zip(lv, rows) for j, c in keys),
@@ -101,7 +102,7 @@ def celik(h, f):
 
 h = [l['dp'] for l in lv]
 errs = []
-for q, key in (('peak_force', 'peak_force'), ('impulse', 'impulse')):
+for q, key in (('peak_force', 'peak_force'), ('impulse_positive_phase', 'impulse_positive_phase')):
     f = [l[key] for l in lv]
     p, ext, err = celik(h, f)
     st = cv[q]

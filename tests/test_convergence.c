@@ -205,17 +205,18 @@ static void test_storage(void) {
               rc->particles[l] == lv->n_particles && rc->steps[l] == (double)lv->steps &&
               rc->runtime[l] == lv->runtime_s && rc->peak_force[l] == lv->peak_force &&
               rc->peak_force_b[l] == lv->peak_force_bound && rc->impulse[l] == lv->impulse &&
+              rc->impulse_phase[l] == lv->impulse_phase &&
               rc->peak_moment[l] == lv->peak_moment && rc->runup[l] == lv->runup &&
               close_rel(rc->error[l], lv->error, 0) && rc->status[l] == (int)lv->status;
     }
     check(same, "every level's dp, particles, steps, runtime, peaks, impulse, run-up, error "
                 "read back bit for bit");
     snprintf(msg, sizeof msg,
-             "attributes read back: force order %g, impulse order %g, error estimate %g, target "
+             "attributes read back: force order %g, positive-phase impulse order %g, error estimate %g, target "
              "%g, target met %g",
-             rc->force_order, rc->impulse_order, rc->error_estimate, rc->target, rc->target_met);
+             rc->force_order, rc->phase_order, rc->error_estimate, rc->target, rc->target_met);
     check(close_rel(rc->force_order, cv->force.order, 0) &&
-              close_rel(rc->impulse_order, cv->impulse.order, 0) &&
+              close_rel(rc->phase_order, cv->impulse_phase.order, 0) &&
               close_rel(rc->force_extrapolated, cv->force.extrapolated, 0) &&
               close_rel(rc->error_estimate, cv->error_estimate, 0) && rc->target == cv->target &&
               rc->target_met == cv->target_met && !strcmp(rc->note, cv->note),
@@ -257,6 +258,7 @@ static void test_storage(void) {
       same &= close_rel(json_number(p, "dp"), cv->lv[l].dp, 1e-9) &&
               close_rel(json_number(p, "peak_force"), cv->lv[l].peak_force, 1e-9) &&
               close_rel(json_number(p, "impulse"), cv->lv[l].impulse, 1e-9) &&
+              close_rel(json_number(p, "impulse_positive_phase"), cv->lv[l].impulse_phase, 1e-9) &&
               close_rel(json_number(p, "estimated_error"), cv->lv[l].error, 1e-9);
       p++;
     }

@@ -128,11 +128,12 @@ struct wl_assess_level {
   double t_reached;         /* [s] */
   double peak_force;        /* filtered, pressure probes [N/m] */
   double peak_force_bound;  /* filtered, boundary particles [N/m] */
-  double impulse;           /* int (F - F_static) dt, probes [N s/m] */
+  double impulse;           /* int (F - F_static) dt, probes, whole record [N s/m] */
+  double impulse_phase;     /* the same over the peak's positive phase (loads.h) [N s/m] */
   double peak_moment;       /* filtered, about the toe [N m/m] */
   double runup;             /* max water level at the wall above still water [m] */
   double error;             /* estimated relative error of this level: the larger of peak
-                               force and impulse, |f_k - f_ref|/|f_ref| with f_ref the
+                               force and positive-phase impulse, |f_k - f_ref|/|f_ref| with f_ref the
                                Richardson value when the order is meaningful, else the
                                finest level run; the finest level gets the case's estimate */
 };
@@ -142,8 +143,11 @@ struct wl_assess_convergence {
   int n_planned;            /* levels in the scenario (0: no ladder) */
   int n_levels;             /* levels run */
   struct wl_assess_level lv[WL_ASSESS_MAX_LEVELS];
-  struct wl_loads_convergence force, impulse; /* of peak force (probes) and impulse */
-  double error_estimate;    /* max(force.error, impulse.error) [-]; NaN: none */
+  /* of the peak force (probes) and of the positive-phase impulse: the net
+   * impulse of an oscillating wave train is too small a difference to
+   * converge (loads.h), the positive phase's is the load acting with the peak */
+  struct wl_loads_convergence force, impulse_phase;
+  double error_estimate;    /* max(force.error, impulse_phase.error) [-]; NaN: none */
   double target;            /* resolution.target_error [-] (its default when not given) */
   int target_given;         /* 1: written in the scenario: the ladder may stop early */
   int target_met;           /* error_estimate <= target */

@@ -35,20 +35,20 @@ void ladder_estimate(struct wl_assess_convergence *cv) {
     if (cv->lv[k].status != WL_OK) continue;
     h[m] = cv->lv[k].dp;
     fo[m] = cv->lv[k].peak_force;
-    im[m] = cv->lv[k].impulse;
+    im[m] = cv->lv[k].impulse_phase;
     idx[m++] = k;
   }
   wl_loads_convergence(h, fo, m, &cv->force);
-  wl_loads_convergence(h, im, m, &cv->impulse);
-  cv->error_estimate = (isnan(cv->force.error) || isnan(cv->impulse.error))
+  wl_loads_convergence(h, im, m, &cv->impulse_phase);
+  cv->error_estimate = (isnan(cv->force.error) || isnan(cv->impulse_phase.error))
                            ? NAN
-                           : fmax(cv->force.error, cv->impulse.error);
+                           : fmax(cv->force.error, cv->impulse_phase.error);
   cv->target_met = isfinite(cv->error_estimate) && cv->error_estimate <= cv->target;
   if (m < 2) return;
   /* each coarser level against the best value known: Richardson's when the
    * order is meaningful, else the finest complete level */
   double ref_f = cv->force.order_ok ? cv->force.extrapolated : fo[m - 1];
-  double ref_i = cv->impulse.order_ok ? cv->impulse.extrapolated : im[m - 1];
+  double ref_i = cv->impulse_phase.order_ok ? cv->impulse_phase.extrapolated : im[m - 1];
   for (int j = 0; j + 1 < m; j++)
     cv->lv[idx[j]].error = fmax(rel_change(fo[j], ref_f), rel_change(im[j], ref_i));
   cv->lv[idx[m - 1]].error = cv->error_estimate;
@@ -66,6 +66,7 @@ static void level_from_case(struct wl_assess_level *lv, const struct wl_case_res
   lv->peak_force = have ? l->force_peak.value : NAN;
   lv->peak_force_bound = have ? l->force_bound_peak.value : NAN;
   lv->impulse = have ? l->impulse_total : NAN;
+  lv->impulse_phase = have ? l->impulse_peak : NAN;
   lv->peak_moment = have ? l->moment_peak.value : NAN;
   lv->runup = have ? l->runup : NAN;
   lv->error = NAN;
@@ -84,11 +85,11 @@ static void ladder_note(struct wl_assess_convergence *cv, const char *stop_word)
   pct(cv->error_estimate, e, sizeof e);
   pct(cv->target, t, sizeof t);
   const char *basis = cv->force.basis == WL_LOADS_EST_RICHARDSON &&
-                              cv->impulse.basis == WL_LOADS_EST_RICHARDSON
+                              cv->impulse_phase.basis == WL_LOADS_EST_RICHARDSON
                           ? "Richardson"
                       : cv->force.basis == WL_LOADS_EST_NONE ? "none"
                       : cv->force.basis == WL_LOADS_EST_RICHARDSON ||
-                              cv->impulse.basis == WL_LOADS_EST_RICHARDSON
+                              cv->impulse_phase.basis == WL_LOADS_EST_RICHARDSON
                           ? "Richardson and last change"
                           : "last change";
   const struct wl_assess_level *last = &cv->lv[cv->n_levels - 1];

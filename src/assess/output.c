@@ -114,11 +114,15 @@ static const struct level_field LEVEL_FIELDS[] = {
     {"peak_force_boundary", "N/m", "peak of the filtered boundary-particle force",
      LF(peak_force_bound), 0},
     {"impulse", "N s/m", "integral of (probe force - static force) dt to the end", LF(impulse), 0},
+    {"impulse_positive_phase", "N s/m",
+     "integral of (probe force - static force) dt over the peak's positive phase",
+     LF(impulse_phase), 0},
     {"peak_moment", "N m/m", "peak of the filtered overturning moment about the toe",
      LF(peak_moment), 0},
     {"max_runup", "m", "highest water level at the wall face above still water", LF(runup), 0},
     {"estimated_error", "1",
-     "relative error estimate of the level: larger of peak force and impulse, against the "
+     "relative error estimate of the level: larger of peak force and positive-phase impulse, "
+     "against the "
      "Richardson value (or the finest level); the finest level's is the case's estimate",
      LF(error), 0},
     {"status", "", "complete, unstable, interrupted or failed", LF(status), 3},
@@ -183,11 +187,11 @@ static void json_convergence(struct text *t, const struct wl_assess_convergence 
   jnum(t, cv->force.r32);
   put(t, ",\n        \"order\": { \"peak_force\": ");
   jnum(t, cv->force.order);
-  put(t, ", \"impulse\": ");
-  jnum(t, cv->impulse.order);
+  put(t, ", \"impulse_positive_phase\": ");
+  jnum(t, cv->impulse_phase.order);
   put(t, " },\n");
   json_estimate(t, "peak_force", &cv->force, 0);
-  json_estimate(t, "impulse", &cv->impulse, 0);
+  json_estimate(t, "impulse_positive_phase", &cv->impulse_phase, 0);
   put(t, "        \"error_estimate\": ");
   jnum(t, cv->error_estimate);
   put(t, ",\n        \"target\": ");
@@ -234,10 +238,10 @@ static enum wl_status write_convergence_h5(struct wl_store *h5, const struct wl_
       {"peak_force_order_meaningful", cv->force.order_ok, "1"},
       {"peak_force_extrapolated", cv->force.extrapolated, "N/m"},
       {"peak_force_error_estimate", cv->force.error, "1"},
-      {"impulse_order", cv->impulse.order, "1"},
-      {"impulse_order_meaningful", cv->impulse.order_ok, "1"},
-      {"impulse_extrapolated", cv->impulse.extrapolated, "N s/m"},
-      {"impulse_error_estimate", cv->impulse.error, "1"},
+      {"impulse_positive_phase_order", cv->impulse_phase.order, "1"},
+      {"impulse_positive_phase_order_meaningful", cv->impulse_phase.order_ok, "1"},
+      {"impulse_positive_phase_extrapolated", cv->impulse_phase.extrapolated, "N s/m"},
+      {"impulse_positive_phase_error_estimate", cv->impulse_phase.error, "1"},
       {"error_estimate", cv->error_estimate, "1"},
       {"target", cv->target, "1"},
       {"target_given", cv->target_given, "1"},
@@ -249,7 +253,8 @@ static enum wl_status write_convergence_h5(struct wl_store *h5, const struct wl_
   if (!st)
     st = wl_store_attr_text(h5, g, "peak_force_basis", wl_loads_estimate_name(cv->force.basis), err);
   if (!st)
-    st = wl_store_attr_text(h5, g, "impulse_basis", wl_loads_estimate_name(cv->impulse.basis), err);
+    st = wl_store_attr_text(h5, g, "impulse_positive_phase_basis",
+                            wl_loads_estimate_name(cv->impulse_phase.basis), err);
   if (!st) st = wl_store_attr_text(h5, g, "note", cv->note, err);
   return st;
 }

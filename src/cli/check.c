@@ -156,17 +156,18 @@ static void print_convergence(const struct wl_case_result *c,
                               const struct wl_assess_convergence *cv) {
   if (!cv->n_levels) return;
   printf("  convergence ladder (%d of %d levels):\n", cv->n_levels, cv->n_planned);
-  printf("    %5s %10s %10s %9s %14s %14s %10s\n", "level", "dp [m]", "particles", "runtime",
-         "peak F [kN/m]", "impulse [kN s/m]", "est. error");
+  printf("    %5s %10s %10s %9s %14s %16s %16s %10s\n", "level", "dp [m]", "particles", "runtime",
+         "peak F [kN/m]", "impulse [kN s/m]", "pos. phase", "est. error");
   for (int k = 0; k < cv->n_levels; k++) {
     const struct wl_assess_level *lv = &cv->lv[k];
-    printf("    %5d %10.4g %10d %8.1fs %14.5g %14.5g %9.3g%%%s\n", k + 1, lv->dp, lv->n_particles,
-           lv->runtime_s, lv->peak_force / 1e3, lv->impulse / 1e3, 100 * lv->error,
+    printf("    %5d %10.4g %10d %8.1fs %14.5g %16.5g %16.5g %9.3g%%%s\n", k + 1, lv->dp,
+           lv->n_particles, lv->runtime_s, lv->peak_force / 1e3, lv->impulse / 1e3,
+           lv->impulse_phase / 1e3, 100 * lv->error,
            lv->status == WL_OK ? "" : "  (stopped)");
   }
-  printf("    observed order: peak force %.3g%s, impulse %.3g%s\n", cv->force.order,
-         cv->force.order_ok ? "" : " (not meaningful)", cv->impulse.order,
-         cv->impulse.order_ok ? "" : " (not meaningful)");
+  printf("    observed order: peak force %.3g%s, positive-phase impulse %.3g%s\n",
+         cv->force.order, cv->force.order_ok ? "" : " (not meaningful)", cv->impulse_phase.order,
+         cv->impulse_phase.order_ok ? "" : " (not meaningful)");
   printf("    %s: %s\n", c->name, cv->note);
 }
 

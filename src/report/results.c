@@ -466,10 +466,10 @@ static enum wl_status read_convergence(hid_t file, const char *file_name, int i,
       {"peak_force_order_meaningful", &cv->force_order_ok},
       {"peak_force_extrapolated", &cv->force_extrapolated},
       {"peak_force_error_estimate", &cv->force_error},
-      {"impulse_order", &cv->impulse_order},
-      {"impulse_order_meaningful", &cv->impulse_order_ok},
-      {"impulse_extrapolated", &cv->impulse_extrapolated},
-      {"impulse_error_estimate", &cv->impulse_error},
+      {"impulse_positive_phase_order", &cv->phase_order},
+      {"impulse_positive_phase_order_meaningful", &cv->phase_order_ok},
+      {"impulse_positive_phase_extrapolated", &cv->phase_extrapolated},
+      {"impulse_positive_phase_error_estimate", &cv->phase_error},
       {"error_estimate", &cv->error_estimate},
       {"target", &cv->target},
       {"target_given", &cv->target_given},
@@ -479,7 +479,7 @@ static enum wl_status read_convergence(hid_t file, const char *file_name, int i,
   for (size_t k = 0; k < sizeof attrs / sizeof attrs[0]; k++)
     *attrs[k].v = attr_double(grp, attrs[k].name);
   attr_text(grp, "peak_force_basis", cv->force_basis, sizeof cv->force_basis);
-  attr_text(grp, "impulse_basis", cv->impulse_basis, sizeof cv->impulse_basis);
+  attr_text(grp, "impulse_positive_phase_basis", cv->phase_basis, sizeof cv->phase_basis);
   attr_text(grp, "note", cv->note, sizeof cv->note);
   H5Gclose(grp);
   struct {
@@ -495,6 +495,7 @@ static enum wl_status read_convergence(hid_t file, const char *file_name, int i,
       {"peak_force", cv->peak_force},
       {"peak_force_boundary", cv->peak_force_b},
       {"impulse", cv->impulse},
+      {"impulse_positive_phase", cv->impulse_phase},
       {"peak_moment", cv->peak_moment},
       {"max_runup", cv->runup},
       {"estimated_error", cv->error},

@@ -86,7 +86,8 @@ struct wl_report_convergence {
   double particles[WL_REPORT_MAX_LEVELS], steps[WL_REPORT_MAX_LEVELS];   /* counts */
   double runtime[WL_REPORT_MAX_LEVELS], rate[WL_REPORT_MAX_LEVELS];      /* [s], [1/s] */
   double peak_force[WL_REPORT_MAX_LEVELS], peak_force_b[WL_REPORT_MAX_LEVELS]; /* [N/m] */
-  double impulse[WL_REPORT_MAX_LEVELS];                                  /* [N s/m] */
+  double impulse[WL_REPORT_MAX_LEVELS];       /* whole record [N s/m] */
+  double impulse_phase[WL_REPORT_MAX_LEVELS]; /* the peak's positive phase [N s/m] */
   double peak_moment[WL_REPORT_MAX_LEVELS];                              /* [N m/m] */
   double runup[WL_REPORT_MAX_LEVELS];                                    /* [m] */
   double error[WL_REPORT_MAX_LEVELS];   /* estimated relative error of each level [-] */
@@ -94,9 +95,9 @@ struct wl_report_convergence {
   /* attributes */
   double levels_planned, ratio;
   double force_order, force_order_ok, force_extrapolated, force_error;
-  double impulse_order, impulse_order_ok, impulse_extrapolated, impulse_error;
+  double phase_order, phase_order_ok, phase_extrapolated, phase_error; /* positive-phase impulse */
   double error_estimate, target, target_given, target_met, stopped_early;
-  char force_basis[32], impulse_basis[32]; /* "Richardson", "last change", "none" */
+  char force_basis[32], phase_basis[32]; /* "Richardson", "last change", "none" */
   char note[WL_REPORT_ATTR_MAX];           /* how the ladder ended */
 };
 

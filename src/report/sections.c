@@ -219,7 +219,7 @@ static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
       continue;
     char ef[64], ei[64], dpf[64];
     wl_report_fmt(100.0 * cv->force_error, SHARE_DIGITS, ef, sizeof ef);
-    wl_report_fmt(100.0 * cv->impulse_error, SHARE_DIGITS, ei, sizeof ei);
+    wl_report_fmt(100.0 * cv->phase_error, SHARE_DIGITS, ei, sizeof ei);
     wl_report_fmt(cv->dp[cv->n_levels - 1], 3, dpf, sizeof dpf);
     if (!isfinite(cv->error_estimate))
       put(&b,
@@ -230,8 +230,8 @@ static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
     else
       put(&b,
           "Convergence ladder of the %s case (%d levels, finest dp = %s m): estimated relative "
-          "error %s %% of the peak force (%s) and %s %% of the impulse (%s)%s. ",
-          wl_report_case_name(i), cv->n_levels, dpf, ef, cv->force_basis, ei, cv->impulse_basis,
+          "error %s %% of the peak force (%s) and %s %% of the positive-phase impulse (%s)%s. ",
+          wl_report_case_name(i), cv->n_levels, dpf, ef, cv->force_basis, ei, cv->phase_basis,
           !isfinite(cv->target)     ? ""
           : cv->target_met > 0      ? ", within the target"
                                     : ", above the target");
@@ -497,7 +497,7 @@ static enum wl_status convergence_case_table(struct wl_report_ctx *c, int i, int
       {"runtime", "s", WL_REPORT_ALIGN_AUTO, 0},
       {"peak force", "kN/m", WL_REPORT_ALIGN_AUTO, 0},
       {"change", "%", WL_REPORT_ALIGN_AUTO, 2},
-      {"impulse", "kN s/m", WL_REPORT_ALIGN_AUTO, 0},
+      {"pos. phase impulse", "kN s/m", WL_REPORT_ALIGN_AUTO, 0},
       {"change", "%", WL_REPORT_ALIGN_AUTO, 2},
       {"est. error", "%", WL_REPORT_ALIGN_AUTO, 2},
       {"status", NULL, WL_REPORT_ALIGN_LEFT, 0},
@@ -518,8 +518,9 @@ static enum wl_status convergence_case_table(struct wl_report_ctx *c, int i, int
     row[3] = (struct wl_report_cell){NULL, cv->runtime[l]};
     row[4] = (struct wl_report_cell){NULL, cv->peak_force[l] / KILO};
     row[5] = (struct wl_report_cell){l ? NULL : "", l ? change_pct(cv->peak_force[l], cv->peak_force[l - 1]) : 0};
-    row[6] = (struct wl_report_cell){NULL, cv->impulse[l] / KILO};
-    row[7] = (struct wl_report_cell){l ? NULL : "", l ? change_pct(cv->impulse[l], cv->impulse[l - 1]) : 0};
+    row[6] = (struct wl_report_cell){NULL, cv->impulse_phase[l] / KILO};
+    row[7] = (struct wl_report_cell){l ? NULL : "",
+                                     l ? change_pct(cv->impulse_phase[l], cv->impulse_phase[l - 1]) : 0};
     row[8] = (struct wl_report_cell){NULL, 100.0 * cv->error[l]};
     row[9] = (struct wl_report_cell){cv->status[l] == 0 ? "complete" : "stopped", 0};
   }
@@ -565,11 +566,11 @@ static enum wl_status convergence_summary_table(struct wl_report_ctx *c, int dg,
     a[3] = (struct wl_report_cell){NULL, cv->force_extrapolated / KILO};
     a[4] = (struct wl_report_cell){NULL, 100.0 * cv->force_error};
     a[5] = (struct wl_report_cell){cv->force_basis[0] ? cv->force_basis : "?", 0};
-    b[1] = (struct wl_report_cell){"impulse [kN s/m]", 0};
-    b[2] = (struct wl_report_cell){NULL, cv->impulse_order};
-    b[3] = (struct wl_report_cell){NULL, cv->impulse_extrapolated / KILO};
-    b[4] = (struct wl_report_cell){NULL, 100.0 * cv->impulse_error};
-    b[5] = (struct wl_report_cell){cv->impulse_basis[0] ? cv->impulse_basis : "?", 0};
+    b[1] = (struct wl_report_cell){"positive-phase impulse [kN s/m]", 0};
+    b[2] = (struct wl_report_cell){NULL, cv->phase_order};
+    b[3] = (struct wl_report_cell){NULL, cv->phase_extrapolated / KILO};
+    b[4] = (struct wl_report_cell){NULL, 100.0 * cv->phase_error};
+    b[5] = (struct wl_report_cell){cv->phase_basis[0] ? cv->phase_basis : "?", 0};
     e[1] = (struct wl_report_cell){"case (the larger)", 0};
     e[4] = (struct wl_report_cell){NULL, 100.0 * cv->error_estimate};
     e[6] = (struct wl_report_cell){NULL, 100.0 * cv->target};
@@ -644,7 +645,7 @@ static enum wl_status convergence_plot(struct wl_report_ctx *c, struct wl_error 
     st = wl_report_end_figure(
         c->doc,
         "Speed against error: the estimated relative error of each level (the larger of peak "
-        "force and impulse, against the Richardson value where the order is meaningful, else "
+        "force and positive-phase impulse, against the Richardson value where the order is meaningful, else "
         "against the finest level; the finest level's is the case's estimate) against the "
         "wall-clock runtime of that level, log-log.",
         err);
@@ -680,7 +681,8 @@ enum wl_status wl_report_render_convergence(struct wl_report_ctx *c,
           "the two differences change sign or vanish, or p lies outside [0.5, 4], the levels "
           "are not in the asymptotic range: no extrapolation is made and the error estimate is "
           "the last change |f3 - f2| / |f3| (also with two levels). A case's estimate is the "
-          "larger of those of the peak force and the impulse.",
+          "larger of those of the peak force and the impulse of the peak's positive phase (an "
+          "oscillating wave train's net impulse is too small a difference to converge).",
           asked[0] ? " " : "", asked);
     for (int i = 0; !st && i < WL_REPORT_N_CASES; i++)
       if (r->conv[i].present)
