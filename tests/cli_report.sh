@@ -56,10 +56,19 @@ python3 - x.txt run/summary.json <<'PY'
 import json, math, sys
 text = open(sys.argv[1]).read()
 cases = json.load(open(sys.argv[2]))['cases']
+SUP = str.maketrans('-0123456789', '\u207b\u2070\u00b9\u00b2\u00b3\u2074\u2075\u2076\u2077\u2078\u2079')
 def fmt(v, sig=3):
     # fixed notation to `sig` significant digits, as the report prints
-    # numbers between 1e-3 and 1e6 (trailing zeros kept)
+    # numbers between 1e-3 and 1e6 (trailing zeros kept); outside that
+    # range a mantissa times a power of ten written in superscripts
     if v == 0: return "0"
+    if abs(v) < 1e-3 or abs(v) >= 1e6:
+        e = math.floor(math.log10(abs(v)))
+        m = '%.*f' % (sig - 1, v / 10 ** e)
+        if abs(float(m)) >= 10:  # rounded into the next decade
+            e += 1
+            m = '%.*f' % (sig - 1, v / 10 ** e)
+        return m + '\u00d710' + str(e).translate(SUP)
     e = math.floor(math.log10(abs(v)))
     s = '%.*f' % (max(0, sig - 1 - e), v)
     if len(s.lstrip('-').replace('.', '').lstrip('0')) > sig:  # rounded into the next decade
@@ -112,6 +121,35 @@ sections:
 YAML
 out=$("$bin" report run/results.h5 -o short.pdf --template short.yaml 2>&1); rc=$?
 [ $rc = 0 ] && pdftotext short.pdf - | grep -q "Peaks only" && ok "--template FILE used" || bad "--template: exit $rc: $out"
+
+# a scenario that writes its depth in feet: summary.json and the report add
+# the peaks in US customary units per foot of wall, converted here from the
+# SI values with the exact definitions (1 ft = 0.3048 m, 1 lbf = 0.45359237
+# kg x 9.80665 m/s^2)
+sed 's/depth: 0.2 m/depth: 0.65617 ft/' tiny.yaml > tinyft.yaml
+out=$("$bin" assess tinyft.yaml -o ft --quiet --end-time 0.3 2>&1); rc=$?
+[ $rc = 0 ] && ok "assess of a scenario in feet (exit 0)" || bad "assess tinyft.yaml exit $rc: $out"
+python3 - ft/summary.json <<'PY' && ok "summary.json's user_units = SI values in lbf/ft, lbf s/ft, lbf ft/ft, ft" || bad "user_units in summary.json"
+import json, sys
+cases = json.load(open(sys.argv[1]))['cases']
+lbf, ft = 0.45359237 * 9.80665, 0.3048
+conv = {'peak_force': (ft / lbf, 'lbf/ft'), 'peak_force_boundary': (ft / lbf, 'lbf/ft'),
+        'impulse': (ft / lbf, 'lbf s/ft'), 'impulse_positive_phase': (ft / lbf, 'lbf s/ft'),
+        'peak_moment': (1 / lbf, 'lbf ft/ft'), 'max_runup': (1 / ft, 'ft')}
+bad = 0
+for name, c in cases.items():
+    u = c['user_units']
+    for k, (f, unit) in conv.items():
+        want = c[k]['value'] * f
+        got = u[k]['value']
+        if u[k]['unit'] != unit or abs(got - want) > 1e-8 * max(1.0, abs(want)):
+            print('%s %s: %r %s, want %r %s' % (name, k, got, u[k]['unit'], want, unit)); bad += 1
+sys.exit(bad)
+PY
+pdftotext -layout ft/report.pdf - 2>/dev/null | tr -s ' \n' '  ' > ft.txt
+grep -q "in the scenario's units (US customary" ft.txt && grep -q "\[lbf/ft\]" ft.txt \
+  && ok "the report adds the peaks in lbf/ft" || bad "no US customary peaks table in the report"
+grep -q "lbf/ft" x.txt && bad "a scenario in metres got a lbf/ft table" || ok "no lbf/ft table for a scenario in metres"
 
 out=$("$bin" report missing/results.h5 -o y.pdf 2>&1); rc=$?
 [ $rc = 1 ] && grep -q "cannot open" <<<"$out" && ok "missing results -> 1: $out" || bad "missing results -> $rc: $out"

@@ -58,5 +58,20 @@ int main(void) {
   CHECK_TRUE(rejects("inf m", WL_DIM_LENGTH, "not a number"), "inf is not a value");
   CHECK_TRUE(rejects("1/0", WL_DIM_RATIO, "non-zero denominator"), "division by zero");
   CHECK_TRUE(rejects("3 m", WL_DIM_NONE, "plain number"), "a count takes no unit");
+  /* Load figures in US customary units, against NIST SP 811 (2008)
+   * appendix B.9 factors: 1 lbf/ft = 14.593 90 N/m, 1 lbf = 4.448 222 N
+   * (so 1 lbf ft/ft = 4.448 222 N m/m), 1 ft = 0.3048 m. */
+  {
+    struct wl_load_units u;
+    CHECK_TRUE(wl_units_load_units("ft", &u) == 1 && !strcmp(u.force, "lbf/ft"),
+               "a scenario in feet gets lbf/ft");
+    CHECK_REL(1.0 / u.force_f, 14.59390, 1e-6, "1 lbf/ft = 14.59390 N/m (NIST SP 811)");
+    CHECK_REL(1.0 / u.impulse_f, 14.59390, 1e-6, "1 lbf s/ft = 14.59390 N s/m");
+    CHECK_REL(1.0 / u.moment_f, 4.448222, 1e-6, "1 lbf ft/ft = 4.448222 N m/m (NIST SP 811)");
+    CHECK_REL(u.length_f * 0.3048, 1.0, 1e-15, "m -> ft");
+    CHECK_TRUE(wl_units_load_units("in", &u) == 1, "inches: US customary figures too");
+    CHECK_TRUE(wl_units_load_units("m", &u) == 0 && wl_units_load_units("", &u) == 0,
+               "metres: no second set");
+  }
   return TEST_RESULT();
 }

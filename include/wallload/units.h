@@ -15,6 +15,7 @@
 #define WL_FT_M 0.3048          /* metres per international foot (exact) */
 #define WL_IN_M 0.0254          /* metres per inch (exact) */
 #define WL_LB_KG 0.45359237     /* kilograms per avoirdupois pound (exact) */
+#define WL_G_LBF 9.80665        /* standard gravity of the pound-force (exact, CGPM 1901) */
 #define WL_TNT_J_PER_KG 4.184e6 /* TNT equivalent: 1 kg TNT = 4.184 MJ (by definition) */
 #define WL_PI 3.14159265358979323846 /* C11 has no M_PI */
 #define WL_G_STANDARD 9.81      /* gravity used by the seeds and REFERENCES [m/s^2] */
@@ -59,5 +60,20 @@ const char *wl_units_si_symbol(enum wl_dim dim);
  * for a unit not accepted for dim. */
 enum wl_status wl_units_from_si(double si, enum wl_dim dim, const char *unit, double *out,
                                 struct wl_error *err);
+
+/* The units a design's wall loads are quoted in besides SI. A scenario that
+ * writes its lengths in feet or inches gets US customary figures, per foot
+ * of wall: force lbf/ft, impulse lbf s/ft, moment lbf ft/ft, run-up ft
+ * (1 lbf = 0.45359237 kg x 9.80665 m/s^2 = 4.4482216152605 N, exact);
+ * multiply the SI value by the factor. */
+struct wl_load_units {
+  const char *force, *impulse, *moment, *length;       /* unit symbols */
+  double force_f, impulse_f, moment_f, length_f;       /* from N/m, N s/m, N m/m, m */
+};
+
+/* 1 and *u filled when length_unit (as the user wrote a length: "ft",
+ * "in", "m", ...) is a US customary one; 0 otherwise (the SI figures are
+ * the user's). */
+int wl_units_load_units(const char *length_unit, struct wl_load_units *u);
 
 #endif

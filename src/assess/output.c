@@ -11,6 +11,7 @@
 #include "assess_private.h"
 #include "wallload/config.h"
 #include "wallload/store.h"
+#include "wallload/units.h"
 
 /* A growing text buffer for JSON and CSV. */
 struct text {
@@ -358,6 +359,19 @@ static enum wl_status write_summary(const struct wl_scenario *s, const struct wl
     }
     jval(&t, "peak_moment", l->moment_peak.value, "N m/m", filt, 0);
     jval(&t, "max_runup", l->runup, "m", "water level at the wall face above still water", 0);
+    struct wl_load_units u;
+    if (wl_units_load_units(s->water.depth.q.unit, &u)) {
+      /* the scenario's lengths are in feet or inches: the same figures in
+       * US customary units, per foot of wall */
+      put(&t, "      \"user_units\": {\n");
+      jval(&t, "peak_force", l->force_peak.value * u.force_f, u.force, NULL, 0);
+      jval(&t, "peak_force_boundary", l->force_bound_peak.value * u.force_f, u.force, NULL, 0);
+      jval(&t, "impulse", l->impulse_total * u.impulse_f, u.impulse, NULL, 0);
+      jval(&t, "impulse_positive_phase", l->impulse_peak * u.impulse_f, u.impulse, NULL, 0);
+      jval(&t, "peak_moment", l->moment_peak.value * u.moment_f, u.moment, NULL, 0);
+      jval(&t, "max_runup", l->runup * u.length_f, u.length, NULL, 1);
+      put(&t, "      },\n");
+    }
     jval(&t, "rise_time", l->force_peak.rise_time, "s", "10 % of the dynamic peak to the peak", 0);
     jval(&t, "duration", l->force_peak.duration, "s", "dynamic force above 10 % of its peak", 0);
     jval(&t, "filter_cutoff", l->cutoff, "Hz", "c0/(8 d)", 0);

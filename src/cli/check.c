@@ -11,6 +11,7 @@
 #include "cli.h"
 #include "wallload/plan.h"
 #include "wallload/scenario.h"
+#include "wallload/units.h"
 
 /* Load and plan a scenario; on failure everything is freed. */
 static enum wl_status load_and_plan(const char *path, struct wl_scenario *s, struct wl_plan *plan,
@@ -128,7 +129,7 @@ static void show_progress(void *user, const char *name, const struct wl_sph_prog
   }
 }
 
-static void print_case(const struct wl_case_result *c) {
+static void print_case(const struct wl_case_result *c, const struct wl_scenario *s) {
   const struct wl_case_loads *l = &c->loads;
   printf("\n%s case: %s", c->name,
          c->status == WL_OK ? "complete" : c->status == WL_EUNSTABLE ? "UNSTABLE" : "stopped");
@@ -149,6 +150,13 @@ static void print_case(const struct wl_case_result *c) {
   printf("  %-34s %12.5g m\n", "max run-up at the wall", l->runup);
   printf("  %-34s %12.5g s\n", "rise time", l->force_peak.rise_time);
   printf("  %-34s %12.5g s\n", "load duration", l->force_peak.duration);
+  struct wl_load_units u;
+  if (wl_units_load_units(s->water.depth.q.unit, &u)) /* the scenario is in feet */
+    printf("  %-34s %.5g %s, impulse %.5g %s (positive phase %.5g), moment %.5g %s, run-up "
+           "%.4g %s\n",
+           "in the scenario's units", l->force_peak.value * u.force_f, u.force,
+           l->impulse_total * u.impulse_f, u.impulse, l->impulse_peak * u.impulse_f,
+           l->moment_peak.value * u.moment_f, u.moment, l->runup * u.length_f, u.length);
   if (c->caution[0]) printf("  caution: %s\n", c->caution);
 }
 
@@ -246,7 +254,7 @@ enum wl_status wl_cli_assess(int argc, char **argv, struct wl_error *err) {
   st = wl_assess_run(&s, &plan, &opts, &res, err);
   sigaction(SIGINT, &old, NULL);
   for (int i = 0; i < res.n_cases; i++) {
-    print_case(&res.cases[i]);
+    print_case(&res.cases[i], &s);
     print_convergence(&res.cases[i], &res.conv[i]);
   }
   if (res.n_cases) printf("\nresults in %s/ (results.h5, summary.json, CSV, particle snapshots)\n", res.out_dir);

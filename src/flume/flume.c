@@ -206,6 +206,20 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
   } else {
     f->t_end = s->run.end_time.is_auto ? 10.0 : s->run.end_time.q.si;
   }
+  /* The fluid's lattice is laid from the wall: its last column stands dp/2
+   * from the face, as its lowest row stands dp/2 above the bed, so the
+   * fluid meets the wall's boundary particles one spacing apart wherever
+   * the scenario puts the wall. Laid from the left end instead, that gap
+   * was anything from dp/2 to 3dp/2 and the wall loads moved with it: a
+   * reflected H/h = 0.3 solitary wave (dp = 0.01 m) gave a boundary-force
+   * impulse of 145 to 164 N s/m and a probe impulse of 119 to 155 N s/m for
+   * wall positions a few millimetres apart (now 168-169 and 171-172). The
+   * lattice starts at x_fluid, less than dp right of the planned left end:
+   * the left wall moves there (the plan's end is a cut through the flume,
+   * or the flume's own end, either way good to dp), and a paddle's rest
+   * position is x_fluid (its motion is a displacement from there). */
+  const double x_fluid = xw - dp * floor((xw - x_left) / dp + 1e-9);
+  if (!f->has_paddle) x_left = x_fluid;
 
   struct wl_explosion_part parts[WL_EXPLOSION_PARTS_MAX];
   int n_parts = 0;
@@ -315,10 +329,11 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
     /* 3D: the piston spans the fluid rows only, inside the side walls */
     sc.y0 = 0.5 * dp;
     sc.y1 = f->width - 0.5 * dp;
-    st = wl_scene_piston(&sc, 0.0, 0.0, z_top, layers, WL_FLUME_BODY_PADDLE, err);
+    st = wl_scene_piston(&sc, x_fluid, 0.0, z_top, layers, WL_FLUME_BODY_PADDLE, err);
   }
 
-  /* Fluid between the left end and the wall, under the initial surface. */
+  /* Fluid between the left end and the wall, under the initial surface,
+   * on the lattice laid from the wall (x_fluid above). */
   double bx[WL_SCENARIO_MAX_BED + 2], bz[WL_SCENARIO_MAX_BED + 2];
   int nb = 0;
   bx[nb] = x_left, bz[nb++] = wl_scenario_bed_z(s, x_left);
@@ -329,14 +344,14 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
   }
   bx[nb] = xw, bz[nb++] = f->z_toe;
   if (dim == 2) {
-    if (!st) st = wl_scene_fluid_surface(&sc, x_left, xw, bx, bz, nb, surface_z, &surf, err);
+    if (!st) st = wl_scene_fluid_surface(&sc, x_fluid, xw, bx, bz, nb, surface_z, &surf, err);
   } else {
     /* one lattice row across at a time, so that eta may depend on y */
     for (int j = 0; !st && j < n_rows; j++) {
       sc.y0 = j * dp;
       sc.y1 = (j + 1) * dp;
       surf.y = (j + 0.5) * dp;
-      st = wl_scene_fluid_surface(&sc, x_left, xw, bx, bz, nb, surface_z, &surf, err);
+      st = wl_scene_fluid_surface(&sc, x_fluid, xw, bx, bz, nb, surface_z, &surf, err);
     }
   }
   if (!st && surf.wave) {

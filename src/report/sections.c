@@ -16,6 +16,7 @@
 #include "sections.h"
 #include "wallload/config.h"
 #include "wallload/report.h"
+#include "wallload/units.h"
 
 #define DEFAULT_DIGITS 3 /* peaks when the template has no peaks section */
 #define TIME_DIGITS 3    /* times of peaks in running text */
@@ -414,6 +415,40 @@ enum wl_status wl_report_render_peaks(struct wl_report_ctx *c, const struct wl_r
       cells, rows};
   if (!st)
     st = wl_report_add_table(d, &tab, err);
+
+  /* The same peaks in US customary units, per foot of wall, when the
+   * scenario wrote its lengths in feet or inches (units.h). */
+  struct wl_load_units u;
+  if (!st && r->have_scenario && wl_units_load_units(r->scenario.water.depth.q.unit, &u)) {
+    const struct wl_report_column ucols[] = {
+        {"case", NULL, WL_REPORT_ALIGN_LEFT, 0},
+        {"peak force", u.force, WL_REPORT_ALIGN_AUTO, dg},
+        {"impulse", u.impulse, WL_REPORT_ALIGN_AUTO, dg},
+        {"positive phase", u.impulse, WL_REPORT_ALIGN_AUTO, dg},
+        {"peak moment", u.moment, WL_REPORT_ALIGN_AUTO, dg},
+        {"run-up", u.length, WL_REPORT_ALIGN_AUTO, dg},
+    };
+    enum { NU = 6 };
+    struct wl_report_cell ucells[WL_REPORT_N_CASES * NU];
+    int urows = 0;
+    for (int i = 0; i < WL_REPORT_N_CASES; i++) {
+      const struct wl_report_case *k = &cs[i];
+      if (!k->present)
+        continue;
+      struct wl_report_cell *row = &ucells[urows++ * NU];
+      row[0] = (struct wl_report_cell){k->name, 0};
+      row[1] = (struct wl_report_cell){NULL, k->force_peak.value * u.force_f};
+      row[2] = (struct wl_report_cell){NULL, k->impulse_total * u.impulse_f};
+      row[3] = (struct wl_report_cell){NULL, k->impulse_peak * u.impulse_f};
+      row[4] = (struct wl_report_cell){NULL, k->moment_peak.value * u.moment_f};
+      row[5] = (struct wl_report_cell){NULL, k->runup * u.length_f};
+    }
+    struct wl_report_table ut = {
+        "The same peaks in the scenario's units (US customary, per foot of wall; 1 lbf = "
+        "4.4482216 N, 1 ft = 0.3048 m)",
+        ucols, NU, ucells, urows};
+    st = wl_report_add_table(d, &ut, err);
+  }
 
   /* Probe force against boundary-particle force: the error indicator. */
   static const struct wl_report_column ecols0[] = {

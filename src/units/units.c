@@ -64,6 +64,20 @@ const char *wl_units_valid(enum wl_dim dim) {
   return "?";
 }
 
+int wl_units_load_units(const char *length_unit, struct wl_load_units *u) {
+  if (!length_unit || (strcmp(length_unit, "ft") && strcmp(length_unit, "in"))) return 0;
+  const double lbf = WL_LB_KG * WL_G_LBF; /* N */
+  u->force = "lbf/ft";
+  u->impulse = "lbf s/ft";
+  u->moment = "lbf ft/ft";
+  u->length = "ft";
+  u->force_f = WL_FT_M / lbf;   /* N/m -> lbf/ft */
+  u->impulse_f = WL_FT_M / lbf; /* N s/m -> lbf s/ft */
+  u->moment_f = 1.0 / lbf;      /* N m/m = N -> lbf ft/ft = lbf */
+  u->length_f = 1.0 / WL_FT_M;  /* m -> ft */
+  return 1;
+}
+
 const char *wl_units_si_symbol(enum wl_dim dim) {
   for (int i = 0; i < N_UNITS; i++)
     if (unit_table[i].dim == dim && dim != WL_DIM_RATIO) return unit_table[i].symbol;

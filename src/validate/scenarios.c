@@ -170,9 +170,11 @@ enum wl_status wl_val_run_solitary_wall(const struct wl_val_case *c, const struc
     const double I2 = 2 * I_table * rho * h * h * sqrt(G * h);
     const size_t n = cr.rec.n;
     wl_val_rel(&lv->m[0], "max run-up (Su & Mirie)", "m", cr.loads.runup, R_ref, WALL_TOL_R);
-    wl_val_rel(&lv->m[1], "impulse, boundary force (2I)", "N s/m",
-               n ? cr.loads.impulse_bound[n - 1] : NAN, I2, WALL_TOL_I);
-    wl_val_rel(&lv->m[2], "impulse, probes (2I)", "N s/m", cr.loads.impulse_total, I2, NAN);
+    /* the probes' impulse is the one assess reports (tests/test_solitary_wall.c
+     * says why the boundary particles' sits a little lower) */
+    wl_val_rel(&lv->m[1], "impulse, probes (2I)", "N s/m", cr.loads.impulse_total, I2, WALL_TOL_I);
+    wl_val_rel(&lv->m[2], "impulse, boundary force (2I)", "N s/m",
+               n ? cr.loads.impulse_bound[n - 1] : NAN, I2, NAN);
     lv->n_metrics = 3;
   }
   wl_assess_case_clear(&cr);
