@@ -42,9 +42,12 @@ static void print_metric(const struct wl_validate_metric *m) {
   const char *mark = isnan(m->tol) ? "info" : (m->pass ? "pass" : "FAIL");
   switch (m->kind) {
   case WL_VALIDATE_REL:
-    printf("      %-34s %12.5g vs %-12.5g %-6s error %+8.2f %%  tol %s%.1f %%  %s\n", m->name,
-           m->value, m->reference, m->unit, 100 * m->error, isnan(m->tol) ? "(" : "",
-           isnan(m->tol) ? 0.0 : 100 * m->tol, mark);
+    if (isnan(m->tol)) /* reported, not judged */
+      printf("      %-34s %12.5g vs %-12.5g %-6s error %+8.2f %%  tol    n/a  %s\n", m->name,
+             m->value, m->reference, m->unit, 100 * m->error, mark);
+    else
+      printf("      %-34s %12.5g vs %-12.5g %-6s error %+8.2f %%  tol %.1f %%  %s\n", m->name,
+             m->value, m->reference, m->unit, 100 * m->error, 100 * m->tol, mark);
     break;
   case WL_VALIDATE_RMSE:
   case WL_VALIDATE_RATIO:
