@@ -82,6 +82,13 @@ void wl_loads_peak(const double *t, const double *x, size_t n, double base, stru
 void wl_loads_positive_phase(const double *x, size_t n, double base, size_t ip, size_t *i0,
                              size_t *i1);
 
+/* The positive-phase impulse of the peak at index ip of the filtered force
+ * xf (base: the force at rest), from the cumulative impulse I of the raw
+ * force (wl_loads_cumulative of F - base): I[i1] - I[i0] over the phase of
+ * wl_loads_positive_phase, whose times go to *t0 and *t1. */
+double wl_loads_positive_phase_impulse(const double *t, const double *xf, const double *I,
+                                       size_t n, double base, size_t ip, double *t0, double *t1);
+
 /* ---- convergence over a resolution ladder --------------------------------- */
 
 /* Meaningful observed orders: outside [MIN, MAX] the three levels are not in

@@ -100,11 +100,9 @@ enum wl_status case_loads_compute(struct wl_case_result *c, struct wl_error *err
   l->force_peak.index += k0;
   l->moment_peak.index += k0;
   l->force_bound_peak.index += k0;
-  size_t p0, p1;
-  wl_loads_positive_phase(l->force_filtered, n, c->static_force, l->force_peak.index, &p0, &p1);
-  l->impulse_peak = l->impulse[p1] - l->impulse[p0];
-  l->impulse_peak_from = r->t[p0];
-  l->impulse_peak_to = r->t[p1];
+  l->impulse_peak = wl_loads_positive_phase_impulse(r->t, l->force_filtered, l->impulse, n,
+                                                    c->static_force, l->force_peak.index,
+                                                    &l->impulse_peak_from, &l->impulse_peak_to);
   /* run-up: the last gauge is the one at the wall face */
   int gw = r->n_gauges - 1;
   l->runup = -INFINITY;

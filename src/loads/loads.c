@@ -105,6 +105,15 @@ void wl_loads_positive_phase(const double *x, size_t n, double base, size_t ip, 
   *i1 = b;
 }
 
+double wl_loads_positive_phase_impulse(const double *t, const double *xf, const double *I,
+                                       size_t n, double base, size_t ip, double *t0, double *t1) {
+  size_t a, b;
+  wl_loads_positive_phase(xf, n, base, ip, &a, &b);
+  *t0 = t[a];
+  *t1 = t[b];
+  return I[b] - I[a];
+}
+
 void wl_loads_peak(const double *t, const double *x, size_t n, double base, struct wl_peak *pk) {
   size_t ip = 0;
   for (size_t k = 1; k < n; k++)

@@ -314,13 +314,10 @@ static void case_derive(struct wl_report_case *c) {
     wl_loads_peak(c->t + k0, m + k0, n - k0, ms, &c->moment_peak), c->moment_peak.index += k0;
   if (c->impulse)
     c->impulse_total = c->impulse[n - 1];
-  if (f && c->impulse) {
-    size_t p0, p1;
-    wl_loads_positive_phase(f, n, fs, c->force_peak.index, &p0, &p1);
-    c->impulse_peak = c->impulse[p1] - c->impulse[p0];
-    c->impulse_peak_from = c->t[p0];
-    c->impulse_peak_to = c->t[p1];
-  }
+  if (f && c->impulse)
+    c->impulse_peak = wl_loads_positive_phase_impulse(c->t, f, c->impulse, n, fs,
+                                                      c->force_peak.index, &c->impulse_peak_from,
+                                                      &c->impulse_peak_to);
   if (c->impulse_b)
     c->impulse_b_total = c->impulse_b[n - 1];
   if (c->wall_gauge >= 0 && c->gauges[c->wall_gauge].eta) {
