@@ -92,6 +92,17 @@ static void test_shapes(void) {
     CHECK_ABS(eta_of(SHAPES[i], eta0, R, rc), 0.0, 1e-12, "inner radius is a root of eta");
     CHECK_REL(rc, rc_want[i] * R, TOL_EXACT, "inner root: 1, 1/sqrt2, 1/sqrt3, 1, 1 (by hand)");
   }
+  /* rim height: the lip crests by hand (2u^2 - 1 and 3u^2 - 1 at u = 1;
+   * the quartics' crests above), and the largest eta on a fine scan */
+  const double rim_want[] = {0.0, 1.0, 2.0, 1.0 / 3.0, 0.8};
+  for (int i = 0; i < WL_CRATER_SHAPE_COUNT; i++) {
+    double rim = NAN, scan = -INFINITY, ext = NAN;
+    wl_explosion_rim_height(SHAPES[i], eta0, &rim, &err);
+    wl_explosion_extent(SHAPES[i], R, &ext, &err);
+    for (int k = 0; k <= 30000; k++) scan = fmax(scan, eta_of(SHAPES[i], eta0, R, ext * k / 30000.0));
+    CHECK_ABS(rim, rim_want[i] * eta0, 1e-12, "rim height 0, 1, 2, 1/3, 4/5 eta0 (by hand)");
+    CHECK_ABS(rim, scan, 1e-6 * eta0, "rim height = the largest eta on a scan of the extent");
+  }
   CHECK_TRUE(err.status == WL_OK, "no error on valid shapes");
 }
 

@@ -106,6 +106,13 @@ enum { WL_CRATER_SHAPE_COUNT = 5 };
  * invalid value. Never NULL; static storage. */
 const char *wl_explosion_shape_name(enum wl_crater_shape shape);
 
+/* Highest initial surface above still water [m] of a crater of depth eta0
+ * (>= 0): its lip crest, eta0 times 0, 1, 2, 1/3 and 4/5 for the shapes
+ * above in order (the rim at u = 1 of the quadratic forms, the stationary
+ * point of the quartic ones). What decides the flume's c0. */
+enum wl_status wl_explosion_rim_height(enum wl_crater_shape shape, double eta0, double *height,
+                                       struct wl_error *err);
+
 /* Free-surface elevation eta [m] at distance r [m] (r >= 0; 2D: |x|) from the
  * crater axis, for depth eta0 [m] (>= 0) and radius R [m] (> 0).
  * Returns WL_OK, or WL_EINPUT for an invalid shape, eta0 < 0, R <= 0, r < 0

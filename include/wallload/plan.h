@@ -62,6 +62,9 @@ struct wl_plan_explosion {
   int conserves_mass;               /* the shape's net volume is zero in these dims */
   double eta0, r0;                  /* simulated crater depth and radius [m] */
   double extent;                    /* outer radius of the disturbance [m] */
+  double rise;                      /* highest initial water above still water, which sets c0
+                                       with the depth: the crater's lip crest
+                                       (wl_explosion_rim_height), 2 eta0 for the thrown mass [m] */
   double absorber;                  /* length of the absorbing zone at the flume's seaward
                                        end, x_left .. x_left + absorber [m] (0: none) */
   double net_volume;                /* [m^2 per metre (2D) or m^3] */

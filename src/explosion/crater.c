@@ -108,6 +108,22 @@ enum wl_status wl_explosion_eta(enum wl_crater_shape shape, double eta0, double 
   return WL_OK;
 }
 
+enum wl_status wl_explosion_rim_height(enum wl_crater_shape shape, double eta0, double *height,
+                                       struct wl_error *err) {
+  struct profile p = {0};
+  enum wl_status st = check_crater(shape, 0, 0, eta0, 1.0, &p, err);
+  if (st != WL_OK) return st;
+  /* f = c0 + c1 u^2 + c2 u^4 on [0, ext]: largest at an end or where
+   * df/d(u^2) = c1 + 2 c2 u^2 = 0 */
+  double f = fmax(profile_f(&p, 0.0), profile_f(&p, p.ext));
+  if (p.c2 < 0) {
+    const double u2 = -p.c1 / (2.0 * p.c2);
+    if (u2 > 0 && u2 < p.ext * p.ext) f = fmax(f, profile_f(&p, sqrt(u2)));
+  }
+  *height = eta0 * fmax(f, 0.0);
+  return WL_OK;
+}
+
 enum wl_status wl_explosion_extent(enum wl_crater_shape shape, double R, double *extent,
                                    struct wl_error *err) {
   struct profile p = {0};

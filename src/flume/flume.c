@@ -177,7 +177,7 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
   f->static_moment = plan->rho * plan->g * pow(f->depth_wall, 3) / 6.0;
 
   /* What rises above still water decides c0 and the top of the domain. */
-  double rise = 0.0, thrown_top = 0.0;
+  double rise = 0.0, top_rise = 0.0, thrown_top = 0.0;
   struct surface surf = {load, depth, NULL, 0, 0, 0, 0, 0, plan->rho, dim, 0, 0, 0};
   const struct wl_plan_solitary *ps = &plan->solitary;
   const struct wl_plan_explosion *px = &plan->explosion;
@@ -200,7 +200,8 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
     surf.radial = dim == 3 && surf.shape != WL_CRATER_SHAPE_QUADRATIC_LIP_PLANE &&
                   surf.shape != WL_CRATER_SHAPE_QUARTIC_LIP_PLANE;
     surf.yc = f->symmetry ? 0.0 : 0.5 * f->width; /* on the centreline */
-    rise = 2.0 * px->eta0; /* a lip of up to 2 eta0 (plane lip) */
+    rise = px->rise; /* the lip's crest (plan.h) */
+    top_rise = 2.0 * px->eta0; /* the domain's top as before: the collapse throws water up */
     x_left = px->x_left;
     f->t_end = px->end_time;
   } else {
@@ -277,7 +278,7 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
   int layers = (int)ceil(2.0 * (double)k.h / dp);
   double thick = layers * dp;
 
-  double z_top = fmax(f->z_crest, depth) + fmax(3.0 * rise, 0.5 * depth) + thrown_top;
+  double z_top = fmax(f->z_crest, depth) + fmax(3.0 * fmax(rise, top_rise), 0.5 * depth) + thrown_top;
   f->x_left = x_left;
   f->cfg.lo[0] = x_left - thick - 2 * dp;
   f->cfg.hi[0] = xw + plan->land_length + thick + 2 * dp;

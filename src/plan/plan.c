@@ -317,6 +317,12 @@ static enum wl_status plan_explosion(const struct wl_scenario *s, struct wl_plan
   px->fraction_energy = ep.wave_share * px->chain.chemical_energy;
   px->model_thrown = s->explosion.model.choice == WL_MODEL_THROWN_MASS;
   px->thrown_parts = (int)s->explosion.thrown_parts.q.si;
+  /* the thrown mass keeps the bound it always had: its launched parts are
+   * not a surface profile */
+  if (px->model_thrown)
+    px->rise = 2.0 * px->eta0;
+  else if ((st = wl_explosion_rim_height(px->shape, px->eta0, &px->rise, err)))
+    return st;
 
   double xw = s->wall.x.q.si;
   if (px->x_center - px->extent < 0 || px->x_center + px->extent > xw)
@@ -495,7 +501,7 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
   if (st) return st;
   double h_max = p->h;
   if (p->solitary.present) h_max += p->solitary.wave.H;
-  if (p->explosion.present) h_max = fmax(h_max, p->h + p->explosion.eta0);
+  if (p->explosion.present) h_max = fmax(h_max, p->h + p->explosion.rise);
   p->c0 = s->numerics.coefsound.q.si * sqrt(p->g * h_max);
   p->dt = s->numerics.cfl.q.si * p->h_sml / p->c0;
   long n_max = 0;
