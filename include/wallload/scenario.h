@@ -144,4 +144,9 @@ void wl_scenario_write_resolved(const struct wl_scenario *s, FILE *out);
 /* Bed elevation above the flume floor at x [m], from the bathymetry segments. */
 double wl_scenario_bed_z(const struct wl_scenario *s, double x);
 
+/* The units the scenario's wall loads are also quoted in (units.h): US
+ * customary when its water depth, the one length every scenario writes, is
+ * in ft or in. 1 and *u filled then; 0 when SI is the user's system. */
+int wl_scenario_load_units(const struct wl_scenario *s, struct wl_load_units *u);
+
 #endif

@@ -360,9 +360,7 @@ static enum wl_status write_summary(const struct wl_scenario *s, const struct wl
     jval(&t, "peak_moment", l->moment_peak.value, "N m/m", filt, 0);
     jval(&t, "max_runup", l->runup, "m", "water level at the wall face above still water", 0);
     struct wl_load_units u;
-    if (wl_units_load_units(s->water.depth.q.unit, &u)) {
-      /* the scenario's lengths are in feet or inches: the same figures in
-       * US customary units, per foot of wall */
+    if (wl_scenario_load_units(s, &u)) { /* the same figures per foot of wall */
       put(&t, "      \"user_units\": {\n");
       jval(&t, "peak_force", l->force_peak.value * u.force_f, u.force, NULL, 0);
       jval(&t, "peak_force_boundary", l->force_bound_peak.value * u.force_f, u.force, NULL, 0);

@@ -151,7 +151,7 @@ static void print_case(const struct wl_case_result *c, const struct wl_scenario 
   printf("  %-34s %12.5g s\n", "rise time", l->force_peak.rise_time);
   printf("  %-34s %12.5g s\n", "load duration", l->force_peak.duration);
   struct wl_load_units u;
-  if (wl_units_load_units(s->water.depth.q.unit, &u)) /* the scenario is in feet */
+  if (wl_scenario_load_units(s, &u))
     printf("  %-34s %.5g %s, impulse %.5g %s (positive phase %.5g), moment %.5g %s, run-up "
            "%.4g %s\n",
            "in the scenario's units", l->force_peak.value * u.force_f, u.force,

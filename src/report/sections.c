@@ -178,8 +178,7 @@ static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
           cs[gf].name, f[gf], tf[gf], f[1 - gf]);
       if (gi >= 0)
         put(&b, ", the %s case the larger positive-phase impulse, %s kN s/m against %s kN s/m",
-            cs[gi].name,
-            im[gi], im[1 - gi]);
+            cs[gi].name, im[gi], im[1 - gi]);
       put(&b, " (per metre of wall). ");
     }
   }
@@ -419,7 +418,7 @@ enum wl_status wl_report_render_peaks(struct wl_report_ctx *c, const struct wl_r
   /* The same peaks in US customary units, per foot of wall, when the
    * scenario wrote its lengths in feet or inches (units.h). */
   struct wl_load_units u;
-  if (!st && r->have_scenario && wl_units_load_units(r->scenario.water.depth.q.unit, &u)) {
+  if (!st && r->have_scenario && wl_scenario_load_units(&r->scenario, &u)) {
     const struct wl_report_column ucols[] = {
         {"case", NULL, WL_REPORT_ALIGN_LEFT, 0},
         {"peak force", u.force, WL_REPORT_ALIGN_AUTO, dg},

@@ -354,6 +354,10 @@ static enum wl_status at_value(struct ctx *c, const struct wl_scenario_value *v,
   return wl_error_set(c->err, WL_EINPUT, "%s: %s (default value): %s", c->path, key, msg);
 }
 
+int wl_scenario_load_units(const struct wl_scenario *s, struct wl_load_units *u) {
+  return wl_units_load_units(s->water.depth.q.unit, u);
+}
+
 double wl_scenario_bed_z(const struct wl_scenario *s, double x) {
   double z = 0.0;
   for (int i = 0; i < s->n_bed; i++) {
