@@ -4,6 +4,7 @@
  * small 2D dam break, a small 3D dam break with a pillar, and the same 3D
  * dam break between free-slip side walls (the solver's mirror planes), the
  * 2D and the free-slip 3D dam breaks with particle shifting, and
+ * the 2D and the free-slip 3D dam breaks with the Verlet integrator, and
  * the GPU's default force loop (fast in 2D, tile in 3D) against its
  * reference loop (the shared wl_sph_gather). Skipped (77) without a GPU; in a build without
  * CUDA it checks that the backend says so.
@@ -63,6 +64,7 @@ struct scene_case {
   const char *name;
   int mirror; /* 3D: free-slip side walls as mirror planes (both y faces) */
   int shift;  /* particle shifting on (sph/shift.h, A = 2) */
+  int verlet; /* the Verlet integrator (sph/integrate.h) instead of the symplectic one */
 };
 
 static enum wl_status build(const struct scene_case *sc_, struct wl_sph_config *cfg,
@@ -74,6 +76,7 @@ static enum wl_status build(const struct scene_case *sc_, struct wl_sph_config *
   cfg->n_threads = 1;
   const double W = 0.2; /* 3D: tank width */
   if (sc_->shift) cfg->prm.shift_coef = 2.0;
+  if (sc_->verlet) cfg->prm.integrator = WL_SPH_VERLET;
   if (sc_->mirror) {
     cfg->prm.mirror_lo = cfg->prm.mirror_hi = 1;
     cfg->prm.mirror_y_lo = 0.0;
@@ -314,17 +317,24 @@ int main(void) {
     return 77;
   }
   printf("# GPU: %s\n", dev.name);
-  const struct scene_case c2 = {2, 0.01, 300, "2D dam break", 0, 0};
-  const struct scene_case c3 = {3, 0.01, 100, "3D dam break with pillar", 0, 0};
+  const struct scene_case c2 = {2, 0.01, 300, "2D dam break", 0, 0, 0};
+  const struct scene_case c3 = {3, 0.01, 100, "3D dam break with pillar", 0, 0, 0};
   const struct scene_case c3m = {3, 0.01, 100, "3D dam break with pillar, free-slip side walls "
-                                 "(mirror planes)", 1, 0};
-  const struct scene_case c2s = {2, 0.01, 300, "2D dam break with particle shifting", 0, 1};
+                                 "(mirror planes)", 1, 0, 0};
+  const struct scene_case c2s = {2, 0.01, 300, "2D dam break with particle shifting", 0, 1, 0};
   const struct scene_case c3s = {3, 0.01, 100, "3D dam break with pillar between free-slip walls, "
-                                 "particle shifting", 1, 1};
+                                 "particle shifting", 1, 1, 0};
+  /* Verlet: 600 steps (15 of them Euler steps), as many force evaluations
+   * as the symplectic 2D case's 300 */
+  const struct scene_case c2v = {2, 0.01, 600, "2D dam break, Verlet integrator", 0, 0, 1};
+  const struct scene_case c3v = {3, 0.01, 200, "3D dam break with pillar between free-slip walls, "
+                                 "Verlet integrator", 1, 0, 1};
   run_case(&c2);
   run_case(&c3);
   run_case(&c3m);
   run_case(&c2s);
   run_case(&c3s);
+  run_case(&c2v);
+  run_case(&c3v);
   return TEST_RESULT();
 }

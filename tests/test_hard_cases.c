@@ -8,7 +8,12 @@
  * wall crossings, density out of range, dt collapse) must not fire, and
  * every recorded number must be finite; a fault would stop the run with
  * WL_EUNSTABLE and its diagnosis. The still water also has bounds from its
- * closed form (at rest; REFERENCES 1.1): kinetic energy and its settling. */
+ * closed form (at rest; REFERENCES 1.1): kinetic energy and its settling.
+ *
+ * A second argument `verlet` runs the row with the Verlet integrator
+ * (numerics.integrator: verlet, sph/integrate.h), which scenarios/
+ * seawall.yaml uses: one force evaluation a step instead of two, so the
+ * same hard cases must hold with it (ctest hard_cases_verlet_<key>). */
 #include <gsl/gsl_errno.h>
 #include <stdlib.h>
 #include <string.h>
@@ -35,7 +40,16 @@ static int all_finite(const struct wl_record *r) {
  * higher. The margin is small because nothing damps the slosh that the
  * start-up excites: with the viscosity of water the flume is practically
  * inviscid, as a real one is. Only the full run (60 s) is checked; the
- * sanitizer's quick run (5 s) has not settled. */
+ * sanitizer's quick run (5 s) has not settled.
+ * With the Verlet integrator (2026-11-24) the slosh is damped less: rms
+ * speed 0.0180 m/s after 60 s with DualSPHysics' Euler step every 40
+ * steps (verlet_steps), 5 % above the bound, against 0.01699 m/s
+ * symplectic. A scan of verlet_steps gave 0.01693 (10), 0.01695 (20),
+ * 0.01955 (30), 0.0180 (40): not monotone, so no value was picked to pass.
+ * hard_cases_verlet_still is an accuracy test (tests/CMakeLists.txt,
+ * README "Known accuracy gaps"); the Verlet rows that run in seconds of
+ * simulated time (breaking, deep, thrown), as the seawall's cases do, are
+ * in the default suite. */
 #define STILL_SPEED 0.01
 #define STILL_SETTLE 0.25
 
@@ -47,14 +61,17 @@ static void still_bounds(const struct wl_case_result *c, double h, double dp) {
   double ke = 0;
   for (size_t k = n - n / 10; k < n; k++) ke = fmax(ke, r->kinetic[k]);
   const double v_rms = sqrt(2 * ke / mass), ref = STILL_SPEED * sqrt(g * h);
-  printf("  still water after %.0f s: rms speed %.3g m/s (bound %.3g), centre of mass moved %.3g dp\n",
+  printf("  still water after %.0f s: rms speed %.4g m/s (bound %.4g), centre of mass moved %.3g dp\n",
          r->t[n - 1], v_rms, ref, (r->potential[n - 1] - r->potential[0]) / (mass * g * dp));
   CHECK_TRUE(v_rms < ref, "60 s of still water: rms speed under 1 % of sqrt(g h)");
   CHECK_TRUE(fabs(r->potential[n - 1] - r->potential[0]) < STILL_SETTLE * mass * g * dp,
              "60 s of still water: the centre of mass settles less than dp/4");
 }
 
-static void run(const char *name, const char *text, enum wl_load_case load, double t_end) {
+static void run(const char *name, const char *text_in, int verlet, enum wl_load_case load,
+                double t_end) {
+  char text[1024];
+  snprintf(text, sizeof text, "%s%s", text_in, verlet ? "numerics: {integrator: verlet}\n" : "");
   struct wl_scenario s;
   struct wl_plan plan;
   struct wl_error err;
@@ -140,10 +157,17 @@ int main(int argc, char **argv) {
   setvbuf(stdout, NULL, _IOLBF, 0); /* progress lines survive a timeout */
   const int quick = getenv("WL_TEST_QUICK") != NULL;
   const char *which = argc > 1 ? argv[1] : cases[0].key;
+  const int verlet = argc > 2 && !strcmp(argv[2], "verlet");
+  if (argc > 2 && !verlet) {
+    printf("FAIL unknown integrator '%s' (verlet, or none for symplectic)\n", argv[2]);
+    return 1;
+  }
   int ran = 0;
   for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
     if (strcmp(which, "all") && strcmp(which, cases[c].key)) continue;
-    run(cases[c].name, cases[c].text, cases[c].load, quick ? cases[c].t_quick : cases[c].t_end);
+    if (verlet) printf("integrator: Verlet\n");
+    run(cases[c].name, cases[c].text, verlet, cases[c].load,
+        quick ? cases[c].t_quick : cases[c].t_end);
     ran++;
   }
   if (!ran) {

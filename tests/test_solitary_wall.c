@@ -28,7 +28,11 @@
  * the bed's boundary particles took (dynamic boundary particles feel the
  * horizontal pressure gradient as fluid would, and the bed particles at the
  * toe share the corner's load): it is printed (1.8 and 3.5 N s/m, 1-3 % of
- * 2 I). */
+ * 2 I).
+ *
+ * With the argument `verlet` (ctest solitary_wall_verlet) the same runs
+ * and checks with the Verlet integrator, which scenarios/seawall.yaml
+ * uses. */
 #include <gsl/gsl_errno.h>
 #include <stdlib.h>
 #include <string.h>
@@ -40,7 +44,7 @@
 #define IMPULSE_TOL 0.05
 #define INITIAL_MOMENTUM_TOL 0.03
 
-static void run(double eps, double I_table, double dp, int quick) {
+static void run(double eps, double I_table, double dp, int quick, int verlet) {
   const double h = 0.2, H = eps * h, rho = 1000, g = 9.81;
   double K = sqrt(3 * H / (4 * h * h * h)), length = 6 / K;
   double c = sqrt(g * h) * sqrt(1 + eps - eps * eps / 20 - 3 * eps * eps * eps / 70);
@@ -52,8 +56,8 @@ static void run(double eps, double I_table, double dp, int quick) {
            "scenario: wall\nwater: {depth: %g m}\ndomain: {length: %g m}\n"
            "wall: {x: %g m, height: %g m, probes: 40}\n"
            "loads: {solitary: {height: %g m, generation: initial, at: %g m}}\n"
-           "resolution: {dp: %g m}\nrun: {output_interval: 0.005 s}\n",
-           h, xw + 0.5, xw, 3 * h, H, x0, dp);
+           "resolution: {dp: %g m}\nrun: {output_interval: 0.005 s}\n%s",
+           h, xw + 0.5, xw, 3 * h, H, x0, dp, verlet ? "numerics: {integrator: verlet}\n" : "");
   struct wl_scenario s;
   struct wl_plan plan;
   struct wl_error err;
@@ -75,9 +79,9 @@ static void run(double eps, double I_table, double dp, int quick) {
   double I2 = 2 * I_table * rho * h * h * sqrt(g * h);
   size_t n = cr.rec.n;
   double imp_b = n ? cr.loads.impulse_bound[n - 1] : NAN, imp_p = cr.loads.impulse_total;
-  printf("eps = %.2f, dp = %g m: %d particles, %ld steps, %.1f s; run-up %.4f m (Su & Mirie "
+  printf("%seps = %.2f, dp = %g m: %d particles, %ld steps, %.1f s; run-up %.4f m (Su & Mirie "
          "%.4f m); impulse boundary %.3f, probes %.3f N s/m (2 I = %.3f N s/m)\n",
-         eps, dp, cr.n_particles, cr.steps, cr.runtime_s, cr.loads.runup, R_ref, imp_b, imp_p, I2);
+         verlet ? "Verlet: " : "", eps, dp, cr.n_particles, cr.steps, cr.runtime_s, cr.loads.runup, R_ref, imp_b, imp_p, I2);
   /* the fluid's momentum budget (see the head of this file) */
   double I1 = I_table * rho * h * h * sqrt(g * h);
   /* the reflected wave's momentum is read when its crest is back at 0.75 L
@@ -101,11 +105,16 @@ static void run(double eps, double I_table, double dp, int quick) {
   wl_scenario_clear(&s);
 }
 
-int main(void) {
+int main(int argc, char **argv) {
   gsl_set_error_handler_off();
   setvbuf(stdout, NULL, _IOLBF, 0); /* progress lines survive a timeout */
   const int quick = getenv("WL_TEST_QUICK") != NULL;
-  run(0.3, 1.559253, 0.01, quick);
-  if (!quick) run(0.2, 1.201214, 0.01, quick);
+  const int verlet = argc > 1 && !strcmp(argv[1], "verlet");
+  if (argc > 1 && !verlet) {
+    printf("FAIL unknown argument '%s' (verlet, or none)\n", argv[1]);
+    return 1;
+  }
+  run(0.3, 1.559253, 0.01, quick, verlet);
+  if (!quick) run(0.2, 1.201214, 0.01, quick, verlet);
   return TEST_RESULT();
 }

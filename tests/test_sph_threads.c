@@ -6,7 +6,8 @@
  * (STYLE.md: "1 thread vs N threads"). A second 2-thread run checks that
  * the result is repeatable. The same comparison runs with laminar
  * viscosity, and in 3D (a slab of the flume, extruded along y), so every
- * instantiation of the force loop is exercised. */
+ * instantiation of the force loop is exercised, and with the Verlet
+ * integrator (120 steps: three of them Euler steps). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -18,7 +19,7 @@
 
 #define STEPS 120
 
-static int run(int threads, int dim, int laminar, int steps, struct wl_particles *out,
+static int run(int threads, int dim, int laminar, int verlet, int steps, struct wl_particles *out,
                double *t_out) {
   const double dp = dim == 2 ? 0.02 : 0.04, A = 0.4, H = 0.8, L = 1.6;
   struct wl_error err;
@@ -27,6 +28,7 @@ static int run(int threads, int dim, int laminar, int steps, struct wl_particles
   wl_sph_config_default(&cfg, dim, dp, H);
   cfg.n_threads = threads;
   if (laminar) cfg.prm.visc = WL_SPH_VISC_LAMINAR;
+  if (verlet) cfg.prm.integrator = WL_SPH_VERLET;
   struct wl_sph_const k;
   if (wl_sph_const_make(&cfg.prm, &k, &err)) return 1;
   cfg.lo[0] = -0.3;
@@ -93,22 +95,23 @@ static int identical(const struct wl_particles *a, const struct wl_particles *b,
   return same;
 }
 
-static void compare(int dim, int laminar, int steps) {
+static void compare(int dim, int laminar, int verlet, int steps) {
   struct wl_particles p1 = {0}, p2 = {0}, p2b = {0};
   double t1 = 0, t2 = 0, t2b = 0, diff;
   char ref[160];
-  if (run(1, dim, laminar, steps, &p1, &t1) || run(2, dim, laminar, steps, &p2, &t2) ||
-      run(2, dim, laminar, steps, &p2b, &t2b)) {
+  if (run(1, dim, laminar, verlet, steps, &p1, &t1) ||
+      run(2, dim, laminar, verlet, steps, &p2, &t2) ||
+      run(2, dim, laminar, verlet, steps, &p2b, &t2b)) {
     CHECK_TRUE(0, "a run failed");
     return;
   }
-  printf("%dD %s: %d particles, %d steps, t = %.6g s\n", dim, laminar ? "laminar" : "artificial",
-         p1.n, steps, t1);
-  snprintf(ref, sizeof ref, "%dD %s viscosity: same time steps on 1 and 2 threads", dim,
-           laminar ? "laminar" : "artificial");
+  const char *visc = laminar ? "laminar" : "artificial", *step = verlet ? "Verlet" : "symplectic";
+  printf("%dD %s, %s: %d particles, %d steps, t = %.6g s\n", dim, visc, step, p1.n, steps, t1);
+  snprintf(ref, sizeof ref, "%dD %s viscosity, %s: same time steps on 1 and 2 threads", dim, visc,
+           step);
   CHECK_TRUE(t1 == t2, ref);
-  snprintf(ref, sizeof ref, "%dD %s viscosity: 1 vs 2 threads identical positions, velocities, "
-           "densities", dim, laminar ? "laminar" : "artificial");
+  snprintf(ref, sizeof ref, "%dD %s viscosity, %s: 1 vs 2 threads identical positions, "
+           "velocities, densities", dim, visc, step);
   CHECK_TRUE(identical(&p1, &p2, &diff), ref);
   CHECK_ABS(diff, 0, 0, "largest position difference 1 vs 2 threads [m]");
   CHECK_TRUE(identical(&p2, &p2b, &diff) && t2 == t2b, "2 threads twice: identical");
@@ -121,8 +124,9 @@ static void compare(int dim, int laminar, int steps) {
 }
 
 int main(void) {
-  compare(2, 0, STEPS);
-  compare(2, 1, STEPS / 3);
-  compare(3, 0, STEPS / 3);
+  compare(2, 0, 0, STEPS);
+  compare(2, 1, 0, STEPS / 3);
+  compare(3, 0, 0, STEPS / 3);
+  compare(2, 0, 1, STEPS);
   return TEST_RESULT();
 }

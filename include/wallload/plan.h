@@ -92,6 +92,7 @@ struct wl_plan {
   struct wl_plan_explosion explosion;
   double dp;                        /* particle spacing [m] */
   double coefh;                     /* resolved numerics.coefh [-] (auto: WL_PLAN_COEFH_2D/3D) */
+  int evals_per_step;               /* force evaluations a time step: 2 symplectic, 1 Verlet */
   char dims_reason[160];            /* why dims: given, or auto's reason */
   int slip_walls;                   /* 3D: side walls as free-slip mirror planes */
   int symmetry;                     /* 3D: half the width modelled, a symmetry plane on the
@@ -130,25 +131,31 @@ struct wl_plan {
  * DualSPHysics' settings, the benchmarks' common ground. */
 void wl_plan_default_numerics(struct wl_sph_params *prm);
 
-/* Reference throughput used for runtime estimates [particle-steps/s]; the
- * measured values are in BENCHMARKS.md: scenarios/seawall.yaml on the
- * 2-core development machine, 2 threads, 2026-11-23: 4.18e6 (solitary
- * case) and 4.81e6 (explosion). */
-#define WL_PLAN_CPU_RATE 4.5e6
+/* Reference throughput used for runtime estimates [force evaluations/s per
+ * particle; a symplectic step has two, a Verlet step one]; the measured
+ * values are in BENCHMARKS.md: scenarios/seawall.yaml on the 2-core
+ * development machine, 2 threads, 2026-11-24: 1.01e7 and 1.05e7 with the
+ * symplectic integrator (solitary and explosion cases), 9.6e6 and 9.8e6
+ * with Verlet (whose step is one evaluation plus the same sort). */
+#define WL_PLAN_CPU_RATE 9.0e6
 /* The same in 3D (about 100 neighbours per particle instead of 20, and a
  * flume's side walls): test_flume3d's still-water flume (16k particles)
- * ran at about 3e5 particle-steps/s on the 2-core development machine. */
-#define WL_PLAN_CPU_RATE_3D 3.0e5
-/* The CUDA backend on an H100 (BENCHMARKS.md, 2026-11-23): a step of a
+ * ran at about 3e5 symplectic particle-steps/s on the 2-core development
+ * machine. */
+#define WL_PLAN_CPU_RATE_3D 6.0e5
+/* The CUDA backend on an H100 (BENCHMARKS.md): a symplectic step of a
  * flume of 9k-38k particles took about 215 us whatever its size (launches
  * and the per-step synchronisation, not the force loop, set the time: the
- * seawall's cases ran 48k and 58k steps in 10.3 and 12.4 s); large runs go
- * at the force loop's rate, 1.08e9 particle-steps/s for the 2D dam break of
- * 0.89M particles and 1.78e8 for the 3D one of 1.03M (h = 1.41 and
- * 1.73 dp). The estimate takes the larger of the two times. */
+ * seawall's cases ran 48k and 58k steps in 10.3 and 12.4 s, 2026-11-23); a
+ * Verlet step (one force evaluation, no predictor) about 147 us (35.8k and
+ * 94.3k steps in 5.3 and 13.8 s, 2026-11-24). Large runs go at the force
+ * loop's rate, 2.16e9 force evaluations/s for the 2D dam break of 0.89M
+ * particles and 3.56e8 for the 3D one of 1.03M (h = 1.41 and 1.73 dp). The
+ * estimate takes the larger of the two times. */
 #define WL_PLAN_GPU_STEP_S 2.2e-4
-#define WL_PLAN_GPU_RATE 1.08e9
-#define WL_PLAN_GPU_RATE_3D 1.78e8
+#define WL_PLAN_GPU_STEP_S_VERLET 1.5e-4
+#define WL_PLAN_GPU_RATE 2.16e9
+#define WL_PLAN_GPU_RATE_3D 3.56e8
 
 /* Build the plan of a validated scenario. Returns WL_OK; WL_EINPUT when a
  * formula's validity is exceeded (message names the scenario key);

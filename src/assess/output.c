@@ -386,6 +386,8 @@ static enum wl_status write_summary(const struct wl_scenario *s, const struct wl
       jval(&t, "density_diffusion", prm->ddt == WL_SPH_DDT_NONE ? 0.0 : prm->delta, "1",
            "delta-SPH coefficient (0: off)", 0);
       jval(&t, "shifting", prm->shift_coef, "1", "particle shifting coefficient A (0: off)", 0);
+      jval(&t, "force_evaluations_per_step", prm->integrator == WL_SPH_VERLET ? 1 : 2, "1",
+           prm->integrator == WL_SPH_VERLET ? "Verlet integrator" : "symplectic integrator", 0);
     }
     jval(&t, "particles", c->n_particles, "1", NULL, 0);
     jval(&t, "steps", (double)c->steps, "1", NULL, 0);

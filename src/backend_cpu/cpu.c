@@ -1,7 +1,9 @@
 /* cpu.c: the OpenMP CPU backend (backend.h): particle arrays in host
- * memory, one symplectic step = cell rebuild by counting sort, two force
- * evaluations (step start and half step) with the shared gather physics of
- * include/wallload/sph/, predictor, corrector and guard. Every parallel
+ * memory, one step = cell rebuild by counting sort, then with the
+ * symplectic integrator two force evaluations (step start and half step)
+ * with the shared gather physics of include/wallload/sph/, predictor,
+ * corrector and guard; with Verlet one evaluation, the Verlet update and
+ * guard (sph/integrate.h). Every parallel
  * loop writes only to its own particle's outputs and every reduction is a
  * max or min, so the results do not depend on the thread count. */
 #include <math.h>
@@ -33,6 +35,8 @@ struct cpu {
   int *begin;              /* 2 n_cells + 1: first sorted index of each key */
   int *cursor;             /* 2 n_cells: scatter positions of the counting sort */
   unsigned int *key_tmp;   /* keys in sorted order */
+  /* Verlet: sort targets of the previous step's v and rho (vel_h, rho_h) */
+  wl_real *prev_vel_tmp[WL_SPH_DIM_MAX], *prev_rho_tmp;
   block_fn block;          /* force loop for this dimension, viscosity and CPU */
   shift_fn shift;          /* particle shifting loop (sph/shift.h), the same ISA */
   const char *isa;         /* which build of it */
@@ -104,6 +108,20 @@ static void rebuild(struct cpu *c) {
                 perm, n);
     }
     permute(c->key_tmp, p->key, sizeof(unsigned int), perm, n);
+    if (c->k.integrator == WL_SPH_VERLET) { /* the previous step's v and rho travel too */
+      for (int a = 0; a < dim; a++) permute(c->prev_vel_tmp[a], p->vel_h[a], sizeof(wl_real), perm, n);
+      permute(c->prev_rho_tmp, p->rho_h, sizeof(wl_real), perm, n);
+    }
+  }
+  if (c->k.integrator == WL_SPH_VERLET) {
+    for (int a = 0; a < dim; a++) {
+      wl_real *t = p->vel_h[a];
+      p->vel_h[a] = c->prev_vel_tmp[a];
+      c->prev_vel_tmp[a] = t;
+    }
+    wl_real *t = p->rho_h;
+    p->rho_h = c->prev_rho_tmp;
+    c->prev_rho_tmp = t;
   }
   /* swap the arrays: the sorted copies become the state */
   for (int f = 0; f < nf; f++) {
@@ -342,16 +360,22 @@ static void fill_dt(const struct cpu *c, const struct eval_stats *st, struct wl_
 
 /* ---- guard ------------------------------------------------------------------- */
 
-/* The guard for every particle, after the corrector when `in` is not NULL
- * (one loop: particle i's check reads only what its corrector wrote). The
+/* The guard for every particle, after the update (the corrector or the
+ * Verlet step) when `in` is not NULL (one loop: particle i's check reads
+ * only what its update wrote). The
  * first faulty particle is the lowest index, whatever the threads. */
 static void guard(struct cpu *c, const struct wl_sph_step_in *in, struct wl_sph_step_out *out) {
   struct wl_particles *p = &c->p;
   const int n = p->n, dim = p->dim;
   int first = n;
+  const int verlet = c->k.integrator == WL_SPH_VERLET;
+  const int euler = in && verlet && wl_sph_verlet_euler(&c->k, in->step);
 #pragma omp parallel for schedule(static) num_threads(threads(c)) reduction(min : first)
   for (int i = 0; i < n; i++) {
-    if (in) wl_sph_correct(dim, &c->k, p, in->dt, (const double(*)[WL_SPH_DIM_MAX])in->body_vel, i);
+    if (in && verlet)
+      wl_sph_verlet(dim, &c->k, p, in->dt, (const double(*)[WL_SPH_DIM_MAX])in->body_vel, euler, i);
+    else if (in)
+      wl_sph_correct(dim, &c->k, p, in->dt, (const double(*)[WL_SPH_DIM_MAX])in->body_vel, i);
     int w = -1;
     if (wl_sph_guard(dim, &c->k, p, c->cfg.lo, c->cfg.hi, c->cfg.walls, c->cfg.n_walls, i, &w) &&
         i < first)
@@ -383,6 +407,8 @@ static void cpu_free(void *ctx) {
   free(c->begin);
   free(c->cursor);
   free(c->key_tmp);
+  for (int a = 0; a < WL_SPH_DIM_MAX; a++) free(c->prev_vel_tmp[a]);
+  free(c->prev_rho_tmp);
   free(c);
 }
 
@@ -395,11 +421,12 @@ static enum wl_status cpu_step(void *ctx, const struct wl_sph_step_in *in,
   struct eval_stats st = {0, 0, 0};
 
   /* four parallel regions (five with shifting): sort; (shifts;) forces at
-   * the start; predictor and forces at the half step; corrector and guard */
+   * the start; predictor and forces at the half step; corrector and guard.
+   * Verlet: sort; (shifts;) forces at the start; Verlet update and guard */
   rebuild(c);
   if (in && c->k.shift_coef > 0) shift(c, in->dt);
   evaluate(c, p->pos, p->vel, p->rho, NULL, &st);
-  evaluate(c, p->pos_h, p->vel_h, p->rho_h, in, &st);
+  if (c->k.integrator == WL_SPH_SYMPLECTIC) evaluate(c, p->pos_h, p->vel_h, p->rho_h, in, &st);
   guard(c, in, out);
   fill_dt(c, &st, out);
   return WL_OK;
@@ -407,8 +434,10 @@ static enum wl_status cpu_step(void *ctx, const struct wl_sph_step_in *in,
 
 static void cpu_describe(void *ctx, char *buf, size_t size) {
   const struct cpu *c = ctx;
-  snprintf(buf, size, "cpu (OpenMP, %d threads, %s force loop, %d cells of %.4g m)", threads(c),
-           c->isa, c->grid.n_cells, c->grid.cell);
+  snprintf(buf, size, "cpu (OpenMP, %d threads, %s force loop, %s, %d cells of %.4g m)",
+           threads(c), c->isa,
+           c->k.integrator == WL_SPH_VERLET ? "Verlet steps" : "symplectic steps",
+           c->grid.n_cells, c->grid.cell);
 }
 
 static enum wl_status cpu_download(void *ctx, struct wl_particles *host, struct wl_error *err) {
@@ -472,6 +501,23 @@ static enum wl_status cpu_init(void **ctx, const struct wl_sph_config *cfg,
   c->begin = malloc(sizeof(int) * (size_t)(2 * g->n_cells + 1));
   c->cursor = malloc(sizeof(int) * (size_t)(2 * g->n_cells));
   c->key_tmp = malloc(sizeof(unsigned int) * (size_t)(host->n > 0 ? host->n : 1));
+  if (k->integrator == WL_SPH_VERLET) {
+    /* the previous step's v and rho start as the initial state (the first
+     * step is an Euler step, wl_sph_verlet_euler, which does not read them) */
+    const size_t bytes = sizeof(wl_real) * (size_t)(host->n > 0 ? host->n : 1);
+    int ok = (c->prev_rho_tmp = malloc(bytes)) != NULL;
+    for (int a = 0; a < dim; a++) {
+      ok = ok && (c->prev_vel_tmp[a] = malloc(bytes)) != NULL;
+      if (ok) memcpy(c->p.vel_h[a], c->p.vel[a], sizeof(wl_real) * (size_t)host->n);
+    }
+    if (!ok) {
+      const int n = host->n;
+      cpu_free(c);
+      return wl_error_set(err, WL_ENOMEM, "cpu backend: cannot allocate the Verlet sort buffers "
+                          "(%d particles x %zu B)", n, (size_t)(dim + 1) * sizeof(wl_real));
+    }
+    memcpy(c->p.rho_h, c->p.rho, sizeof(wl_real) * (size_t)host->n);
+  }
   if (!c->begin || !c->cursor || !c->key_tmp) {
     const double mb = (2.0 * g->n_cells + 1) * sizeof(int) / 1048576.0, side = g->cell;
     const int nc = g->n_cells;

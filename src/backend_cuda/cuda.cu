@@ -123,6 +123,9 @@ struct gpu {
   wl_real *vel[WL_SPH_DIM_MAX], *vel_h[WL_SPH_DIM_MAX], *ace[WL_SPH_DIM_MAX];
   wl_real *rho, *rho_h, *press, *ar, *visc;
   wl_real *shift[WL_SPH_DIM_MAX]; /* particle shifting (NULL when off) */
+  /* Verlet (NULL with the symplectic integrator): the previous step's v and
+   * rho (the view's vel_h and rho_h, sph/integrate.h) and their sort targets */
+  wl_real *vel_m1[WL_SPH_DIM_MAX], *vel_m1_alt[WL_SPH_DIM_MAX], *rho_m1, *rho_m1_alt;
   unsigned int *key, *id;
   unsigned char *kind, *kind_alt, *body, *body_alt;
   int *begin; /* 2 n_cells + 1 */
@@ -189,6 +192,9 @@ struct permute_args {
   unsigned int *id_d;
   const unsigned char *kind, *body;
   unsigned char *kind_d, *body_d;
+  /* Verlet only (rho_m1 NULL otherwise): the previous step's v and rho */
+  const wl_real *vel_m1[WL_SPH_DIM_MAX], *rho_m1;
+  wl_real *vel_m1_d[WL_SPH_DIM_MAX], *rho_m1_d;
 };
 
 template <int DIM>
@@ -206,6 +212,10 @@ __global__ void k_permute(struct permute_args a, struct wl_sph_const k, int n) {
   a.id_d[s] = a.id[j];
   a.kind_d[s] = a.kind[j];
   a.body_d[s] = a.body[j];
+  if (a.rho_m1) {
+    for (int c = 0; c < DIM; c++) a.vel_m1_d[c][s] = a.vel_m1[c][j];
+    a.rho_m1_d[s] = a.rho_m1[j];
+  }
 }
 
 /* Block maxima of three non-negative doubles, one atomic max per block. */
@@ -637,15 +647,19 @@ __global__ void k_predict(struct wl_sph_const kp, struct wl_particles p, double 
   p.press[i] = wl_sph_eos_p(&k, p.rho_h[i]);
 }
 
-/* Corrector (when correct != 0) and guard; the lowest faulty index. */
+/* The update (when update != 0: the corrector, or the Verlet step with
+ * its Euler flag) and guard; the lowest faulty index. */
 template <int DIM>
 __global__ void k_correct_guard(struct wl_sph_const kp, struct wl_particles p, double dt,
-                                struct bodyvel bv, int n, int correct, const struct dmeta *m,
-                                struct dstats *st) {
+                                struct bodyvel bv, int n, int update, int euler,
+                                const struct dmeta *m, struct dstats *st) {
   const int i = tid();
   if (i >= n) return;
   const struct wl_sph_const k = kp;
-  if (correct) wl_sph_correct(DIM, &k, &p, dt, (const double(*)[WL_SPH_DIM_MAX])bv.v, i);
+  if (update && k.integrator == WL_SPH_VERLET)
+    wl_sph_verlet(DIM, &k, &p, dt, (const double(*)[WL_SPH_DIM_MAX])bv.v, euler, i);
+  else if (update)
+    wl_sph_correct(DIM, &k, &p, dt, (const double(*)[WL_SPH_DIM_MAX])bv.v, i);
   int w = -1;
   if (wl_sph_guard(DIM, &k, &p, m->lo, m->hi, m->walls, m->n_walls, i, &w))
     atomicMin(&st->first, i);
@@ -697,6 +711,10 @@ static struct wl_particles view(const struct gpu *c) {
   }
   p.rho = c->rho;
   p.rho_h = c->rho_h;
+  if (c->rho_m1) { /* Verlet: vel_h and rho_h are the previous step's v and rho */
+    for (int a = 0; a < c->dim; a++) p.vel_h[a] = c->vel_m1[a];
+    p.rho_h = c->rho_m1;
+  }
   p.press = c->press;
   p.ar = c->ar;
   p.visc = c->visc;
@@ -755,6 +773,14 @@ static enum wl_status rebuild(struct gpu *c, struct wl_error *err) {
   a.kind_d = c->kind_alt;
   a.body = c->body;
   a.body_d = c->body_alt;
+  if (c->rho_m1) {
+    for (int q = 0; q < dim; q++) {
+      a.vel_m1[q] = c->vel_m1[q];
+      a.vel_m1_d[q] = c->vel_m1_alt[q];
+    }
+    a.rho_m1 = c->rho_m1;
+    a.rho_m1_d = c->rho_m1_alt;
+  }
   if (dim == 3) k_permute<3><<<blocks(n), THREADS, 0, c->stream>>>(a, c->k, n);
   else k_permute<2><<<blocks(n), THREADS, 0, c->stream>>>(a, c->k, n);
   CKL("permute");
@@ -770,6 +796,10 @@ static enum wl_status rebuild(struct gpu *c, struct wl_error *err) {
   }
   swap_ptr(c->kind, c->kind_alt);
   swap_ptr(c->body, c->body_alt);
+  if (c->rho_m1) {
+    for (int q = 0; q < dim; q++) swap_ptr(c->vel_m1[q], c->vel_m1_alt[q]);
+    swap_ptr(c->rho_m1, c->rho_m1_alt);
+  }
   return WL_OK;
 }
 
@@ -815,7 +845,7 @@ static enum wl_status evaluate(struct gpu *c, double *const *pos, wl_real *const
   return WL_OK;
 }
 
-/* Corrector (in != NULL) and guard, the fault record, then the step record
+/* The update (in != NULL) and guard, the fault record, then the step record
  * back to the host (the one synchronisation of a step). */
 static enum wl_status finish(struct gpu *c, const struct wl_sph_step_in *in,
                              const struct bodyvel *bv, struct wl_sph_step_out *out,
@@ -823,12 +853,13 @@ static enum wl_status finish(struct gpu *c, const struct wl_sph_step_in *in,
   const struct wl_particles p = view(c);
   const int n = c->n;
   const double dt = in ? in->dt : 0.0;
+  const int euler = in && c->k.integrator == WL_SPH_VERLET && wl_sph_verlet_euler(&c->k, in->step);
   if (c->dim == 3) {
-    k_correct_guard<3><<<blocks(n), THREADS, 0, c->stream>>>(c->k, p, dt, *bv, n, in != NULL, c->meta, c->stats);
+    k_correct_guard<3><<<blocks(n), THREADS, 0, c->stream>>>(c->k, p, dt, *bv, n, in != NULL, euler, c->meta, c->stats);
     CKL("correct");
     k_fault<3><<<1, 1, 0, c->stream>>>(c->k, p, n, c->meta, c->stats);
   } else {
-    k_correct_guard<2><<<blocks(n), THREADS, 0, c->stream>>>(c->k, p, dt, *bv, n, in != NULL, c->meta, c->stats);
+    k_correct_guard<2><<<blocks(n), THREADS, 0, c->stream>>>(c->k, p, dt, *bv, n, in != NULL, euler, c->meta, c->stats);
     CKL("correct");
     k_fault<2><<<1, 1, 0, c->stream>>>(c->k, p, n, c->meta, c->stats);
   }
@@ -893,6 +924,7 @@ static enum wl_status cuda_step(void *ctx, const struct wl_sph_step_in *in,
     CKL("shift");
   }
   if ((st = evaluate(c, c->pos, c->vel, c->rho, err))) return st;
+  if (c->k.integrator == WL_SPH_VERLET) return finish(c, in, &bv, out, err);
   struct wl_particles p = view(c);
   if (c->dim == 3) k_predict<3><<<blocks(c->n), THREADS, 0, c->stream>>>(c->k, p, in->dt, bv, c->n);
   else k_predict<2><<<blocks(c->n), THREADS, 0, c->stream>>>(c->k, p, in->dt, bv, c->n);
@@ -904,13 +936,13 @@ static enum wl_status cuda_step(void *ctx, const struct wl_sph_step_in *in,
 static void cuda_describe(void *ctx, char *buf, size_t size) {
   const struct gpu *c = (const struct gpu *)ctx;
   snprintf(buf, size,
-           "cuda (%s, sm_%d%d, %d SMs; %s force loop, one thread per particle; %d cells of %.4g m; "
+           "cuda (%s, sm_%d%d, %d SMs; %s force loop, one thread per particle; %s; %d cells of %.4g m; "
            "%.1f MiB on the device, %.0f B/particle)",
            c->dev.name, c->dev.sm_major, c->dev.sm_minor, c->dev.n_sm,
            c->mode == MODE_TILE   ? "tile (warp-shared candidates, per-thread masks)"
            : c->mode == MODE_FAST ? "fast (cut-off skip)"
                                   : "reference (wl_sph_gather)",
-           c->grid.n_cells,
+           c->k.integrator == WL_SPH_VERLET ? "Verlet steps" : "symplectic steps", c->grid.n_cells,
            c->grid.cell, c->bytes / 1048576.0, (double)c->bytes / (c->n > 0 ? c->n : 1));
 }
 
@@ -954,12 +986,13 @@ static enum wl_status dalloc(struct gpu *c, void **p, size_t bytes, const char *
 }
 
 /* Device bytes per particle of the arrays (dim components where vectors). */
-static size_t bytes_per_particle(int dim, int shifting) {
+static size_t bytes_per_particle(int dim, int shifting, int verlet) {
   return (size_t)dim * (2 * sizeof(double) + 3 * sizeof(wl_real)) /* pos, pos_h, vel, vel_h, ace */
          + 5 * sizeof(wl_real)                                      /* rho, rho_h, press, ar, visc */
          + 2 * sizeof(unsigned int)                                 /* key, id */
          + 4                                                        /* kind, body and their alts */
-         + (shifting ? (size_t)dim * sizeof(wl_real) : 0);          /* shift (sph/shift.h) */
+         + (shifting ? (size_t)dim * sizeof(wl_real) : 0)           /* shift (sph/shift.h) */
+         + (verlet ? 2 * (size_t)(dim + 1) * sizeof(wl_real) : 0);  /* vel_m1, rho_m1, alts */
 }
 
 static enum wl_status cuda_init(void **ctx, const struct wl_sph_config *cfg,
@@ -1032,7 +1065,8 @@ static enum wl_status cuda_init(void **ctx, const struct wl_sph_config *cfg,
     }
   }
   const int shifting = k->shift_coef > 0;
-  const size_t per = bytes_per_particle(dim, shifting);
+  const int verlet = k->integrator == WL_SPH_VERLET;
+  const size_t per = bytes_per_particle(dim, shifting, verlet);
   const size_t need = per * (size_t)n + sizeof(int) * (size_t)(n_keys + 1) + c->sort_tmp_bytes +
                       sizeof(struct dmeta) + sizeof(struct dstats);
   size_t free_b = 0, total_b = 0;
@@ -1074,6 +1108,14 @@ static enum wl_status cuda_init(void **ctx, const struct wl_sph_config *cfg,
     A(c->vel_h[a], nr, "vel_h");
     A(c->ace[a], nr, "ace");
     if (shifting) A(c->shift[a], nr, "shift");
+    if (verlet) {
+      A(c->vel_m1[a], nr, "previous velocity (Verlet)");
+      A(c->vel_m1_alt[a], nr, "previous velocity (Verlet, sort copy)");
+    }
+  }
+  if (verlet) {
+    A(c->rho_m1, nr, "previous density (Verlet)");
+    A(c->rho_m1_alt, nr, "previous density (Verlet, sort copy)");
   }
   A(c->rho, nr, "rho");
   A(c->rho_h, nr, "rho_h");
@@ -1127,6 +1169,10 @@ static enum wl_status cuda_init(void **ctx, const struct wl_sph_config *cfg,
   C(cudaMemcpy(c->id, host->id, nu, cudaMemcpyHostToDevice));
   C(cudaMemcpy(c->kind, host->kind, n8, cudaMemcpyHostToDevice));
   C(cudaMemcpy(c->body, host->body, n8, cudaMemcpyHostToDevice));
+  if (verlet) { /* the previous step's v and rho start as the initial state */
+    for (int a = 0; a < dim; a++) C(cudaMemcpy(c->vel_m1[a], c->vel[a], nr, cudaMemcpyDeviceToDevice));
+    C(cudaMemcpy(c->rho_m1, c->rho, nr, cudaMemcpyDeviceToDevice));
+  }
 #undef C
   /* forces of the initial state give the first dt (as the CPU backend) */
   struct bodyvel bv;

@@ -104,6 +104,9 @@ static void set_params(const struct wl_scenario *s, const struct wl_plan *plan, 
   prm->g = plan->g;
   /* particle shifting (sph/shift.h) with DualSPHysics' coefficient */
   prm->shift_coef = s->numerics.shifting.choice != 0 ? 2.0 : 0.0;
+  prm->integrator = s->numerics.integrator.choice == WL_INTEGRATOR_VERLET ? WL_SPH_VERLET
+                                                                          : WL_SPH_SYMPLECTIC;
+  prm->verlet_steps = (int)s->numerics.verlet_steps.q.si;
   if (!s->run.threads.is_auto) cfg->n_threads = (int)s->run.threads.q.si;
 }
 

@@ -497,6 +497,7 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
   p->coefh = s->numerics.coefh.is_auto ? (p->dims == 2 ? WL_PLAN_COEFH_2D : WL_PLAN_COEFH_3D)
                                         : s->numerics.coefh.q.si;
   p->h_sml = p->coefh * sqrt((double)p->dims) * p->dp;
+  p->evals_per_step = s->numerics.integrator.choice == WL_INTEGRATOR_VERLET ? 1 : 2;
   enum wl_status st = plan_sides(s, p, err);
   if (st) return st;
   double h_max = p->h;
@@ -524,15 +525,17 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
       n_max = px->n_fluid + px->n_boundary, p->n_fluid = px->n_fluid, p->n_boundary = px->n_boundary;
   }
   p->memory_bytes = BYTES_PER_PARTICLE * (double)n_max;
-  p->cpu_seconds = p->particle_steps / (p->dims == 3 ? WL_PLAN_CPU_RATE_3D : WL_PLAN_CPU_RATE);
+  p->cpu_seconds = p->particle_steps * p->evals_per_step /
+                   (p->dims == 3 ? WL_PLAN_CPU_RATE_3D : WL_PLAN_CPU_RATE);
   const double gpu_rate = p->dims == 3 ? WL_PLAN_GPU_RATE_3D : WL_PLAN_GPU_RATE;
+  const double gpu_step = p->evals_per_step == 1 ? WL_PLAN_GPU_STEP_S_VERLET : WL_PLAN_GPU_STEP_S;
   p->gpu_seconds = 0;
   if (p->solitary.present)
-    p->gpu_seconds += fmax(p->solitary.end_time / p->dt * WL_PLAN_GPU_STEP_S,
-                           p->solitary.particle_steps / gpu_rate);
+    p->gpu_seconds += fmax(p->solitary.end_time / p->dt * gpu_step,
+                           p->solitary.particle_steps * p->evals_per_step / gpu_rate);
   if (p->explosion.present)
-    p->gpu_seconds += fmax(p->explosion.end_time / p->dt * WL_PLAN_GPU_STEP_S,
-                           p->explosion.particle_steps / gpu_rate);
+    p->gpu_seconds += fmax(p->explosion.end_time / p->dt * gpu_step,
+                           p->explosion.particle_steps * p->evals_per_step / gpu_rate);
   return WL_OK;
 }
 
@@ -661,11 +664,14 @@ void wl_plan_write(const struct wl_plan *p, FILE *out) {
           p->n_fluid, p->n_boundary);
   fprintf(out, "  %-36s %12.4g MiB\n", "memory (estimate)", p->memory_bytes / 1048576.0);
   fprintf(out, "  %-36s %12.4g\n", "particle-steps, all cases", p->particle_steps);
-  fprintf(out, "  %-36s %12.4g s      (at %.2g particle-steps/s)\n", "CPU runtime (estimate)",
-          p->cpu_seconds, p->dims == 3 ? WL_PLAN_CPU_RATE_3D : WL_PLAN_CPU_RATE);
+  fprintf(out, "  %-36s %12.4g s      (at %.2g force evaluations/s, %d a step: %s)\n",
+          "CPU runtime (estimate)", p->cpu_seconds,
+          p->dims == 3 ? WL_PLAN_CPU_RATE_3D : WL_PLAN_CPU_RATE, p->evals_per_step,
+          p->evals_per_step == 1 ? "Verlet" : "symplectic");
   fprintf(out, "  %-36s %12.4g s      (CUDA backend on an H100: %.2g s a step or %.2g "
-               "particle-steps/s, the slower)\n",
-          "GPU runtime (estimate)", p->gpu_seconds, WL_PLAN_GPU_STEP_S,
+               "force evaluations/s, the slower)\n",
+          "GPU runtime (estimate)", p->gpu_seconds,
+          p->evals_per_step == 1 ? WL_PLAN_GPU_STEP_S_VERLET : WL_PLAN_GPU_STEP_S,
           p->dims == 3 ? WL_PLAN_GPU_RATE_3D : WL_PLAN_GPU_RATE);
   if (p->n_notes) fprintf(out, "\nNotes\n");
   for (int i = 0; i < p->n_notes; i++) fprintf(out, "  - %s\n", p->notes[i]);

@@ -866,7 +866,7 @@ enum wl_status wl_report_render_metadata(struct wl_report_ctx *c, const struct w
 
   if (!st && r->have_scenario) {
     const struct wl_scenario *sc = &r->scenario;
-    char v[10][160];
+    char v[12][160];
     struct wl_report_kv num[] = {
         {"coefh (h = coefh sqrt(dim) dp)", value_text(&sc->numerics.coefh, v[0], 160), 0, NULL, 0},
         {"coefsound (c0 = coefsound sqrt(g h_max))", value_text(&sc->numerics.coefsound, v[1], 160),
@@ -877,6 +877,9 @@ enum wl_status wl_report_render_metadata(struct wl_report_ctx *c, const struct w
         {"laminar viscosity nu", value_text(&sc->numerics.nu, v[5], 160), 0, NULL, 0},
         {"density diffusion", value_text(&sc->numerics.density_diffusion, v[6], 160), 0, NULL, 0},
         {"shifting", value_text(&sc->numerics.shifting, v[7], 160), 0, NULL, 0},
+        {"time integrator", value_text(&sc->numerics.integrator, v[10], 160), 0, NULL, 0},
+        {"Euler step every (Verlet)", value_text(&sc->numerics.verlet_steps, v[11], 160), 0, NULL,
+         0},
         {"output interval", value_text(&sc->run.output_interval, v[8], 160), 0, NULL, 0},
         {"end time", value_text(&sc->run.end_time, v[9], 160), 0, NULL, 0},
     };

@@ -23,6 +23,7 @@ static const char *const model_choices[] = {"crater", "thrown-mass", NULL};
 static const char *const backend_choices[] = {"auto", "cpu", "cuda", NULL};
 static const char *const viscosity_choices[] = {"artificial", "laminar", NULL};
 static const char *const onoff_choices[] = {"off", "on", NULL};
+static const char *const integrator_choices[] = {"symplectic", "verlet", NULL};
 static const char *const far_end_choices[] = {"wall", "damping", NULL};
 static const char *const symmetry_choices[] = {"auto", "none", "centreline", NULL};
 static const char *const side_wall_choices[] = {"free-slip", "particles", NULL};
@@ -159,6 +160,12 @@ static const struct wl_key numerics_keys[] = {
      "0.1", NULL, NO_FLAG, 0, "delta-SPH coefficient (0 switches it off; wall pressure is noise then)"},
     {"shifting", KT_ENUM, WL_DIM_NONE, OFF(numerics.shifting), onoff_choices, NONE, NONE, 0, 0,
      "off", NULL, NO_FLAG, 0, "particle shifting"},
+    {"integrator", KT_ENUM, WL_DIM_NONE, OFF(numerics.integrator), integrator_choices, NONE, NONE,
+     0, 0, "symplectic", NULL, NO_FLAG, 0,
+     "time integrator: symplectic (two force evaluations a step) or verlet (one; about twice as "
+     "fast)"},
+    {"verlet_steps", KT_INT, WL_DIM_NONE, OFF(numerics.verlet_steps), NULL, 1, 1000, 0, 0, "40",
+     NULL, NO_FLAG, 0, "verlet: an Euler step every this many steps (DualSPHysics VerletSteps)"},
     {0}};
 
 static const struct wl_key report_keys[] = {

@@ -21,6 +21,8 @@ void wl_sph_params_default(struct wl_sph_params *prm, int dim, double dp, double
   prm->ddt = WL_SPH_DDT_FOURTAKAS_FULL;
   prm->delta = 0.1;     /* DualSPHysics DensityDTvalue */
   prm->cfl = 0.2;       /* DualSPHysics CFLnumber */
+  prm->integrator = WL_SPH_SYMPLECTIC;
+  prm->verlet_steps = 40; /* DualSPHysics VerletSteps */
   prm->dt_collapse = 1e-3;
   prm->rho_min_factor = 0.7; /* DualSPHysics RhopOutMin 700 for rho0 1000 */
   prm->rho_max_factor = 1.3; /* RhopOutMax 1300 */
@@ -54,6 +56,10 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
     return bad(err, "ddt", prm->ddt, "must be 0 (none), 1 (Fourtakas) or 2 (Fourtakas, full)");
   if (!(prm->delta >= 0 && prm->delta <= 1)) return bad(err, "delta", prm->delta, "must be in [0, 1]");
   if (!(prm->cfl > 0 && prm->cfl <= 1)) return bad(err, "cfl", prm->cfl, "must be in (0, 1]");
+  if (prm->integrator != WL_SPH_SYMPLECTIC && prm->integrator != WL_SPH_VERLET)
+    return bad(err, "integrator", prm->integrator, "must be 0 (symplectic) or 1 (Verlet)");
+  if (!(prm->verlet_steps >= 1 && prm->verlet_steps <= 1000))
+    return bad(err, "verlet_steps", prm->verlet_steps, "must be in [1, 1000]");
   if (!(prm->dt_collapse >= 0 && prm->dt_collapse < 1))
     return bad(err, "dt_collapse", prm->dt_collapse, "must be in [0, 1)");
   if (!(prm->rho_min_factor >= 0 && prm->rho_min_factor < 1))
@@ -108,6 +114,8 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
   k->h_d = h;
   k->c0_d = c0;
   k->cfl = prm->cfl;
+  k->integrator = prm->integrator;
+  k->verlet_steps = prm->verlet_steps;
   k->dt_collapse = prm->dt_collapse;
   k->rho_min = prm->rho_min_factor * prm->rho0;
   k->rho_max = prm->rho_max_factor * prm->rho0;

@@ -1,13 +1,27 @@
-/* sph/integrate.h: the symplectic position-Verlet step of DualSPHysics
- * (Monaghan 2005, Rep. Prog. Phys. 68:1703; Dominguez et al. 2022 eqs.
- * 18-20), per particle, for host and device.
+/* sph/integrate.h: the two time integrators of DualSPHysics, per particle,
+ * for host and device (params.h wl_sph_integrator picks one).
  *
+ * Symplectic position Verlet (Monaghan 2005, Rep. Prog. Phys. 68:1703;
+ * Dominguez et al. 2022 eqs. 18-20), two force evaluations a step:
  * predictor (to t + dt/2, forces F^n at the step start):
  *   rho^{n+1/2} = rho^n + dt/2 drho^n/dt,  v^{n+1/2} = v^n + dt/2 a^n,
  *   r^{n+1/2} = r^n + dt/2 v^n
  * corrector (forces F^{n+1/2} at the half step):
  *   v^{n+1} = v^n + dt a^{n+1/2},  r^{n+1} = r^{n+1/2} + dt/2 v^{n+1},
  *   rho^{n+1} = rho^n (2 - eps)/(2 + eps),  eps = -(drho/dt)^{n+1/2} dt / rho^{n+1/2}
+ *
+ * Verlet (Verlet 1967 in DualSPHysics' form, Dominguez et al. 2022 eqs.
+ * 15-17), one force evaluation a step (F^n at the step start):
+ *   v^{n+1} = v^{n-1} + 2 dt a^n,  rho^{n+1} = rho^{n-1} + 2 dt drho^n/dt,
+ *   r^{n+1} = r^n + dt v^n + dt^2/2 a^n;
+ * every verlet_steps-th step, so that the two interleaved solutions of the
+ * leapfrog (even and odd steps) cannot drift apart, v and rho take an Euler
+ * step instead: v^{n+1} = v^n + dt a^n, rho^{n+1} = rho^n + dt drho^n/dt.
+ * The previous step's v and rho live in vel_h and rho_h, which the cell
+ * sort then carries with the state (the half-step arrays the symplectic
+ * step needs are free in this scheme). Half the force evaluations of the
+ * symplectic step at the same dt; what it costs in accuracy is measured in
+ * BENCHMARKS.md and reference/RESULTS.md.
  *
  * Boundary particles (dynamic boundary condition) integrate density the same
  * way, clamped to rho >= rho0 as DualSPHysics does (a wall never sucks fluid
@@ -16,15 +30,15 @@
  * them exactly on the prescribed trajectory X(t).
  *
  * Damping zone (DualSPHysics' Damping; Altomare et al. 2017, Coast. Eng.
- * 127:37): after the corrector, a fluid particle's velocity is multiplied by
+ * 127:37): after the update, a fluid particle's velocity is multiplied by
  * max(0, 1 - dt rate w^2), w = clamp((x - x0)/(x1 - x0), 0, 1), so waves and
  * overtopping water entering the zone come to rest there instead of
  * reflecting.
  *
- * Particle shifting (sph/shift.h), when on: the corrector adds the step's
- * shift to a fluid particle's position.
+ * Particle shifting (sph/shift.h), when on: the update (the corrector, or
+ * the Verlet step) adds the step's shift to a fluid particle's position.
  *
- * Mirror planes (sph/params.h): a fluid particle the corrector carries
+ * Mirror planes (sph/params.h): a fluid particle the update carries
  * across one is reflected back, its v_y reversed, as its mirror image
  * would have entered. */
 #ifndef WALLLOAD_SPH_INTEGRATE_H
@@ -32,6 +46,29 @@
 
 #include "wallload/sph/particles.h"
 #include "wallload/sph/params.h"
+
+/* The end of a fluid particle's update, after its new position and
+ * velocity: back across a mirror plane (its previous velocity too, which
+ * the Verlet step reads next), then the damping zones. */
+WL_HD static WL_INLINE void wl_sph_fluid_finish(const int dim, const struct wl_sph_const *k,
+                                                const struct wl_particles *p, double dt, int i) {
+  if (dim == 3 && k->mirror) {
+    const double y = p->pos[1][i];
+    if (((k->mirror & 1) && y < k->mirror_y[0]) || ((k->mirror & 2) && y > k->mirror_y[1])) {
+      p->pos[1][i] = 2.0 * k->mirror_y[y < k->mirror_y[0] ? 0 : 1] - y;
+      p->vel[1][i] = -p->vel[1][i];
+      p->vel_h[1][i] = -p->vel_h[1][i];
+    }
+  }
+  for (int z = 0; z < WL_SPH_DAMP_ZONES; z++)
+    if (k->damp_rate[z] > 0) {
+      double w = (p->pos[0][i] - k->damp_x0[z]) * k->damp_inv_len[z];
+      w = w < 0 ? 0 : w > 1 ? 1 : w;
+      double f = 1.0 - dt * k->damp_rate[z] * w * w;
+      f = f < 0 ? 0 : f;
+      for (int a = 0; a < dim; a++) p->vel[a][i] = (wl_real)(f * (double)p->vel[a][i]);
+    }
+}
 
 /* Predictor for particle i: reads the state and the forces at the step start,
  * writes the half-step arrays. body_vel[b][a]: velocity of moving body b
@@ -75,25 +112,51 @@ WL_HD static WL_INLINE void wl_sph_correct(const int dim, const struct wl_sph_co
       p->pos[a][i] = p->pos_h[a][i] + 0.5 * dt * (double)v;
       if (k->shift_coef > 0) p->pos[a][i] += (double)p->shift[a][i]; /* sph/shift.h */
     }
-    if (dim == 3 && k->mirror) { /* back across a mirror plane */
-      const double y = p->pos[1][i];
-      if (((k->mirror & 1) && y < k->mirror_y[0]) || ((k->mirror & 2) && y > k->mirror_y[1])) {
-        p->pos[1][i] = 2.0 * k->mirror_y[y < k->mirror_y[0] ? 0 : 1] - y;
-        p->vel[1][i] = -p->vel[1][i];
-      }
-    }
-    for (int z = 0; z < WL_SPH_DAMP_ZONES; z++)
-      if (k->damp_rate[z] > 0) {
-        double w = (p->pos[0][i] - k->damp_x0[z]) * k->damp_inv_len[z];
-        w = w < 0 ? 0 : w > 1 ? 1 : w;
-        double f = 1.0 - dt * k->damp_rate[z] * w * w;
-        f = f < 0 ? 0 : f;
-        for (int a = 0; a < dim; a++) p->vel[a][i] = (wl_real)(f * (double)p->vel[a][i]);
-      }
+    wl_sph_fluid_finish(dim, k, p, dt, i);
   } else {
     p->rho[i] = rho > k->rho0 ? rho : k->rho0;
     if (p->kind[i] == WL_KIND_MOVING)
       for (int a = 0; a < dim; a++) p->pos[a][i] = p->pos_h[a][i] + 0.5 * dt * body_vel[p->body[i]][a];
+  }
+}
+
+/* Whether step number `step` (0 = the first) of a Verlet run is an Euler
+ * step: the first, and every verlet_steps-th after it. */
+WL_HD static WL_INLINE int wl_sph_verlet_euler(const struct wl_sph_const *k, long step) {
+  return step % k->verlet_steps == 0;
+}
+
+/* Verlet step for particle i: reads the state, the previous step's v and
+ * rho (vel_h, rho_h) and the forces at the step start; writes the new
+ * state and keeps the current v and rho as the previous ones. euler != 0:
+ * the Euler step that re-couples the leapfrog's even and odd steps.
+ * body_vel as in wl_sph_predict. */
+WL_HD static WL_INLINE void wl_sph_verlet(const int dim, const struct wl_sph_const *k,
+                                          const struct wl_particles *p, double dt,
+                                          const double (*body_vel)[WL_SPH_DIM_MAX], int euler,
+                                          int i) {
+  const wl_real span = (wl_real)(euler ? dt : 2.0 * dt);
+  const wl_real rho_n = p->rho[i];
+  const wl_real rho = (euler ? rho_n : p->rho_h[i]) + span * p->ar[i];
+  p->rho_h[i] = rho_n;
+  if (p->kind[i] == WL_KIND_FLUID) {
+    p->rho[i] = rho;
+    for (int a = 0; a < dim; a++) {
+      const wl_real v_n = p->vel[a][i], acc = p->ace[a][i];
+      p->vel[a][i] = (euler ? v_n : p->vel_h[a][i]) + span * acc;
+      p->vel_h[a][i] = v_n;
+      p->pos[a][i] += dt * (double)v_n + 0.5 * dt * dt * (double)acc;
+      if (k->shift_coef > 0) p->pos[a][i] += (double)p->shift[a][i]; /* sph/shift.h */
+    }
+    wl_sph_fluid_finish(dim, k, p, dt, i);
+  } else {
+    p->rho[i] = rho > k->rho0 ? rho : k->rho0;
+    for (int a = 0; a < dim; a++) {
+      const double v = p->kind[i] == WL_KIND_MOVING ? body_vel[p->body[i]][a] : 0.0;
+      p->pos[a][i] += dt * v;
+      p->vel[a][i] = (wl_real)v;
+      p->vel_h[a][i] = (wl_real)v;
+    }
   }
 }
 

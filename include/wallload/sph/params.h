@@ -34,6 +34,12 @@ enum wl_sph_ddt {
   WL_SPH_DDT_FOURTAKAS_FULL = 2,
 };
 
+/* Time integrator (sph/integrate.h). */
+enum wl_sph_integrator {
+  WL_SPH_SYMPLECTIC = 0, /* symplectic position Verlet: two force evaluations a step (default) */
+  WL_SPH_VERLET = 1,     /* Verlet with an Euler step every verlet_steps: one evaluation a step */
+};
+
 /* Run parameters; wl_sph_params_default fills DualSPHysics' defaults. */
 struct wl_sph_params {
   int dim;                  /* 2 (x, z) or 3 (x, y, z); gravity along the last axis */
@@ -50,6 +56,9 @@ struct wl_sph_params {
   enum wl_sph_ddt ddt;      /* default WL_SPH_DDT_FOURTAKAS_FULL */
   double delta;             /* density diffusion coefficient [-]; default 0.1 */
   double cfl;               /* CFL number [-]; default 0.2 */
+  enum wl_sph_integrator integrator; /* default WL_SPH_SYMPLECTIC */
+  int verlet_steps;         /* Verlet: an Euler step every verlet_steps steps; default 40
+                               (DualSPHysics VerletSteps) */
   /* Guard (instability detection after every step; see sph/guard.h). */
   double dt_collapse;       /* unstable when dt < dt_collapse * initial dt [-]; 1e-3 */
   double rho_min_factor;    /* fluid density below rho_min_factor rho0 is unstable; 0.7 */
@@ -111,6 +120,8 @@ struct wl_sph_const {
   double h_d;         /* h in double [m] */
   double c0_d;        /* c0 in double [m/s] */
   double cfl;         /* [-] */
+  enum wl_sph_integrator integrator;
+  int verlet_steps;   /* Verlet: an Euler step every verlet_steps steps */
   double dt_collapse, rho_min, rho_max; /* guard thresholds ([-], kg/m^3, kg/m^3) */
   double penetration; /* guard: crossing depth [m] */
   double shift_coef;  /* particle shifting A [-] (0: off) */
