@@ -105,6 +105,27 @@ rc=$?
 rc=$?
 [ "$rc" = 2 ] && grep -q "martin_moyce1952_table2.txt" "$TMP/e" && pass "missing reference data -> exit 2 naming the file" ||
   fail "missing reference data -> exit $rc: $(cat "$TMP/e")"
+"$BIN" validate hydrostatic --quick --ladder 1 --integrator leapfrog -o "$TMP/e4" >"$TMP/o" 2>"$TMP/e"
+rc=$?
+[ "$rc" = 2 ] && grep -q "integrator: found 'leapfrog'; valid: symplectic, verlet" "$TMP/e" &&
+  pass "--integrator leapfrog -> exit 2 naming the valid ones" || fail "--integrator leapfrog -> exit $rc: $(cat "$TMP/e")"
+
+# the Verlet integrator: recorded, and the bed pressure against rho0 g h as above
+"$BIN" validate hydrostatic --quick --ladder 1 --threads 1 --integrator verlet -o "$TMP/v" >"$TMP/o" 2>"$TMP/e"
+grep -q '"integrator": "verlet"' "$TMP/v/validation.json" && pass "validation.json records the Verlet integrator" ||
+  fail "validation.json: no integrator verlet"
+grep -q '"integrator": "symplectic"' "$TMP/out/validation.json" && pass "validation.json records the symplectic default" ||
+  fail "validation.json: no integrator symplectic"
+awk -F, '
+  function round(x) { return int(x + 0.5) }
+  NR > 1 && $1 == "hydrostatic" && $8 ~ /bed pressure/ {
+    n++; h = $3 * round(0.5 / $3); ref = 1000 * 9.81 * h
+    ok = ($11 - ref) ^ 2 < (1e-6 * ref) ^ 2 && ($13 < 0 ? -$13 : $13) <= 0.02
+    printf "%s hydrostatic, Verlet: bed pressure %s Pa against rho0 g h = %.2f Pa within 2 %% (error %+.4f)\n", ok ? "PASS" : "FAIL", $10, ref, $13
+    bad += !ok
+  }
+  END { if (n != 1) { print "FAIL hydrostatic, Verlet: expected 1 level, got " n; bad++ } exit bad }' "$TMP/v/validation.csv"
+fails=$((fails + $?))
 "$BIN" validate --list >"$TMP/o" 2>&1 && grep -q "^zhou1999" "$TMP/o" && pass "--list lists the cases" || fail "--list"
 
 [ "$fails" = 0 ] && echo "cli_validate: all checks passed" || echo "cli_validate: $fails check(s) failed"

@@ -79,6 +79,7 @@ struct wl_validate_result {
   double extrapolated;/* Richardson-extrapolated primary error (NaN unless order_ok) */
   int pass;           /* every judged metric met at the finest level, every level ran */
   char verdict[512];  /* "pass", or which metric missed by how much */
+  char integrator[16]; /* time integrator of the runs: "symplectic" or "verlet" */
 };
 
 
@@ -89,6 +90,7 @@ struct wl_validate_opts {
   int n_levels;              /* ladder length (default 3 when 0), 1..WL_VALIDATE_MAX_LEVELS */
   int quick;                 /* 1: each case's quick (coarse, short) ladder */
   int threads;               /* 0: OpenMP's default */
+  int verlet;                /* 1: the Verlet integrator instead of the symplectic default */
   const char *reference_dir; /* NULL: WL_VALIDATE_REFERENCE_DIR (the source tree's reference/) */
   wl_validate_level_fn on_level; /* may be NULL */
   void *user;

@@ -1,5 +1,5 @@
 /* validate.c: `wallload validate [CASE...] [--ladder N] [--quick] [-o DIR]
- * [--threads N] [--reference DIR]`: run the reference cases of reference/
+ * [--threads N] [--integrator NAME] [--reference DIR]`: run the reference cases of reference/
  * on a resolution ladder, print per case and level the particles, steps,
  * runtime and metrics with pass/fail, the observed order and the
  * Richardson-extrapolated error, and write validation.{json,csv,pdf}. */
@@ -18,7 +18,7 @@
 
 #define VALIDATE_USAGE                                                                            \
   "usage: wallload validate [CASE...] [--ladder N] [--quick] [-o DIR] [--threads N] "            \
-  "[--reference DIR]"
+  "[--integrator symplectic|verlet] [--reference DIR]"
 
 static void help(void) {
   printf("%s\n\n"
@@ -29,6 +29,7 @@ static void help(void) {
          "  --quick          each case's coarse, short ladder (seconds to a minute per case)\n"
          "  -o DIR           output directory (default validation-results; created)\n"
          "  --threads N      OpenMP threads per run (default: OpenMP's)\n"
+         "  --integrator NAME  symplectic (default) or verlet: the time integrator of every run\n"
          "  --reference DIR  the reference/ directory (default: the source tree's)\n"
          "  --list           list the cases\n"
          "exit: 0 every case passes, 1 a case misses its tolerance or a run fails, 2 bad input\n\n"
@@ -92,7 +93,7 @@ enum wl_status wl_cli_validate(int argc, char **argv, struct wl_error *err) {
     } else if (!strcmp(a, "--quick")) {
       opts.quick = 1;
     } else if (!strcmp(a, "-o") || !strcmp(a, "--ladder") || !strcmp(a, "--threads") ||
-               !strcmp(a, "--reference")) {
+               !strcmp(a, "--reference") || !strcmp(a, "--integrator")) {
       if (i + 1 >= argc) {
         st = wl_error_set(err, WL_EUSAGE, "validate: %s needs a value\n%s", a, VALIDATE_USAGE);
         break;
@@ -103,6 +104,12 @@ enum wl_status wl_cli_validate(int argc, char **argv, struct wl_error *err) {
         out_dir = v;
       } else if (!strcmp(a, "--reference")) {
         opts.reference_dir = v;
+      } else if (!strcmp(a, "--integrator")) {
+        if (!strcmp(v, "verlet") || !strcmp(v, "symplectic"))
+          opts.verlet = !strcmp(v, "verlet");
+        else
+          st = wl_error_set(err, WL_EUSAGE,
+                            "validate: --integrator: found '%s'; valid: symplectic, verlet", v);
       } else if (!strcmp(a, "--ladder")) {
         long n = strtol(v, &end, 10);
         if (*end || n < 1 || n > WL_VALIDATE_MAX_LEVELS)
@@ -118,7 +125,7 @@ enum wl_status wl_cli_validate(int argc, char **argv, struct wl_error *err) {
     } else if (a[0] == '-') {
       st = wl_error_set(err, WL_EUSAGE,
                         "validate: unknown option '%s'; valid: --ladder N, --quick, -o DIR, "
-                        "--threads N, --reference DIR, --list\n%s",
+                        "--threads N, --integrator NAME, --reference DIR, --list\n%s",
                         a, VALIDATE_USAGE);
     } else {
       st = wl_validate_select(a, sel, err);

@@ -41,13 +41,15 @@ struct tank {
 
 /* Build the tank with a fluid block [bx0, bx1] x [0, bh] at rest, or moving
  * with vel(x) when vel is not NULL. */
-static enum wl_status tank_build(const struct tank *tk, double dp, double h_max, int threads,
+static enum wl_status tank_build(const struct tank *tk, double dp, double h_max,
+                                 const struct wl_val_ctx *ctx,
                                  double bx0, double bx1, double bh, wl_scene_vel_fn vel,
                                  void *vel_user, int hydro_boundary, struct wl_sph_config *cfg,
                                  struct wl_particles *init, struct wl_error *err) {
   wl_sph_config_default(cfg, 2, dp, h_max);
   wl_plan_default_numerics(&cfg->prm); /* what assess runs */
-  cfg->n_threads = threads;
+  if (ctx->verlet) cfg->prm.integrator = WL_SPH_VERLET;
+  cfg->n_threads = ctx->threads;
   if (tk->coefsound > 0) cfg->prm.coefsound = tk->coefsound;
   struct wl_sph_const k;
   enum wl_status st = wl_sph_const_make(&cfg->prm, &k, err);
@@ -154,7 +156,7 @@ static enum wl_status run_hydrostatic(const struct wl_val_case *c, const struct 
   struct wl_sph_config cfg;
   struct wl_particles init = {0};
   enum wl_status st =
-      tank_build(&tk, dp, h, ctx->threads, 0, L, h, NULL, NULL, 1, &cfg, &init, err);
+      tank_build(&tk, dp, h, ctx, 0, L, h, NULL, NULL, 1, &cfg, &init, err);
   if (st) return st;
   const double h_eff = (init.n - init.n_bound) * dp * dp / L; /* (mass / rho0) / L */
   struct hydro_acc a = {L, h, t_end - 5 * sqrt(h / G), 0, 0, 0, 0, 0};
@@ -220,7 +222,7 @@ static enum wl_status run_sloshing(const struct wl_val_case *c, const struct wl_
   struct wl_sph_config cfg;
   struct wl_particles init = {0};
   enum wl_status st =
-      tank_build(&tk, dp, s.h + s.a, ctx->threads, 0, s.L, s.h, slosh_vel, &s, 1, &cfg, &init, err);
+      tank_build(&tk, dp, s.h + s.a, ctx, 0, s.L, s.h, slosh_vel, &s, 1, &cfg, &init, err);
   if (st) return st;
   /* the reference: the still depth the fluid's mass fills */
   const double h_eff = (init.n - init.n_bound) * dp * dp / s.L;
@@ -334,7 +336,7 @@ static enum wl_status run_dambreak(const struct wl_val_case *c, const struct wl_
   struct wl_sph_config cfg;
   struct wl_particles init = {0};
   if (!st)
-    st = tank_build(&tk, dp, H, ctx->threads, 0, a, H, NULL, NULL, 0, &cfg, &init, err);
+    st = tank_build(&tk, dp, H, ctx, 0, a, H, NULL, NULL, 0, &cfg, &init, err);
   struct dam d = {dp, {0}};
   d.front.k = 1;
   const double t_scale = sqrt(2 * G / a); /* T = t sqrt(2g/a) */
@@ -458,7 +460,7 @@ static enum wl_status run_zhou(const struct wl_val_case *c, const struct wl_val_
   struct wl_sph_config cfg;
   struct wl_particles init = {0};
   if (!st)
-    st = tank_build(&tk, dp, ZHOU_COL_H, ctx->threads, ZHOU_TANK - ZHOU_COL_W, ZHOU_TANK,
+    st = tank_build(&tk, dp, ZHOU_COL_H, ctx, ZHOU_TANK - ZHOU_COL_W, ZHOU_TANK,
                     ZHOU_COL_H, NULL, NULL, 0, &cfg, &init, err);
   struct zhou z = {dp, NULL, {0}};
   z.s.k = 3;

@@ -10,6 +10,7 @@ struct wl_val_ctx {
   const char *ref_dir; /* reference/ */
   int threads;         /* 0: OpenMP's default */
   int quick;
+  int verlet;          /* 1: the Verlet integrator (sph/integrate.h) */
 };
 
 struct wl_val_case;

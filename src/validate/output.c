@@ -104,7 +104,9 @@ static enum wl_status write_json(const char *path, const struct wl_validate_resu
     jstr(&b, c->title);
     bprintf(&b, ", \"pass\": %s, \"verdict\": ", c->pass ? "true" : "false");
     jstr(&b, c->verdict);
-    bprintf(&b, ",\n     \"ratio\": ");
+    bprintf(&b, ",\n     \"integrator\": ");
+    jstr(&b, c->integrator);
+    bprintf(&b, ", \"ratio\": ");
     jnum(&b, c->ratio);
     bprintf(&b, ", \"order\": ");
     jnum(&b, c->order);

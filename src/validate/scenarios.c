@@ -26,8 +26,9 @@
 #define G 9.81
 #define VAL_PI 3.14159265358979323846
 
-static enum wl_status load_scenario(const char *path, double dp, struct wl_scenario *s,
-                                    struct wl_plan *plan, struct wl_error *err) {
+static enum wl_status load_scenario(const char *path, double dp, const struct wl_val_ctx *ctx,
+                                    struct wl_scenario *s, struct wl_plan *plan,
+                                    struct wl_error *err) {
   wl_scenario_init(s);
   enum wl_status st = wl_scenario_load(path, s, err);
   if (st) {
@@ -40,6 +41,10 @@ static enum wl_status load_scenario(const char *path, double dp, struct wl_scena
   s->resolution.dp.is_auto = 0;
   s->resolution.dp.given = 1;
   s->resolution.dp.q.si = dp;
+  if (ctx->verlet) { /* validate --integrator verlet */
+    s->numerics.integrator.choice = WL_INTEGRATOR_VERLET;
+    s->numerics.integrator.given = 1;
+  }
   return wl_plan_make(s, plan, err);
 }
 
@@ -102,7 +107,7 @@ enum wl_status wl_val_run_solitary(const struct wl_val_case *c, const struct wl_
   snprintf(path, sizeof path, "%s/%s/h%.1f-e%.1f.yaml", ctx->ref_dir, c->dir, h, eps);
   struct wl_scenario s;
   struct wl_plan plan;
-  enum wl_status st = load_scenario(path, dp, &s, &plan, err);
+  enum wl_status st = load_scenario(path, dp, ctx, &s, &plan, err);
   if (st) {
     wl_scenario_clear(&s);
     return st;
@@ -153,7 +158,7 @@ enum wl_status wl_val_run_solitary_wall(const struct wl_val_case *c, const struc
   snprintf(path, sizeof path, "%s/%s/scenario.yaml", ctx->ref_dir, c->dir);
   struct wl_scenario s;
   struct wl_plan plan;
-  enum wl_status st = load_scenario(path, dp, &s, &plan, err);
+  enum wl_status st = load_scenario(path, dp, ctx, &s, &plan, err);
   if (st) {
     wl_scenario_clear(&s);
     return st;
@@ -254,7 +259,7 @@ enum wl_status wl_val_run_crater(const struct wl_val_case *c, const struct wl_va
   snprintf(path, sizeof path, "%s/%s/scenario.yaml", ctx->ref_dir, c->dir);
   struct wl_scenario s;
   struct wl_plan plan;
-  enum wl_status st = load_scenario(path, dp, &s, &plan, err);
+  enum wl_status st = load_scenario(path, dp, ctx, &s, &plan, err);
   if (st) {
     wl_scenario_clear(&s);
     return st;

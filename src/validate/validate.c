@@ -137,7 +137,8 @@ enum wl_status wl_validate_run(int i, const struct wl_validate_opts *opts,
     return wl_error_set(err, WL_EINPUT, "validate: --ladder %d: at most %d levels", n_levels,
                         WL_VALIDATE_MAX_LEVELS);
   struct wl_val_ctx ctx = {opts->reference_dir ? opts->reference_dir : WL_VALIDATE_REFERENCE_DIR,
-                           opts->threads, opts->quick};
+                           opts->threads, opts->quick, opts->verlet};
+  snprintf(r->integrator, sizeof r->integrator, "%s", opts->verlet ? "verlet" : "symplectic");
   const double dp0 = opts->quick ? c->dp0_quick : c->dp0;
   for (int l = 0; l < n_levels; l++) {
     struct wl_validate_level *lv = &r->lv[l];
