@@ -2,8 +2,9 @@
 # validate_parallel.sh: `wallload validate` cases side by side, each its own
 # process with one thread (the cases are small; one thread each fills a
 # many-core machine with no barrier overhead), for reference/RESULTS.md.
-#   [JOBS=N] bench/validate_parallel.sh BIN OUTDIR [LADDER] [CASE...]
-# JOBS: processes at once (default: the number of cores). Writes
+#   [JOBS=N] [INTEGRATOR=verlet] bench/validate_parallel.sh BIN OUTDIR [LADDER] [CASE...]
+# JOBS: processes at once (default: the number of cores); INTEGRATOR: the
+# time integrator of every run (validate --integrator; default symplectic). Writes
 # OUTDIR/<case>/validation.json|csv|pdf and OUTDIR/<case>.log;
 # bench/validate_table.py OUTDIR turns them into RESULTS.md's tables.
 # On the device machine: bench/assess_e2e.sh pack here, then run with carry
@@ -17,9 +18,10 @@ if [ $# -eq 0 ]; then
 fi
 one() {
   local a; a=$(date +%s)
-  "$bin" validate "$1" --ladder "$ladder" --threads 1 -o "$out/$1" >"$out/$1.log" 2>&1
+  "$bin" validate "$1" --ladder "$ladder" --threads 1 ${INTEGRATOR:+--integrator "$INTEGRATOR"} \
+    -o "$out/$1" >"$out/$1.log" 2>&1
   echo "== $1 rc=$? wall=$(( $(date +%s) - a )) s"
 }
 export -f one
-export bin out ladder
+export bin out ladder INTEGRATOR
 printf '%s\n' "$@" | xargs -P "${JOBS:-$(nproc)}" -I{} bash -c 'one {}'
