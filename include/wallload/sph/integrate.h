@@ -17,6 +17,8 @@
  * every verlet_steps-th step, so that the two interleaved solutions of the
  * leapfrog (even and odd steps) cannot drift apart, v and rho take an Euler
  * step instead: v^{n+1} = v^n + dt a^n, rho^{n+1} = rho^n + dt drho^n/dt.
+ * With a variable step the leapfrog spans 2 dt of the current step, as in
+ * DualSPHysics (exact while dt is constant; test_sph_integrate).
  * The previous step's v and rho live in vel_h and rho_h, which the cell
  * sort then carries with the state (the half-step arrays the symplectic
  * step needs are free in this scheme). Half the force evaluations of the

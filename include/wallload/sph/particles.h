@@ -34,8 +34,10 @@ struct wl_particles {
   unsigned char *body;          /* moving body 1..WL_SPH_BODIES_MAX, 0 otherwise */
   /* work arrays of one step: not sorted (rewritten each step), not output */
   double *pos_h[WL_SPH_DIM_MAX];  /* half-step (predictor) position [m] */
-  wl_real *vel_h[WL_SPH_DIM_MAX]; /* half-step velocity [m/s] */
-  wl_real *rho_h;                 /* half-step density [kg/m^3] */
+  wl_real *vel_h[WL_SPH_DIM_MAX]; /* half-step velocity [m/s]; Verlet: the previous step's
+                                     velocity, which the backend's sort carries along */
+  wl_real *rho_h;                 /* half-step density [kg/m^3]; Verlet: the previous
+                                     step's density (sorted along, as vel_h) */
   wl_real *press;                 /* pressure of the last force evaluation [Pa] */
   wl_real *ace[WL_SPH_DIM_MAX];   /* acceleration incl. gravity [m/s^2] */
   wl_real *ar;                    /* density rate d(rho)/dt [kg/m^3/s] */
