@@ -34,6 +34,8 @@ struct wl_sph_config {
 struct wl_sph_step_in {
   double t;   /* time at the step start [s] */
   double dt;  /* step [s] */
+  double dt_prev; /* the previous step [s] (0 before the first): the Verlet leapfrog spans
+                     dt_prev + dt */
   long step;  /* number of this step (0 = first) */
   /* velocity of each moving body over this step [m/s]; row 0 unused */
   double body_vel[WL_SPH_BODIES_MAX + 1][WL_SPH_DIM_MAX];

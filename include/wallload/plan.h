@@ -135,7 +135,7 @@ void wl_plan_default_numerics(struct wl_sph_params *prm);
  * particle; a symplectic step has two, a Verlet step one]; the measured
  * values are in BENCHMARKS.md: scenarios/seawall.yaml on the 2-core
  * development machine, 2 threads, 2026-11-24: 1.01e7 and 1.05e7 with the
- * symplectic integrator (solitary and explosion cases), 9.6e6 and 9.8e6
+ * symplectic integrator (solitary and explosion cases), 8.9e6 and 9.6e6
  * with Verlet (whose step is one evaluation plus the same sort). */
 #define WL_PLAN_CPU_RATE 9.0e6
 /* The same in 3D (about 100 neighbours per particle instead of 20, and a
@@ -147,8 +147,8 @@ void wl_plan_default_numerics(struct wl_sph_params *prm);
  * flume of 9k-38k particles took about 215 us whatever its size (launches
  * and the per-step synchronisation, not the force loop, set the time: the
  * seawall's cases ran 48k and 58k steps in 10.3 and 12.4 s, 2026-11-23); a
- * Verlet step (one force evaluation, no predictor) about 147 us (35.8k and
- * 94.3k steps in 5.3 and 13.8 s, 2026-11-24). Large runs go at the force
+ * Verlet step (one force evaluation, no predictor) about 150 us (35.8k and
+ * 94.3k steps in 5.6 and 13.5 s, 2026-11-24). Large runs go at the force
  * loop's rate, 2.16e9 force evaluations/s for the 2D dam break of 0.89M
  * particles and 3.56e8 for the 3D one of 1.03M (h = 1.41 and 1.73 dp). The
  * estimate takes the larger of the two times. */

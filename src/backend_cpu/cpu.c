@@ -373,7 +373,8 @@ static void guard(struct cpu *c, const struct wl_sph_step_in *in, struct wl_sph_
 #pragma omp parallel for schedule(static) num_threads(threads(c)) reduction(min : first)
   for (int i = 0; i < n; i++) {
     if (in && verlet)
-      wl_sph_verlet(dim, &c->k, p, in->dt, (const double(*)[WL_SPH_DIM_MAX])in->body_vel, euler, i);
+      wl_sph_verlet(dim, &c->k, p, in->dt, in->dt_prev,
+                    (const double(*)[WL_SPH_DIM_MAX])in->body_vel, euler, i);
     else if (in)
       wl_sph_correct(dim, &c->k, p, in->dt, (const double(*)[WL_SPH_DIM_MAX])in->body_vel, i);
     int w = -1;

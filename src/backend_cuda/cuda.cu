@@ -651,13 +651,13 @@ __global__ void k_predict(struct wl_sph_const kp, struct wl_particles p, double 
  * its Euler flag) and guard; the lowest faulty index. */
 template <int DIM>
 __global__ void k_correct_guard(struct wl_sph_const kp, struct wl_particles p, double dt,
-                                struct bodyvel bv, int n, int update, int euler,
+                                double dt_prev, struct bodyvel bv, int n, int update, int euler,
                                 const struct dmeta *m, struct dstats *st) {
   const int i = tid();
   if (i >= n) return;
   const struct wl_sph_const k = kp;
   if (update && k.integrator == WL_SPH_VERLET)
-    wl_sph_verlet(DIM, &k, &p, dt, (const double(*)[WL_SPH_DIM_MAX])bv.v, euler, i);
+    wl_sph_verlet(DIM, &k, &p, dt, dt_prev, (const double(*)[WL_SPH_DIM_MAX])bv.v, euler, i);
   else if (update)
     wl_sph_correct(DIM, &k, &p, dt, (const double(*)[WL_SPH_DIM_MAX])bv.v, i);
   int w = -1;
@@ -852,14 +852,14 @@ static enum wl_status finish(struct gpu *c, const struct wl_sph_step_in *in,
                              struct wl_error *err) {
   const struct wl_particles p = view(c);
   const int n = c->n;
-  const double dt = in ? in->dt : 0.0;
+  const double dt = in ? in->dt : 0.0, dt_prev = in ? in->dt_prev : 0.0;
   const int euler = in && c->k.integrator == WL_SPH_VERLET && wl_sph_verlet_euler(&c->k, in->step);
   if (c->dim == 3) {
-    k_correct_guard<3><<<blocks(n), THREADS, 0, c->stream>>>(c->k, p, dt, *bv, n, in != NULL, euler, c->meta, c->stats);
+    k_correct_guard<3><<<blocks(n), THREADS, 0, c->stream>>>(c->k, p, dt, dt_prev, *bv, n, in != NULL, euler, c->meta, c->stats);
     CKL("correct");
     k_fault<3><<<1, 1, 0, c->stream>>>(c->k, p, n, c->meta, c->stats);
   } else {
-    k_correct_guard<2><<<blocks(n), THREADS, 0, c->stream>>>(c->k, p, dt, *bv, n, in != NULL, euler, c->meta, c->stats);
+    k_correct_guard<2><<<blocks(n), THREADS, 0, c->stream>>>(c->k, p, dt, dt_prev, *bv, n, in != NULL, euler, c->meta, c->stats);
     CKL("correct");
     k_fault<2><<<1, 1, 0, c->stream>>>(c->k, p, n, c->meta, c->stats);
   }

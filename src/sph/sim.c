@@ -27,6 +27,7 @@ struct wl_sph_sim {
   double t;
   long steps;
   double dt_next;           /* from the last force evaluations [s] */
+  double dt_last;           /* the last step taken [s] (0 before the first) */
   double dt_initial;        /* the first CFL step, reference for the dt-collapse guard */
   struct wl_sph_step_out last;
   struct body_motion motion[WL_SPH_BODIES_MAX + 1];
@@ -203,6 +204,7 @@ enum wl_status wl_sph_sim_step(struct wl_sph_sim *sim, double dt_max, struct wl_
   memset(&in, 0, sizeof in);
   in.t = sim->t;
   in.dt = dt_max > 0 && dt_max < dt_cfl ? dt_max : dt_cfl;
+  in.dt_prev = sim->dt_last;
   in.step = sim->steps;
   for (int b = 1; b <= WL_SPH_BODIES_MAX; b++)
     if (sim->motion[b].type != WL_SPH_MOTION_NONE)
@@ -216,6 +218,7 @@ enum wl_status wl_sph_sim_step(struct wl_sph_sim *sim, double dt_max, struct wl_
     return st;
   }
   sim->t += in.dt;
+  sim->dt_last = in.dt;
   sim->steps++;
   sim->last = out;
   sim->dt_next = out.dt_next;

@@ -12,13 +12,16 @@
  *
  * Verlet (Verlet 1967 in DualSPHysics' form, Dominguez et al. 2022 eqs.
  * 15-17), one force evaluation a step (F^n at the step start):
- *   v^{n+1} = v^{n-1} + 2 dt a^n,  rho^{n+1} = rho^{n-1} + 2 dt drho^n/dt,
- *   r^{n+1} = r^n + dt v^n + dt^2/2 a^n;
+ *   v^{n+1} = v^{n-1} + (dt' + dt) a^n,  rho^{n+1} = rho^{n-1} + (dt' + dt) drho^n/dt,
+ *   r^{n+1} = r^n + dt v^n + dt^2/2 a^n,
+ * dt' the previous step (2 dt in DualSPHysics, whose steps are not cut to
+ * land on output times; here a step before an output can be much shorter
+ * than the one after it, and 2 dt would then kick the velocity by a whole
+ * step's acceleration too much or too little: exact for a constant
+ * acceleration either way, test_sph_integrate);
  * every verlet_steps-th step, so that the two interleaved solutions of the
  * leapfrog (even and odd steps) cannot drift apart, v and rho take an Euler
  * step instead: v^{n+1} = v^n + dt a^n, rho^{n+1} = rho^n + dt drho^n/dt.
- * With a variable step the leapfrog spans 2 dt of the current step, as in
- * DualSPHysics (exact while dt is constant; test_sph_integrate).
  * The previous step's v and rho live in vel_h and rho_h, which the cell
  * sort then carries with the state (the half-step arrays the symplectic
  * step needs are free in this scheme). Half the force evaluations of the
@@ -130,14 +133,14 @@ WL_HD static WL_INLINE int wl_sph_verlet_euler(const struct wl_sph_const *k, lon
 
 /* Verlet step for particle i: reads the state, the previous step's v and
  * rho (vel_h, rho_h) and the forces at the step start; writes the new
- * state and keeps the current v and rho as the previous ones. euler != 0:
- * the Euler step that re-couples the leapfrog's even and odd steps.
- * body_vel as in wl_sph_predict. */
+ * state and keeps the current v and rho as the previous ones. dt_prev: the
+ * previous step. euler != 0: the Euler step that re-couples the leapfrog's
+ * even and odd steps. body_vel as in wl_sph_predict. */
 WL_HD static WL_INLINE void wl_sph_verlet(const int dim, const struct wl_sph_const *k,
-                                          const struct wl_particles *p, double dt,
+                                          const struct wl_particles *p, double dt, double dt_prev,
                                           const double (*body_vel)[WL_SPH_DIM_MAX], int euler,
                                           int i) {
-  const wl_real span = (wl_real)(euler ? dt : 2.0 * dt);
+  const wl_real span = (wl_real)(euler ? dt : dt_prev + dt);
   const wl_real rho_n = p->rho[i];
   const wl_real rho = (euler ? rho_n : p->rho_h[i]) + span * p->ar[i];
   p->rho_h[i] = rho_n;
