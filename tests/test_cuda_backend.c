@@ -11,11 +11,12 @@
  *
  * Why the backends are not bit-identical. They evaluate the same shared
  * functions on the same sorted order (both sorts are stable by the same
- * keys) and the same correctly rounded square root (sph/defs.h; until
- * 2026-11-24 the CPU's was a Newton iteration within a few ulp), but nvcc
- * contracts a*b + c into fused multiply-adds (one rounding instead of
- * two) and the CPU build is ISO C without contraction. That is float
- * rounding (relative 6e-8 per operation). A force is a sum
+ * keys), but
+ *  - the square root differs: the CPU uses a Newton iteration (sph/defs.h,
+ *    within a few ulp), the GPU the hardware sqrt (correctly rounded);
+ *  - nvcc contracts a*b + c into fused multiply-adds (one rounding instead
+ *    of two); the CPU build is ISO C without contraction.
+ * Both are float rounding (relative 6e-8 per operation). A force is a sum
  * of 20 (2D) to 150 (3D) pair terms and the Tait pressure raises density
  * differences to the 7th power, so a force evaluation differs by about
  * 1e-6 relative; a dam break is chaotic (free surface, impacts), so the
