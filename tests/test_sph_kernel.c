@@ -75,8 +75,7 @@ int main(void) {
     CHECK_TRUE(wl_sph_kernel_f(&k, 0) * 0 == 0, "gradient factor finite at r = 0");
   }
 
-  /* the square root is correctly rounded (IEEE sqrt, sph/defs.h): within
-   * half an ulp of the double sqrt over [1e-12, 1e4] */
+  /* branch-free square root: within 4 ulp of sqrt over [1e-12, 1e4] */
   double worst_ulp = 0;
   for (int i = 0; i <= 100000; i++) {
     const float x = (float)pow(10.0, -12.0 + 16.0 * i / 100000.0);
@@ -85,7 +84,7 @@ int main(void) {
     const double e = fabs((double)wl_sph_sqrt(x) - exact) / ulp;
     if (e > worst_ulp) worst_ulp = e;
   }
-  CHECK_ABS(worst_ulp, 0, 0.5, "wl_sph_sqrt vs double sqrt, in float ulp (correctly rounded)");
+  CHECK_ABS(worst_ulp, 0, 4, "wl_sph_sqrt vs double sqrt, in float ulp");
   CHECK_TRUE(wl_sph_sqrt(0) == 0, "wl_sph_sqrt(0) = 0");
   CHECK_TRUE(wl_sph_pos(-3.5f) == 0 && wl_sph_pos(2.25f) == 2.25f && wl_sph_neg(-3.5f) == -3.5f &&
                  wl_sph_neg(2.25f) == 0,

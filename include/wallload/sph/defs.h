@@ -63,23 +63,34 @@ typedef float wl_real;
 #define WL_SIMD(...)
 #endif
 
-/* Square root, correctly rounded on host and device alike (IEEE sqrt), so
- * the CPU and CUDA backends take the same r for a pair. On the host the
- * build compiles C with -fno-math-errno (CMakeLists.txt; it changes no
- * result: sqrt of a negative would still give NaN, it only no longer sets
- * errno), without which GCC will not vectorise a loop that calls sqrtf;
- * with it the force loop's lanes take vsqrtps. That replaced a
- * branch-free Newton iteration (within 4 ulp) on 2026-11-24: 6.2e6 to
- * 8.0e6 force evaluations/s on one thread of the 2-core machine
- * (BENCHMARKS.md). test_sph_kernel checks the correct rounding. x must be
- * >= 0 and finite. */
+/* Square root. On the host it is a Newton-Raphson iteration, not sqrtf:
+ * under the project's strict IEEE flags (errno-setting math, trapping math)
+ * GCC will not vectorise a loop that calls sqrtf, and the neighbour loop is
+ * where the run time goes. Seed: the bit-level estimate of 1/sqrt(x) with
+ * Lomont's constant (relative error < 3.5e-2), then three Newton steps
+ * y <- y (3 - x y^2)/2, each squaring the relative error (3.5e-2 -> 1.8e-3
+ * -> 4.7e-6 -> 3e-11), so only float rounding is left: within a few ulp of the
+ * correctly rounded sqrt (test_sph_kernel checks 4 ulp over [1e-12, 1e4]).
+ * x = 0 gives 0; x must be >= 0 and finite. nvcc uses sqrtf (one
+ * instruction there), so CPU and GPU agree to a few ulp in r. */
 WL_HD static WL_INLINE wl_real wl_sph_sqrt(wl_real x) {
 #if defined(__CUDACC__)
   return sqrt(x);
 #elif WL_REAL_DOUBLE
   return __builtin_sqrt(x);
 #else
-  return __builtin_sqrtf(x);
+  union {
+    float f;
+    unsigned int u;
+  } b;
+  b.f = x;
+  b.u = 0x5f375a86u - (b.u >> 1);
+  float y = b.f;
+  const float hx = 0.5f * x;
+  y = y * (1.5f - hx * y * y);
+  y = y * (1.5f - hx * y * y);
+  y = y * (1.5f - hx * y * y);
+  return x * y;
 #endif
 }
 
