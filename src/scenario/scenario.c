@@ -516,6 +516,10 @@ static enum wl_status check_rules(struct ctx *c, struct wl_scenario *s) {
                       "a quadratic crater without lip has no lip form; remove lip_form or use "
                       "shape: quadratic-lip or quartic-lip");
   }
+  if (s->numerics.verlet_steps.given && s->numerics.integrator.choice != WL_INTEGRATOR_VERLET)
+    return at_value(c, &s->numerics.verlet_steps, "numerics.verlet_steps",
+                    "applies to the Verlet integrator only; add integrator: verlet or remove "
+                    "verlet_steps");
   for (int i = 0; i < s->resolution.n_levels; i++) {
     char key[64];
     snprintf(key, sizeof key, "resolution.convergence[%d]", i);
