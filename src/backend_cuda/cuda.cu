@@ -71,7 +71,7 @@ extern "C" {
 enum { THREADS = 128 };
 
 /* Force loops (see the file header). */
-enum { MODE_REF = 0, MODE_FAST = 1, MODE_TILE = 2 };
+enum { MODE_REF = 0, MODE_FAST = 1, MODE_TILE = 2, MODE_SPLIT = 3 };
 
 /* ---- error checking ----------------------------------------------------- */
 
@@ -620,6 +620,358 @@ __global__ void __launch_bounds__(THREADS, WL_TILE_MIN_BLOCKS)
   block_max3(a2, v2, vmax, st);
 }
 
+/* The split force loop. Like the tile loop, a warp walks the candidate
+ * rows of each segment TILE at a time, staged in shared memory, and every
+ * thread of the segment marks the candidates inside its support. The tile
+ * loop then has each thread evaluate its own marks, so the warp runs as
+ * long as its busiest thread; within one row the marks are very uneven
+ * (the particles at the top of a cell have the row above in reach, those
+ * at the bottom hardly any of it): ncu found 10.5 of 32 lanes busy in its
+ * pair evaluations. Here the batch's marked pairs, listed particle by
+ * particle in lane order (particle l's pairs at positions excl_l ..
+ * excl_l + count_l - 1, ascending candidate), are split into 32 equal
+ * blocks of consecutive positions, one per lane. A lane evaluates its block
+ * in order, summing the pairs of each particle it meets into a partial sum
+ * (a run), and writes each run to shared memory; then each particle's
+ * owner adds its runs in list order. So every lane does the same work, and
+ * every particle still adds its terms in ascending j, grouped in runs of
+ * consecutive terms: the association differs from the reference loop (by
+ * float rounding), not the terms. The result depends only on the particle
+ * data and order, not on timing (no atomics).
+ *
+ * Positions enter the pair terms as float offsets from the segment's
+ * origin (a particle of the segment), as DualSPHysics does relative to its
+ * cells: the segment and its rows span a few cells, so an offset is within
+ * ~15 h and exact to ~1e-6 h, against ~1e-7 of dx for the double
+ * difference of the other loops; float arithmetic in the pair terms
+ * rounds at the same level. It halves the staged bytes, so more warps fit
+ * an SM, which this latency-bound loop needs. */
+/* Resident blocks per multiprocessor the split loop is compiled for. */
+#ifndef WL_SPLIT_MIN_BLOCKS
+#define WL_SPLIT_MIN_BLOCKS 8
+#endif
+/* Run slots: 0..31 a particle's first run in the batch, 32 + t the run
+ * that starts at lane t's first position inside a particle's pairs. */
+enum { SPLIT_RUNS = 64 };
+struct split_warp {
+  float4 cr[TILE]; /* candidates: offset from the segment's origin, rho */
+  float4 cv[TILE]; /* velocity, pressure */
+  float2 cj[TILE]; /* wl_sph_pair_j: 1/rho, m/rho */
+  float4 sr[32];   /* the warp's own particles, as cr and cv, and 1/rho */
+  float4 sv[32];
+  wl_real sinv[32];
+  unsigned long long mask[32];
+  int excl[32];
+  /* a[3], cont, ddt, visc of each run; visc < 0: no pair of the run
+   * inside the support (the DDT2 switch's "any boundary neighbour") */
+  wl_real run[6][SPLIT_RUNS];
+};
+
+/* Marks of the 32 staged candidates cr[0..31] inside (2h)^2 (1 + 1e-4) of
+ * self (float offsets from the segment's origin), bit s for cr[s]; the
+ * caller masks off the slots beyond the batch. Unrolled, so each bit
+ * position is a constant and the loop has no branch. */
+template <int DIM>
+static __device__ __forceinline__ unsigned split_marks32(const float4 *cr, float4 self,
+                                                         float skip2) {
+  unsigned m = 0;
+#pragma unroll
+  for (int s = 0; s < 32; s++) {
+    const float4 c = cr[s];
+    const float dx = self.x - c.x, dy = DIM == 3 ? self.y - c.y : 0.f, dz = self.z - c.z;
+    m |= (dx * dx + dy * dy + dz * dz < skip2) ? (1u << s) : 0u;
+  }
+  return m;
+}
+
+/* Add pair (particle ri, vi, inv_rho_i; staged candidate s) to acc: the
+ * body of tile_pairs, from float offsets. */
+template <int DIM, int LAM, int WANT_ACE, int WITH_DDT>
+static __device__ __forceinline__ void split_pair(const struct wl_sph_const *k,
+                                                  const struct split_warp *w, int s, float4 ri,
+                                                  float4 vi, wl_real inv_rho_i, wl_real av,
+                                                  wl_real lam, struct acc1 *acc) {
+  const float4 rj = w->cr[s], vj = w->cv[s];
+  const float2 pj = w->cj[s];
+  const wl_real dx = ri.x - rj.x;
+  const wl_real dy = DIM == 3 ? ri.y - rj.y : WL_R(0.0);
+  const wl_real dz = ri.z - rj.z;
+  const wl_real ux = vi.x - vj.x;
+  const wl_real uy = DIM == 3 ? vi.y - vj.y : WL_R(0.0);
+  const wl_real uz = vi.z - vj.z;
+  const wl_real r2 = dx * dx + dy * dy + dz * dz;
+  const wl_real rv = dx * ux + dy * uy + dz * uz;
+  const struct wl_sph_pair o = wl_sph_pair_eval(LAM, WITH_DDT, k, r2, rv, dz, ri.w, inv_rho_i, vi.w,
+                                                rj.w, pj.x, pj.y, vj.w, av, lam);
+  if (WANT_ACE) {
+    acc->a[0] += o.c_r * dx + (LAM ? o.c_v * ux : WL_R(0.0));
+    if (DIM == 3) acc->a[1] += o.c_r * dy + (LAM ? o.c_v * uy : WL_R(0.0));
+    acc->a[2] += o.c_r * dz + (LAM ? o.c_v * uz : WL_R(0.0));
+  }
+  acc->cont += o.cont;
+  if (WITH_DDT) acc->ddt += o.ddt;
+  acc->wsum += o.wq;
+  acc->visc = wl_sph_max_nonneg(acc->visc, o.visc);
+}
+
+static __device__ __forceinline__ void split_store(struct split_warp *w, int slot,
+                                                   const struct acc1 *r) {
+  for (int c = 0; c < 3; c++) w->run[c][slot] = r->a[c];
+  w->run[3][slot] = r->cont;
+  w->run[4][slot] = r->ddt;
+  w->run[5][slot] = r->wsum > 0 ? r->visc : WL_R(-1.0);
+}
+
+static __device__ __forceinline__ void split_add(const struct split_warp *w, int slot,
+                                                 struct acc1 *acc) {
+  for (int c = 0; c < 3; c++) acc->a[c] += w->run[c][slot];
+  acc->cont += w->run[3][slot];
+  acc->ddt += w->run[4][slot];
+  const wl_real v = w->run[5][slot];
+  if (v >= 0) acc->wsum = WL_R(1.0);
+  acc->visc = wl_sph_max_nonneg(acc->visc, v);
+}
+
+/* One batch: the marks m of each lane (count mc, list positions excl ..,
+ * total for the warp) are evaluated in 32 equal blocks and the runs added
+ * to each owner's acc. */
+template <int DIM, int LAM, int WANT_ACE, int WITH_DDT>
+static __device__ __forceinline__ void split_batch(const struct wl_sph_const *k,
+                                                   struct split_warp *w, int lane,
+                                                   unsigned long long m, int mc, int excl,
+                                                   int total, wl_real av, wl_real lam,
+                                                   struct acc1 *acc) {
+  w->mask[lane] = m;
+  w->excl[lane] = excl;
+  const unsigned with_marks = __ballot_sync(0xffffffffu, mc > 0);
+  __syncwarp();
+  const int q0 = (lane * total) >> 5, q1 = ((lane + 1) * total) >> 5;
+  if (q0 < q1) {
+    /* the particle whose pairs hold position q0: the last lane l with
+     * excl[l] <= q0 (a lane without marks shares its excl with the next) */
+    int l = 0;
+    for (int step = 16; step; step >>= 1)
+      if (l + step < 32 && w->excl[l + step] <= q0) l += step;
+    unsigned long long mm = w->mask[l];
+    int skip = q0 - w->excl[l];
+    const int low = __popc((unsigned)mm);
+    if (skip >= low) {
+      mm &= 0xffffffff00000000ull;
+      skip -= low;
+    }
+    for (; skip > 0; skip--) mm &= mm - 1;
+    int slot = q0 == w->excl[l] ? l : 32 + lane;
+    float4 ri = w->sr[l], vi = w->sv[l];
+    wl_real inv_rho_i = w->sinv[l];
+    struct acc1 r = {{0, 0, 0}, 0, 0, 0, 0};
+    for (int q = q0; q < q1; q++) {
+      if (!mm) { /* this particle's pairs are done: the next one's */
+        split_store(w, slot, &r);
+        r = acc1{{0, 0, 0}, 0, 0, 0, 0};
+        l = __ffs(with_marks & (0xfffffffeu << l)) - 1; /* next lane with marks */
+        mm = w->mask[l];
+        slot = l;
+        ri = w->sr[l];
+        vi = w->sv[l];
+        inv_rho_i = w->sinv[l];
+      }
+      const int s = __ffsll((long long)mm) - 1;
+      mm &= mm - 1;
+      split_pair<DIM, LAM, WANT_ACE, WITH_DDT>(k, w, s, ri, vi, inv_rho_i, av, lam, &r);
+    }
+    split_store(w, slot, &r);
+  }
+  __syncwarp();
+  if (mc) {
+    /* my runs in list order: my first, then those starting at the blocks
+     * that begin inside my positions (a block's start q0 = t total / 32;
+     * only a non-empty block wrote one) */
+    split_add(w, lane, acc);
+    const int incl = excl + mc;
+    for (int t = (excl * 32) / total + 1; t < 32; t++) {
+      const int b = (t * total) >> 5;
+      if (b >= incl) break;
+      if (b > excl && ((t + 1) * total) >> 5 > b) split_add(w, 32 + t, acc);
+    }
+  }
+}
+
+/* One batch of `fill` staged candidates of group grp: the marks of the
+ * segment's lanes, their list positions, and split_batch into f or b. */
+template <int DIM, int LAM>
+static __device__ __forceinline__ void split_group(const struct wl_sph_const *k,
+                                                   struct split_warp *w, int lane, bool in_seg,
+                                                   float4 self, int fill, float skip2, int grp,
+                                                   int seg_fluid, struct acc1 *f,
+                                                   struct acc1 *b) {
+  __syncwarp();
+  unsigned long long m = 0;
+  if (in_seg) {
+    m = split_marks32<DIM>(w->cr, self, skip2);
+    if (fill > 32) m |= (unsigned long long)split_marks32<DIM>(w->cr + 32, self, skip2) << 32;
+    if (fill < 64) m &= (1ull << fill) - 1ull;
+  }
+  /* list positions: exclusive scan of the mark counts over lanes */
+  const int mc = __popcll(m);
+  int incl = mc;
+  for (int o = 1; o < 32; o <<= 1) {
+    const int v = __shfl_up_sync(0xffffffffu, incl, o);
+    if (lane >= o) incl += v;
+  }
+  const int total = __shfl_sync(0xffffffffu, incl, 31);
+  if (total) {
+    if (grp == 1 && seg_fluid)
+      split_batch<DIM, LAM, 1, 1>(k, w, lane, m, mc, incl - mc, total, k->av_ff, k->lam_ff, f);
+    else if (grp == 1)
+      split_batch<DIM, LAM, 0, 0>(k, w, lane, m, mc, incl - mc, total, k->av_fb, k->lam_fb, f);
+    else
+      split_batch<DIM, LAM, 1, 0>(k, w, lane, m, mc, incl - mc, total, k->av_fb, k->lam_fb, b);
+  }
+  __syncwarp(); /* the staging area is reused */
+}
+
+template <int DIM, int LAM>
+__global__ void __launch_bounds__(THREADS, WL_SPLIT_MIN_BLOCKS)
+    k_gather_split(const struct wl_sph_const kp, const struct wl_sph_grid gp,
+                   const struct wl_sph_eval ep, int n, int nb, float skip2, wl_real r2_skip,
+                   struct dstats *st) {
+  __shared__ struct split_warp warps[THREADS / 32];
+  const struct wl_sph_const k = kp;
+  const struct wl_sph_grid g = gp;
+  const struct wl_sph_eval e = ep;
+  const int i = tid(), lane = threadIdx.x & 31;
+  struct split_warp *const w = warps + (threadIdx.x >> 5);
+  const int nc = g.n_cells, nx = g.n[0], az = DIM - 1;
+  const bool active = i < n;
+  int fluid = 0, cx = 0, rest = 0;
+  /* the particle's state stays in shared memory (sr, sv, sinv) during the
+   * neighbour walk and is read again at the end: registers are what limits
+   * the warps per SM */
+  if (active) {
+    fluid = i >= nb;
+    const int cell = (int)e.key[i] - (fluid ? nc : 0);
+    cx = cell % nx;
+    rest = cell / nx;
+    const wl_real rho = e.rho[i];
+    w->sv[lane] = make_float4(e.vel[0][i], DIM == 3 ? e.vel[1][i] : WL_R(0.0), e.vel[az][i],
+                              e.press[i]);
+    w->sinv[lane] = WL_R(1.0) / rho;
+    w->sr[lane].w = rho;
+  } else {
+    w->sv[lane] = make_float4(0.f, 0.f, 0.f, 0.f);
+    w->sinv[lane] = WL_R(1.0);
+    w->sr[lane].w = WL_R(1.0);
+  }
+  struct acc1 f = {{0, 0, 0}, 0, 0, 0, 0};
+  struct acc1 b = f;
+  const unsigned seg_id = ((unsigned)fluid << 31) | (unsigned)rest;
+  unsigned pending = __ballot_sync(0xffffffffu, active);
+  while (pending) {
+    const int leader = __ffs((int)pending) - 1;
+    const unsigned lead_id = __shfl_sync(0xffffffffu, seg_id, leader);
+    const bool in_seg = ((pending >> lane) & 1u) && seg_id == lead_id;
+    pending &= ~__ballot_sync(0xffffffffu, in_seg);
+    const int x0 = wl_sph_maxi(__reduce_min_sync(0xffffffffu, in_seg ? cx : 0x7fffffff) - 1, 0);
+    const int x1 = wl_sph_mini(__reduce_max_sync(0xffffffffu, in_seg ? cx : -1) + 1, nx - 1);
+    const int il = active ? i : n - 1;
+    const double x = e.pos[0][il], y = DIM == 3 ? e.pos[1][il] : 0.0, z = e.pos[az][il];
+    const double o0 = __shfl_sync(0xffffffffu, x, leader);
+    const double o1 = __shfl_sync(0xffffffffu, y, leader);
+    const double o2 = __shfl_sync(0xffffffffu, z, leader);
+    /* every lane's offset from this segment's origin (lanes of other
+     * segments are never paired in it) */
+    const float4 self = make_float4((float)(x - o0), (float)(y - o1), (float)(z - o2),
+                                    w->sr[lane].w);
+    w->sr[lane] = self;
+    const int seg_fluid = (int)(lead_id >> 31);
+    const int seg_rest = (int)(lead_id & 0x7fffffffu);
+    const int iy = DIM == 3 ? seg_rest % g.n[1] : 0, iz = DIM == 3 ? seg_rest / g.n[1] : seg_rest;
+    const int nz = DIM == 3 ? g.n[2] : g.n[1];
+    /* the segment's bounding box (float offsets), for the staging filter */
+    float4 blo = in_seg ? self : make_float4(3e38f, 3e38f, 3e38f, 0.f);
+    float4 bhi = in_seg ? self : make_float4(-3e38f, -3e38f, -3e38f, 0.f);
+    for (int o = 16; o; o >>= 1) {
+      blo.x = fminf(blo.x, __shfl_xor_sync(0xffffffffu, blo.x, o));
+      blo.y = fminf(blo.y, __shfl_xor_sync(0xffffffffu, blo.y, o));
+      blo.z = fminf(blo.z, __shfl_xor_sync(0xffffffffu, blo.z, o));
+      bhi.x = fmaxf(bhi.x, __shfl_xor_sync(0xffffffffu, bhi.x, o));
+      bhi.y = fmaxf(bhi.y, __shfl_xor_sync(0xffffffffu, bhi.y, o));
+      bhi.z = fmaxf(bhi.z, __shfl_xor_sync(0xffffffffu, bhi.z, o));
+    }
+    for (int grp = 1; grp >= (seg_fluid ? 0 : 1); grp--) {
+      const int *const bg = e.begin + (grp ? nc : 0);
+      int fill = 0; /* candidates staged for the next batch */
+      for (int row = 0; row < (DIM == 3 ? 9 : 3); row++) {
+        const int dz = DIM == 3 ? row / 3 - 1 : row - 1, dy = DIM == 3 ? row % 3 - 1 : 0;
+        const int jz = iz + dz, jy = iy + dy;
+        const bool row_ok =
+            jz >= 0 && jz < nz && (DIM != 3 || (jy >= 0 && jy < g.n[1]));
+        const int base = DIM == 3 ? (jz * g.n[1] + jy) * nx : jz * nx;
+        const int j0 = row_ok ? bg[base + x0] : 0, j1 = row_ok ? bg[base + x1 + 1] : 0;
+        /* the row's candidates, 32 at a time: those within 2h of the
+         * segment's box are staged in order (a candidate out of it is out
+         * of every segment particle's support) */
+        for (int c0 = j0; c0 < j1; c0 += 32) {
+          const int j = c0 + lane;
+          bool keep = false;
+          float4 cr = make_float4(0.f, 0.f, 0.f, 0.f);
+          if (j < j1) {
+            cr.x = (float)(e.pos[0][j] - o0);
+            cr.y = DIM == 3 ? (float)(e.pos[1][j] - o1) : 0.f;
+            cr.z = (float)(e.pos[az][j] - o2);
+            const float ex = fmaxf(fmaxf(blo.x - cr.x, cr.x - bhi.x), 0.f);
+            const float ey = DIM == 3 ? fmaxf(fmaxf(blo.y - cr.y, cr.y - bhi.y), 0.f) : 0.f;
+            const float ez = fmaxf(fmaxf(blo.z - cr.z, cr.z - bhi.z), 0.f);
+            keep = ex * ex + ey * ey + ez * ez < skip2;
+          }
+          const unsigned kept = __ballot_sync(0xffffffffu, keep);
+          if (keep) {
+            const int slot = fill + __popc(kept & ((1u << lane) - 1u));
+            const wl_real rho_j = e.rho[j];
+            cr.w = rho_j;
+            w->cr[slot] = cr;
+            w->cv[slot] = make_float4(e.vel[0][j], DIM == 3 ? e.vel[1][j] : WL_R(0.0),
+                                      e.vel[az][j], e.press[j]);
+            wl_real inv_rho_j, vol_j;
+            wl_sph_pair_j(&k, rho_j, &inv_rho_j, &vol_j);
+            w->cj[slot] = make_float2(inv_rho_j, vol_j);
+          }
+          fill += __popc(kept);
+          if (fill > TILE - 32) { /* the next 32 might not fit: evaluate */
+            split_group<DIM, LAM>(&k, w, lane, in_seg, self, fill, skip2, grp, seg_fluid, &f, &b);
+            fill = 0;
+          }
+        }
+      }
+      if (fill)
+        split_group<DIM, LAM>(&k, w, lane, in_seg, self, fill, skip2, grp, seg_fluid, &f, &b);
+    }
+  }
+  double a2 = 0, v2 = 0, vmax = 0;
+  if (active) {
+    const double xi[3] = {e.pos[0][i], DIM == 3 ? e.pos[1][i] : 0.0, e.pos[az][i]};
+    const float4 sv = w->sv[lane];
+    const wl_real vi[3] = {sv.x, sv.y, sv.z}, rho_i = w->sr[lane].w, inv_rho_i = w->sinv[lane];
+    /* the mirror planes' rows, per thread, as the tile loop */
+    mirror_fast<DIM, LAM>(&k, &g, &e, cx + nx * rest, fluid, xi, vi, rho_i, inv_rho_i, sv.w,
+                          r2_skip, &f, &b);
+    if (fluid) {
+      const wl_real ddt = (k.ddt == WL_SPH_DDT_FOURTAKAS && b.wsum > 0) ? WL_R(0.0) : f.ddt;
+      e.ace[0][i] = f.a[0] + b.a[0] + k.gravity[0];
+      if (DIM == 3) e.ace[1][i] = f.a[1] + b.a[1] + k.gravity[1];
+      e.ace[DIM - 1][i] = f.a[2] + b.a[2] + k.gravity[DIM - 1];
+      e.ar[i] = rho_i * (f.cont + b.cont) + ddt;
+      e.visc[i] = k.h * wl_sph_max_nonneg(f.visc, b.visc);
+    } else {
+      for (int a = 0; a < DIM; a++) e.ace[a][i] = 0;
+      e.ar[i] = rho_i * f.cont;
+      e.visc[i] = k.h * f.visc;
+    }
+    particle_max<DIM>(&e, i, nb, &a2, &v2, &vmax);
+  }
+  block_max3(a2, v2, vmax, st);
+}
+
 /* Predictor (sph/integrate.h) and the pressure of the half-step density. */
 /* Particle shifting of the step (sph/shift.h), one thread per fluid
  * particle, from the sorted step-start state. */
@@ -830,6 +1182,12 @@ static enum wl_status evaluate(struct gpu *c, double *const *pos, wl_real *const
     else if (c->dim == 3) k_gather_tile<3, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, skip2, r2_skip, c->stats);
     else if (!lam) k_gather_tile<2, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, skip2, r2_skip, c->stats);
     else k_gather_tile<2, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, skip2, r2_skip, c->stats);
+  } else if (c->mode == MODE_SPLIT) {
+    const float skip2 = (float)(4.0 * c->k.h_d * c->k.h_d * 1.0001);
+    if (c->dim == 3 && !lam) k_gather_split<3, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, skip2, r2_skip, c->stats);
+    else if (c->dim == 3) k_gather_split<3, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, skip2, r2_skip, c->stats);
+    else if (!lam) k_gather_split<2, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, skip2, r2_skip, c->stats);
+    else k_gather_split<2, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, skip2, r2_skip, c->stats);
   } else if (c->mode == MODE_FAST) {
     if (c->dim == 3 && !lam) k_gather_fast<3, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, r2_skip, c->stats);
     else if (c->dim == 3) k_gather_fast<3, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, r2_skip, c->stats);
@@ -940,6 +1298,7 @@ static void cuda_describe(void *ctx, char *buf, size_t size) {
            "%.1f MiB on the device, %.0f B/particle)",
            c->dev.name, c->dev.sm_major, c->dev.sm_minor, c->dev.n_sm,
            c->mode == MODE_TILE   ? "tile (warp-shared candidates, per-thread masks)"
+           : c->mode == MODE_SPLIT ? "split (warp-shared candidates, pairs split evenly over the lanes)"
            : c->mode == MODE_FAST ? "fast (cut-off skip)"
                                   : "reference (wl_sph_gather)",
            c->k.integrator == WL_SPH_VERLET ? "Verlet steps" : "symplectic steps", c->grid.n_cells,
@@ -1032,16 +1391,18 @@ static enum wl_status cuda_init(void **ctx, const struct wl_sph_config *cfg,
   c->n = host->n;
   c->nb = host->n_bound;
   const char *mode = getenv("WL_CUDA_GATHER");
-  if (mode && strcmp(mode, "tile") && strcmp(mode, "fast") && strcmp(mode, "ref")) {
+  if (mode && strcmp(mode, "tile") && strcmp(mode, "fast") && strcmp(mode, "ref") &&
+      strcmp(mode, "split")) {
     cuda_free(c);
-    return wl_error_set(err, WL_EINPUT, "cuda backend: WL_CUDA_GATHER=%s; valid: tile (default), "
+    return wl_error_set(err, WL_EINPUT, "cuda backend: WL_CUDA_GATHER=%s; valid: tile (default), split, "
                         "fast, ref", mode);
   }
   /* default: tile in 3D; fast in 2D, where a cell holds ~8 particles and a
    * warp's rows are too short for staging to pay (measured on the H100,
    * BENCHMARKS.md) */
-  c->mode = !mode ? (dim == 3 ? MODE_TILE : MODE_FAST)
+  c->mode = !mode ? (dim == 3 ? MODE_SPLIT : MODE_FAST)
             : !strcmp(mode, "tile") ? MODE_TILE
+            : !strcmp(mode, "split") ? MODE_SPLIT
             : !strcmp(mode, "fast") ? MODE_FAST
                                     : MODE_REF;
   if ((st = wl_sph_grid_make(cfg, k, &c->grid, err))) {
