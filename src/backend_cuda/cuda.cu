@@ -752,31 +752,41 @@ static __device__ __forceinline__ void split_batch(const struct wl_sph_const *k,
     int l = 0;
     for (int step = 16; step; step >>= 1)
       if (l + step < 32 && w->excl[l + step] <= q0) l += step;
+    /* the particle's marks as two 32-bit halves (cheaper bit scans), less
+     * those before q0 */
     unsigned long long mm = w->mask[l];
+    unsigned mlo = (unsigned)mm, mhi = (unsigned)(mm >> 32);
     int skip = q0 - w->excl[l];
-    const int low = __popc((unsigned)mm);
-    if (skip >= low) {
-      mm &= 0xffffffff00000000ull;
-      skip -= low;
+    if (skip >= __popc(mlo)) {
+      skip -= __popc(mlo);
+      mlo = 0;
     }
-    for (; skip > 0; skip--) mm &= mm - 1;
+    for (; skip > 0; skip--) {
+      if (mlo) mlo &= mlo - 1;
+      else mhi &= mhi - 1;
+    }
     int slot = q0 == w->excl[l] ? l : 32 + lane;
     float4 ri = w->sr[l], vi = w->sv[l];
     wl_real inv_rho_i = w->sinv[l];
     struct acc1 r = {{0, 0, 0}, 0, 0, 0, 0};
     for (int q = q0; q < q1; q++) {
-      if (!mm) { /* this particle's pairs are done: the next one's */
+      if (!(mlo | mhi)) { /* this particle's pairs are done: the next one's */
         split_store(w, slot, &r);
         r = acc1{{0, 0, 0}, 0, 0, 0, 0};
         l = __ffs(with_marks & (0xfffffffeu << l)) - 1; /* next lane with marks */
         mm = w->mask[l];
+        mlo = (unsigned)mm;
+        mhi = (unsigned)(mm >> 32);
         slot = l;
         ri = w->sr[l];
         vi = w->sv[l];
         inv_rho_i = w->sinv[l];
       }
-      const int s = __ffsll((long long)mm) - 1;
-      mm &= mm - 1;
+      const bool in_lo = mlo != 0;
+      const unsigned cur = in_lo ? mlo : mhi;
+      const int s = __ffs(cur) - 1 + (in_lo ? 0 : 32);
+      if (in_lo) mlo = cur & (cur - 1);
+      else mhi = cur & (cur - 1);
       split_pair<DIM, LAM, WANT_ACE, WITH_DDT>(k, w, s, ri, vi, inv_rho_i, av, lam, &r);
     }
     split_store(w, slot, &r);
