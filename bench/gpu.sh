@@ -6,7 +6,7 @@
 #     1.04M and 8.1M particles, Wendland, h = 1.73 dp (coefh 1 in 3D);
 #   - 2D dam break at about 0.89M particles, Wendland, h = 1.41 dp;
 #   - the other force loops (WL_CUDA_GATHER=ref: wl_sph_gather as is;
-#     fast; tile) and the CPU backend on the same host, for comparison;
+#     fast; split) and the CPU backend on the same host, for comparison;
 #   - the memory-bandwidth and fp32 ceilings through PyTorch, when it is there.
 # Build: the full CMake build (-DWL_CUDA=ON) when its dependencies are there;
 # otherwise (the device machine has no GSL, libyaml, cairo or HDF5) the
@@ -66,14 +66,14 @@ b() { "${bench[@]}" "$@" | grep -v '^# \(warm-up\|GPU\)' || true; }
   "$test" >"$build/test_cuda_backend.log" 2>&1 || rc=$?
   grep -E "^#|FAIL|SKIP" "$build/test_cuda_backend.log" || true
   echo "test_cuda_backend: exit $rc ($(grep -c '^PASS' "$build/test_cuda_backend.log") PASS, $(grep -c '^FAIL' "$build/test_cuda_backend.log") FAIL)"
-  echo "## default force loops (3D: tile, 2D: fast)"
+  echo "## default force loops (3D: split, 2D: fast)"
   b --case dambreak3d --backend cuda --particles 1.04e6 --steps "${STEPS3D:-200}"
   b --case dambreak3d --backend cuda --particles 8.1e6 --steps "${STEPS8M:-40}"
   b --case dambreak2d --backend cuda --particles 0.89e6 --steps "${STEPS2D:-500}"
   echo "## other force loops"
   WL_CUDA_GATHER=fast b --case dambreak3d --backend cuda --particles 1.04e6 --steps 100 | grep '^dam'
   WL_CUDA_GATHER=ref b --case dambreak3d --backend cuda --particles 1.04e6 --steps 20 | grep '^dam'
-  WL_CUDA_GATHER=tile b --case dambreak2d --backend cuda --particles 0.89e6 --steps 200 | grep '^dam'
+  WL_CUDA_GATHER=split b --case dambreak2d --backend cuda --particles 0.89e6 --steps 200 | grep '^dam'
   WL_CUDA_GATHER=ref b --case dambreak2d --backend cuda --particles 0.89e6 --steps 100 | grep '^dam'
   echo "## CPU backend, same host, all cores"
   b --case dambreak3d --backend cpu --particles 1.04e6 --steps 3 | grep '^dam'

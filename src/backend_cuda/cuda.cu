@@ -24,28 +24,27 @@
  * init (no allocation in step); init checks cudaMemGetInfo first.
  *
  * Three force loops, chosen by the environment variable WL_CUDA_GATHER;
- * each sums the same pair terms (sph/interact.h wl_sph_pair_eval) in the
- * same order for every particle, and test_cuda_backend checks them against
- * each other and against the CPU:
+ * each sums the same pair terms (sph/interact.h wl_sph_pair_eval) for every
+ * particle, and test_cuda_backend checks the default against the reference
+ * loop and against the CPU:
  *  - "ref": wl_sph_gather itself, one thread per particle (branch-free:
  *    every candidate j in the 3 or 9 cell rows costs a pair evaluation);
- *  - "fast": the same loop, but a candidate farther than 2h (with a 1e-4
- *    relative margin on r^2) is skipped before the pair evaluation. Such a
- *    pair adds exact zeros in the reference loop (W, grad W and the viscous
- *    dt term are 0 beyond the support), so each sum gets the same terms in
- *    the same order. In 3D a warp still pays a pair evaluation for nearly
- *    every candidate, because one of its 32 particles nearly always has it
- *    inside the support;
- *  - "tile" (default in 3D; "fast" is the 2D default): the warp walks the
- *    candidates of its particles' rows together, staging 64 at a time in
- *    shared memory (coalesced loads, broadcast reads); each thread marks
- *    the candidates inside its support in a bit mask (a float test with a
- *    safe margin) and then evaluates only those (k_gather_tile).
+ *  - "fast" (2D default): the same loop, but a candidate farther than 2h
+ *    (with a 1e-4 relative margin on r^2) is skipped before the pair
+ *    evaluation. Such a pair adds exact zeros in the reference loop (W,
+ *    grad W and the viscous dt term are 0 beyond the support), so each sum
+ *    gets the same terms in the same order: bit-identical to "ref". In 3D a
+ *    warp still pays a pair evaluation for nearly every candidate, because
+ *    one of its 32 particles nearly always has it inside the support;
+ *  - "split" (3D default): the warp stages its particles' candidates in
+ *    shared memory, marks those inside each particle's support, and splits
+ *    the marked pairs evenly over its 32 lanes (k_gather_split, below). The
+ *    same terms in the same order per particle, summed in runs: equal to
+ *    "ref" to float rounding.
  * The bookkeeping of wl_sph_gather_block (fluid then boundary sums, the
  * DDT2 switch, gravity, the mirror planes' passes: mirror_fast) is mirrored
- * in k_gather_fast and k_gather_tile: a
- * change there must be made here too (the test's comparison with the
- * reference loop catches a divergence). */
+ * in k_gather_fast and k_gather_split: a change there must be made here too
+ * (the test's comparison with the reference loop catches a divergence). */
 #include <cuda_runtime.h>
 #include <math.h>
 #include <stdio.h>
@@ -71,7 +70,7 @@ extern "C" {
 enum { THREADS = 128 };
 
 /* Force loops (see the file header). */
-enum { MODE_REF = 0, MODE_FAST = 1, MODE_TILE = 2, MODE_SPLIT = 3 };
+enum { MODE_REF = 0, MODE_FAST = 1, MODE_SPLIT = 2 };
 
 /* ---- error checking ----------------------------------------------------- */
 
@@ -116,7 +115,7 @@ struct gpu {
   struct wl_sph_const k;
   struct wl_sph_grid grid;
   int dim, n, nb, end_bit;
-  int mode; /* force loop: MODE_REF, MODE_FAST or MODE_TILE (WL_CUDA_GATHER) */
+  int mode; /* force loop: MODE_REF, MODE_FAST or MODE_SPLIT (WL_CUDA_GATHER) */
   /* device arrays (current roles; sorting swaps pos<->pos_h, vel<->vel_h,
    * rho<->rho_h, id<->ar, kind<->kind_alt, body<->body_alt) */
   double *pos[WL_SPH_DIM_MAX], *pos_h[WL_SPH_DIM_MAX];
@@ -424,220 +423,37 @@ __global__ void __launch_bounds__(THREADS)
   block_max3(a2, v2, vmax, st);
 }
 
-/* Candidates a warp stages in shared memory at a time (one 64-bit mask). */
+/* Candidates a warp stages in shared memory per batch (one 64-bit mask). */
 enum { TILE = 64 };
 
-/* A staged candidate: what a pair evaluation reads of particle j, and its
- * position relative to the segment's origin in float for the cut-off test. */
-struct cand {
-  double x[3];
-  float xr[3];
-  wl_real v[3], rho, p;
-  wl_real inv_rho, vol; /* wl_sph_pair_j of rho, once per staged candidate */
-};
-
-/* Add the pairs of the candidates marked in m (ascending: the order of j)
- * to acc; the body of wl_sph_gather_range for one lane. */
-template <int DIM, int LAM, int WANT_ACE, int WITH_DDT>
-static __device__ __forceinline__ void tile_pairs(const struct wl_sph_const *k,
-                                                  const struct cand *sm, unsigned long long m,
-                                                  const double xi[3], const wl_real vi[3],
-                                                  wl_real rho_i, wl_real inv_rho_i, wl_real p_i,
-                                                  wl_real av, wl_real lam, struct acc1 *acc) {
-  while (m) {
-    const int s = __ffsll((long long)m) - 1;
-    m &= m - 1;
-    const struct cand *cj = sm + s;
-    const wl_real dx = (wl_real)(xi[0] - cj->x[0]);
-    const wl_real dy = DIM == 3 ? (wl_real)(xi[1] - cj->x[1]) : WL_R(0.0);
-    const wl_real dz = (wl_real)(xi[2] - cj->x[2]);
-    const wl_real rho_j = cj->rho, p_j = cj->p, inv_rho_j = cj->inv_rho, vol_j = cj->vol;
-    const wl_real ux = vi[0] - cj->v[0];
-    const wl_real uy = DIM == 3 ? vi[1] - cj->v[1] : WL_R(0.0);
-    const wl_real uz = vi[2] - cj->v[2];
-    const wl_real r2 = dx * dx + dy * dy + dz * dz;
-    const wl_real rv = dx * ux + dy * uy + dz * uz;
-    const struct wl_sph_pair o = wl_sph_pair_eval(LAM, WITH_DDT, k, r2, rv, dz, rho_i, inv_rho_i,
-                                                  p_i, rho_j, inv_rho_j, vol_j, p_j, av, lam);
-    if (WANT_ACE) {
-      acc->a[0] += o.c_r * dx + (LAM ? o.c_v * ux : WL_R(0.0));
-      if (DIM == 3) acc->a[1] += o.c_r * dy + (LAM ? o.c_v * uy : WL_R(0.0));
-      acc->a[2] += o.c_r * dz + (LAM ? o.c_v * uz : WL_R(0.0));
-    }
-    acc->cont += o.cont;
-    acc->ddt += o.ddt;
-    acc->wsum += o.wq;
-    acc->visc = wl_sph_max_nonneg(acc->visc, o.visc);
-  }
-}
-
-/* The tile force loop (default). A warp's particles are split into
+/* The split force loop (3D default). A warp's particles are split into
  * segments of equal cell row (iy, iz) and group; for each segment the warp
  * walks the union of its particles' neighbour rows (cells min ix - 1 .. max
  * ix + 1 of each row), fluid rows then boundary rows as wl_sph_gather_block
- * does, TILE candidates at a time: the warp loads them coalesced into shared
- * memory, every thread of the segment computes r^2 for each (broadcast
- * reads) in float from positions relative to the segment's origin (error
- * ~1e-6 h, far inside the margin), marks those inside (2h)^2 (1 + 1e-4),
- * and evaluates the marked ones in ascending j from the staged double
- * positions, exactly as the reference loop. A candidate of the union that is not in a
- * particle's own three cells is at least 2h away and is never marked (and
- * would add exact zeros if it were); the marked ones are the reference
- * loop's non-zero terms, in its order. */
-/* Resident blocks per multiprocessor the tile loop is compiled for: 8 caps
- * it at 64 registers (8 x 128 threads x 64 = the register file). Latency
- * bound: on the H100 8 ran 20 % faster than 1 (114 registers) and 4 %
- * faster than 6 (80 registers) in 3D (BENCHMARKS.md). */
-#ifndef WL_TILE_MIN_BLOCKS
-#define WL_TILE_MIN_BLOCKS 8
-#endif
-template <int DIM, int LAM>
-__global__ void __launch_bounds__(THREADS, WL_TILE_MIN_BLOCKS)
-    k_gather_tile(const struct wl_sph_const kp, const struct wl_sph_grid gp,
-                  const struct wl_sph_eval ep, int n, int nb, float skip2, wl_real r2_skip,
-                  struct dstats *st) {
-  __shared__ struct cand tile[THREADS / 32][TILE];
-  const struct wl_sph_const k = kp;
-  const struct wl_sph_grid g = gp;
-  const struct wl_sph_eval e = ep;
-  const int i = tid(), lane = threadIdx.x & 31;
-  struct cand *const sm = tile[threadIdx.x >> 5];
-  const int nc = g.n_cells, nx = g.n[0], az = DIM - 1;
-  const bool active = i < n;
-  int fluid = 0, cx = 0, rest = 0;
-  double xi[3] = {0, 0, 0};
-  wl_real vi[3] = {0, 0, 0}, rho_i = 1, inv_rho_i = 1, p_i = 0;
-  if (active) {
-    fluid = i >= nb;
-    const int cell = (int)e.key[i] - (fluid ? nc : 0);
-    cx = cell % nx;
-    rest = cell / nx;
-    xi[0] = e.pos[0][i];
-    xi[1] = DIM == 3 ? e.pos[1][i] : 0.0;
-    xi[2] = e.pos[az][i];
-    vi[0] = e.vel[0][i];
-    vi[1] = DIM == 3 ? e.vel[1][i] : WL_R(0.0);
-    vi[2] = e.vel[az][i];
-    rho_i = e.rho[i];
-    inv_rho_i = WL_R(1.0) / rho_i;
-    p_i = e.press[i];
-  }
-  struct acc1 f = {{0, 0, 0}, 0, 0, 0, 0};
-  struct acc1 b = f;
-  const unsigned seg_id = ((unsigned)fluid << 31) | (unsigned)rest;
-  unsigned pending = __ballot_sync(0xffffffffu, active);
-  while (pending) {
-    const int leader = __ffs((int)pending) - 1;
-    const unsigned lead_id = __shfl_sync(0xffffffffu, seg_id, leader);
-    const bool in_seg = ((pending >> lane) & 1u) && seg_id == lead_id;
-    pending &= ~__ballot_sync(0xffffffffu, in_seg);
-    const int x0 = wl_sph_maxi(__reduce_min_sync(0xffffffffu, in_seg ? cx : 0x7fffffff) - 1, 0);
-    const int x1 = wl_sph_mini(__reduce_max_sync(0xffffffffu, in_seg ? cx : -1) + 1, nx - 1);
-    /* origin of the float test: the leader's position (the segment spans a
-     * few cells, so x - o in float is exact to ~1e-7 of a cell) */
-    const double o0 = __shfl_sync(0xffffffffu, xi[0], leader);
-    const double o1 = __shfl_sync(0xffffffffu, xi[1], leader);
-    const double o2 = __shfl_sync(0xffffffffu, xi[2], leader);
-    const float xr0 = (float)(xi[0] - o0), xr1 = (float)(xi[1] - o1), xr2 = (float)(xi[2] - o2);
-    const int seg_fluid = (int)(lead_id >> 31);
-    const int seg_rest = (int)(lead_id & 0x7fffffffu);
-    const int iy = DIM == 3 ? seg_rest % g.n[1] : 0, iz = DIM == 3 ? seg_rest / g.n[1] : seg_rest;
-    const int nz = DIM == 3 ? g.n[2] : g.n[1];
-    for (int grp = 1; grp >= (seg_fluid ? 0 : 1); grp--) {
-      const int *const bg = e.begin + (grp ? nc : 0);
-      for (int dz = -1; dz <= 1; dz++) {
-        const int jz = iz + dz;
-        if (jz < 0 || jz >= nz) continue;
-        for (int dy = (DIM == 3 ? -1 : 0); dy <= (DIM == 3 ? 1 : 0); dy++) {
-          const int jy = iy + dy;
-          if (DIM == 3 && (jy < 0 || jy >= g.n[1])) continue;
-          const int base = DIM == 3 ? (jz * g.n[1] + jy) * nx : jz * nx;
-          const int j0 = bg[base + x0], j1 = bg[base + x1 + 1];
-          for (int c0 = j0; c0 < j1; c0 += TILE) {
-            const int cnt = wl_sph_mini(TILE, j1 - c0);
-            __syncwarp();
-            for (int s = lane; s < cnt; s += 32) {
-              const int j = c0 + s;
-              struct cand cj;
-              cj.x[0] = e.pos[0][j];
-              cj.x[1] = DIM == 3 ? e.pos[1][j] : 0.0;
-              cj.x[2] = e.pos[az][j];
-              cj.v[0] = e.vel[0][j];
-              cj.v[1] = DIM == 3 ? e.vel[1][j] : WL_R(0.0);
-              cj.v[2] = e.vel[az][j];
-              cj.xr[0] = (float)(cj.x[0] - o0);
-              cj.xr[1] = (float)(cj.x[1] - o1);
-              cj.xr[2] = (float)(cj.x[2] - o2);
-              cj.rho = e.rho[j];
-              cj.p = e.press[j];
-              wl_sph_pair_j(&k, cj.rho, &cj.inv_rho, &cj.vol);
-              sm[s] = cj;
-            }
-            __syncwarp();
-            if (!in_seg) continue;
-            unsigned long long m = 0;
-            for (int s = 0; s < cnt; s++) {
-              const float dx = xr0 - sm[s].xr[0];
-              const float dy2 = DIM == 3 ? xr1 - sm[s].xr[1] : 0.f;
-              const float dz2 = xr2 - sm[s].xr[2];
-              if (dx * dx + dy2 * dy2 + dz2 * dz2 < skip2) m |= 1ull << s;
-            }
-            if (grp == 1 && seg_fluid)
-              tile_pairs<DIM, LAM, 1, 1>(&k, sm, m, xi, vi, rho_i, inv_rho_i, p_i, k.av_ff,
-                                         k.lam_ff, &f);
-            else if (grp == 1)
-              tile_pairs<DIM, LAM, 0, 0>(&k, sm, m, xi, vi, rho_i, inv_rho_i, p_i, k.av_fb,
-                                         k.lam_fb, &f);
-            else
-              tile_pairs<DIM, LAM, 1, 0>(&k, sm, m, xi, vi, rho_i, inv_rho_i, p_i, k.av_fb,
-                                         k.lam_fb, &b);
-          }
-        }
-      }
-    }
-  }
-  /* the mirror planes' rows, per thread (only the particles beside a plane
-   * have any); the tile loop above did the ordinary rows of f and b */
-  if (active)
-    mirror_fast<DIM, LAM>(&k, &g, &e, cx + nx * rest, fluid, xi, vi, rho_i, inv_rho_i, p_i, r2_skip,
-                          &f, &b);
-  double a2 = 0, v2 = 0, vmax = 0;
-  if (active) {
-    if (fluid) {
-      const wl_real ddt = (k.ddt == WL_SPH_DDT_FOURTAKAS && b.wsum > 0) ? WL_R(0.0) : f.ddt;
-      e.ace[0][i] = f.a[0] + b.a[0] + k.gravity[0];
-      if (DIM == 3) e.ace[1][i] = f.a[1] + b.a[1] + k.gravity[1];
-      e.ace[DIM - 1][i] = f.a[2] + b.a[2] + k.gravity[DIM - 1];
-      e.ar[i] = rho_i * (f.cont + b.cont) + ddt;
-      e.visc[i] = k.h * wl_sph_max_nonneg(f.visc, b.visc);
-    } else {
-      for (int a = 0; a < DIM; a++) e.ace[a][i] = 0;
-      e.ar[i] = rho_i * f.cont;
-      e.visc[i] = k.h * f.visc;
-    }
-    particle_max<DIM>(&e, i, nb, &a2, &v2, &vmax);
-  }
-  block_max3(a2, v2, vmax, st);
-}
-
-/* The split force loop. Like the tile loop, a warp walks the candidate
- * rows of each segment TILE at a time, staged in shared memory, and every
- * thread of the segment marks the candidates inside its support. The tile
- * loop then has each thread evaluate its own marks, so the warp runs as
- * long as its busiest thread; within one row the marks are very uneven
- * (the particles at the top of a cell have the row above in reach, those
- * at the bottom hardly any of it): ncu found 10.5 of 32 lanes busy in its
- * pair evaluations. Here the batch's marked pairs, listed particle by
- * particle in lane order (particle l's pairs at positions excl_l ..
- * excl_l + count_l - 1, ascending candidate), are split into 32 equal
- * blocks of consecutive positions, one per lane. A lane evaluates its block
- * in order, summing the pairs of each particle it meets into a partial sum
- * (a run), and writes each run to shared memory; then each particle's
- * owner adds its runs in list order. So every lane does the same work, and
- * every particle still adds its terms in ascending j, grouped in runs of
- * consecutive terms: the association differs from the reference loop (by
- * float rounding), not the terms. The result depends only on the particle
- * data and order, not on timing (no atomics).
+ * does, 32 candidates at a time: each lane loads one, coalesced, and keeps
+ * it if it lies within 2h of the segment's bounding box (a candidate
+ * outside it is outside every segment particle's support: about 40 % of
+ * a row's candidates go here). The kept ones are staged in shared memory,
+ * in order, until a batch of 33-64 is full; then every lane of the segment
+ * marks the staged candidates inside its support (r^2 < (2h)^2 (1 + 1e-4)
+ * in float, a bit mask), and the batch's marked pairs are evaluated.
+ *
+ * Evaluation. Each lane evaluating its own marks (the loop this one
+ * replaced, "tile") leaves most lanes idle: within one row the marks are
+ * very uneven (the particles at the top of a cell have the row above in
+ * reach, those at the bottom hardly any of it), and the warp runs as long
+ * as its busiest lane (ncu: 10.5 of 32 lanes busy in the evaluations,
+ * 3.6e8 evaluations/s on the H100, BENCHMARKS.md). Here the batch's marked
+ * pairs, listed particle by particle in lane order (particle l's pairs at
+ * positions excl_l .. excl_l + count_l - 1, ascending candidate), are split
+ * into 32 equal blocks of consecutive positions, one per lane. A lane
+ * evaluates its block in order, summing the pairs of each particle it meets
+ * into a partial sum (a run), and writes each run to shared memory; then
+ * each particle's owner adds its runs in list order. So every lane does the
+ * same work, and every particle still adds its terms in ascending j,
+ * grouped in runs of consecutive terms: the association differs from the
+ * reference loop (by float rounding), not the terms. The result depends
+ * only on the particle data and order, not on timing (no atomics).
  *
  * Positions enter the pair terms as float offsets from the segment's
  * origin (a particle of the segment), as DualSPHysics does relative to its
@@ -646,7 +462,10 @@ __global__ void __launch_bounds__(THREADS, WL_TILE_MIN_BLOCKS)
  * difference of the other loops; float arithmetic in the pair terms
  * rounds at the same level. It halves the staged bytes, so more warps fit
  * an SM, which this latency-bound loop needs. */
-/* Resident blocks per multiprocessor the split loop is compiled for. */
+/* Resident blocks per multiprocessor the split loop is compiled for: 8
+ * caps it at 64 registers (8 x 128 threads x 64 = the register file); 8,
+ * 7 and 6 ran at 4.8e8, 4.7e8 and 4.4e8 evaluations/s on the H100 (3D 1M,
+ * before the staging filter): latency-bound, occupancy pays. */
 #ifndef WL_SPLIT_MIN_BLOCKS
 #define WL_SPLIT_MIN_BLOCKS 8
 #endif
@@ -685,7 +504,7 @@ static __device__ __forceinline__ unsigned split_marks32(const float4 *cr, float
 }
 
 /* Add pair (particle ri, vi, inv_rho_i; staged candidate s) to acc: the
- * body of tile_pairs, from float offsets. */
+ * body of wl_sph_gather_range for one lane, from float offsets. */
 template <int DIM, int LAM, int WANT_ACE, int WITH_DDT>
 static __device__ __forceinline__ void split_pair(const struct wl_sph_const *k,
                                                   const struct split_warp *w, int s, float4 ri,
@@ -962,7 +781,8 @@ __global__ void __launch_bounds__(THREADS, WL_SPLIT_MIN_BLOCKS)
     const double xi[3] = {e.pos[0][i], DIM == 3 ? e.pos[1][i] : 0.0, e.pos[az][i]};
     const float4 sv = w->sv[lane];
     const wl_real vi[3] = {sv.x, sv.y, sv.z}, rho_i = w->sr[lane].w, inv_rho_i = w->sinv[lane];
-    /* the mirror planes' rows, per thread, as the tile loop */
+    /* the mirror planes' rows, per thread (only the particles beside a
+     * plane have any); the walk above did the ordinary rows of f and b */
     mirror_fast<DIM, LAM>(&k, &g, &e, cx + nx * rest, fluid, xi, vi, rho_i, inv_rho_i, sv.w,
                           r2_skip, &f, &b);
     if (fluid) {
@@ -1186,13 +1006,7 @@ static enum wl_status evaluate(struct gpu *c, double *const *pos, wl_real *const
   /* skip threshold: (2h)^2 with a relative margin far above float rounding */
   const wl_real r2_skip = c->k.support2 * WL_R(1.0001);
   cudaStream_t s = c->stream;
-  if (c->mode == MODE_TILE) {
-    const float skip2 = (float)(4.0 * c->k.h_d * c->k.h_d * 1.0001);
-    if (c->dim == 3 && !lam) k_gather_tile<3, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, skip2, r2_skip, c->stats);
-    else if (c->dim == 3) k_gather_tile<3, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, skip2, r2_skip, c->stats);
-    else if (!lam) k_gather_tile<2, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, skip2, r2_skip, c->stats);
-    else k_gather_tile<2, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, skip2, r2_skip, c->stats);
-  } else if (c->mode == MODE_SPLIT) {
+  if (c->mode == MODE_SPLIT) {
     const float skip2 = (float)(4.0 * c->k.h_d * c->k.h_d * 1.0001);
     if (c->dim == 3 && !lam) k_gather_split<3, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, skip2, r2_skip, c->stats);
     else if (c->dim == 3) k_gather_split<3, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, skip2, r2_skip, c->stats);
@@ -1307,8 +1121,7 @@ static void cuda_describe(void *ctx, char *buf, size_t size) {
            "cuda (%s, sm_%d%d, %d SMs; %s force loop, one thread per particle; %s; %d cells of %.4g m; "
            "%.1f MiB on the device, %.0f B/particle)",
            c->dev.name, c->dev.sm_major, c->dev.sm_minor, c->dev.n_sm,
-           c->mode == MODE_TILE   ? "tile (warp-shared candidates, per-thread masks)"
-           : c->mode == MODE_SPLIT ? "split (warp-shared candidates, pairs split evenly over the lanes)"
+           c->mode == MODE_SPLIT  ? "split (warp-shared candidates, pairs split evenly over the lanes)"
            : c->mode == MODE_FAST ? "fast (cut-off skip)"
                                   : "reference (wl_sph_gather)",
            c->k.integrator == WL_SPH_VERLET ? "Verlet steps" : "symplectic steps", c->grid.n_cells,
@@ -1401,17 +1214,15 @@ static enum wl_status cuda_init(void **ctx, const struct wl_sph_config *cfg,
   c->n = host->n;
   c->nb = host->n_bound;
   const char *mode = getenv("WL_CUDA_GATHER");
-  if (mode && strcmp(mode, "tile") && strcmp(mode, "fast") && strcmp(mode, "ref") &&
-      strcmp(mode, "split")) {
+  if (mode && strcmp(mode, "split") && strcmp(mode, "fast") && strcmp(mode, "ref")) {
     cuda_free(c);
-    return wl_error_set(err, WL_EINPUT, "cuda backend: WL_CUDA_GATHER=%s; valid: tile (default), split, "
-                        "fast, ref", mode);
+    return wl_error_set(err, WL_EINPUT, "cuda backend: WL_CUDA_GATHER=%s; valid: split (3D default), "
+                        "fast (2D default), ref", mode);
   }
-  /* default: tile in 3D; fast in 2D, where a cell holds ~8 particles and a
-   * warp's rows are too short for staging to pay (measured on the H100,
-   * BENCHMARKS.md) */
+  /* default: split in 3D; fast in 2D, where a cell holds ~8 particles and a
+   * warp's rows are too short for staging to pay (split ran at half the
+   * rate of fast there on the H100, BENCHMARKS.md) */
   c->mode = !mode ? (dim == 3 ? MODE_SPLIT : MODE_FAST)
-            : !strcmp(mode, "tile") ? MODE_TILE
             : !strcmp(mode, "split") ? MODE_SPLIT
             : !strcmp(mode, "fast") ? MODE_FAST
                                     : MODE_REF;
