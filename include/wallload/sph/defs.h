@@ -94,10 +94,13 @@ WL_HD static WL_INLINE wl_real wl_sph_sqrt(wl_real x) {
 #endif
 }
 
-/* |x| without a branch. */
+/* |x| without a branch (on the GPU an operand modifier of the instruction
+ * that uses it: wl_sph_pos and wl_sph_neg are then two instructions). */
 WL_HD static WL_INLINE wl_real wl_sph_abs(wl_real x) {
-#if defined(__CUDACC__)
-  return x < 0 ? -x : x;
+#if defined(__CUDACC__) && WL_REAL_DOUBLE
+  return fabs(x);
+#elif defined(__CUDACC__)
+  return fabsf(x);
 #elif WL_REAL_DOUBLE
   return __builtin_fabs(x);
 #else
