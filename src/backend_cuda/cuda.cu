@@ -457,11 +457,13 @@ enum { TILE = 64 };
  *
  * Positions enter the pair terms as float offsets from the segment's
  * origin (a particle of the segment), as DualSPHysics does relative to its
- * cells: the segment and its rows span a few cells, so an offset is within
- * ~15 h and exact to ~1e-6 h, against ~1e-7 of dx for the double
- * difference of the other loops; float arithmetic in the pair terms
- * rounds at the same level. It halves the staged bytes, so more warps fit
- * an SM, which this latency-bound loop needs. */
+ * cells: float keeps ~6e-8 of the offset, and a segment with its rows
+ * spans a few cells (~15 h), so dx is exact to ~1e-6 h, against ~1e-7 of
+ * dx for the double difference of the other loops; float arithmetic in the
+ * pair terms rounds at the same level. It halves the staged bytes, so more
+ * warps fit an SM, which this latency-bound loop needs. Everything staged
+ * is float: a build with double wl_real (WL_REAL_DOUBLE) uses the fast
+ * loop instead. */
 /* Resident blocks per multiprocessor the split loop is compiled for: 8
  * caps it at 64 registers (8 x 128 threads x 64 = the register file); 8,
  * 7 and 6 ran at 4.8e8, 4.7e8 and 4.4e8 evaluations/s on the H100 (3D 1M,
@@ -1221,8 +1223,14 @@ static enum wl_status cuda_init(void **ctx, const struct wl_sph_config *cfg,
   }
   /* default: split in 3D; fast in 2D, where a cell holds ~8 particles and a
    * warp's rows are too short for staging to pay (split ran at half the
-   * rate of fast there on the H100, BENCHMARKS.md) */
-  c->mode = !mode ? (dim == 3 ? MODE_SPLIT : MODE_FAST)
+   * rate of fast there on the H100, BENCHMARKS.md), and in a build with
+   * double wl_real, which the split loop's float staging would narrow */
+  if (WL_REAL_DOUBLE && mode && !strcmp(mode, "split")) {
+    cuda_free(c);
+    return wl_error_set(err, WL_EINPUT, "cuda backend: WL_CUDA_GATHER=split stages float "
+                        "values; this build has double wl_real (WL_REAL_DOUBLE): use fast or ref");
+  }
+  c->mode = !mode ? (dim == 3 && !WL_REAL_DOUBLE ? MODE_SPLIT : MODE_FAST)
             : !strcmp(mode, "split") ? MODE_SPLIT
             : !strcmp(mode, "fast") ? MODE_FAST
                                     : MODE_REF;
