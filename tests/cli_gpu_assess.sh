@@ -4,7 +4,7 @@
 # geometry of tests/test_solitary_wall.c at dp = 0.02 m) with --backend cpu
 # and --backend cuda, in 2D and in a 3D flume 0.16 m wide (free-slip side
 # walls and the symmetry plane: the solver's mirror planes, on the GPU in
-# its tile force loop), and the engineer-facing numbers of summary.json and the
+# its split force loop), and the engineer-facing numbers of summary.json and the
 # gauge series compared within the tolerances of BENCHMARKS.md ("assess end to
 # end, CPU vs CUDA"): the backends differ in float rounding (order of the
 # neighbour sums, FMA contraction, the GPU's square root and division), which
