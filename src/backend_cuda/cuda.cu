@@ -553,6 +553,21 @@ static __device__ __forceinline__ void split_add(const struct split_warp *w, int
   acc->visc = wl_sph_max_nonneg(acc->visc, v);
 }
 
+/* x less its k lowest set bits (0 <= k < popc(x), or k = 0): the position
+ * of the k-th set bit by binary search on bit counts. */
+static __device__ __forceinline__ unsigned split_drop_low(unsigned x, int k) {
+  int pos = 0;
+#pragma unroll
+  for (int width = 16; width; width >>= 1) {
+    const int c = __popc((x >> pos) & ((1u << width) - 1u));
+    if (c <= k) {
+      k -= c;
+      pos += width;
+    }
+  }
+  return x & (~0u << pos);
+}
+
 /* One batch: the marks m of each lane (count mc, list positions excl ..,
  * total for the warp) are evaluated in 32 equal blocks and the runs added
  * to each owner's acc. */
@@ -574,17 +589,16 @@ static __device__ __forceinline__ void split_batch(const struct wl_sph_const *k,
     for (int step = 16; step; step >>= 1)
       if (l + step < 32 && w->excl[l + step] <= q0) l += step;
     /* the particle's marks as two 32-bit halves (cheaper bit scans), less
-     * those before q0 */
+     * the q0 - excl[l] before q0 (branch-free: a loop over them ran at a
+     * third of the lanes) */
     unsigned long long mm = w->mask[l];
     unsigned mlo = (unsigned)mm, mhi = (unsigned)(mm >> 32);
-    int skip = q0 - w->excl[l];
-    if (skip >= __popc(mlo)) {
-      skip -= __popc(mlo);
-      mlo = 0;
-    }
-    for (; skip > 0; skip--) {
-      if (mlo) mlo &= mlo - 1;
-      else mhi &= mhi - 1;
+    {
+      const int skip = q0 - w->excl[l], plo = __popc(mlo);
+      const bool in_hi = skip >= plo;
+      const unsigned kept = split_drop_low(in_hi ? mhi : mlo, in_hi ? skip - plo : skip);
+      mhi = in_hi ? kept : mhi;
+      mlo = in_hi ? 0u : kept;
     }
     int slot = q0 == w->excl[l] ? l : 32 + lane;
     float4 ri = w->sr[l], vi = w->sv[l];
