@@ -1134,12 +1134,12 @@ static enum wl_status cuda_step(void *ctx, const struct wl_sph_step_in *in,
 static void cuda_describe(void *ctx, char *buf, size_t size) {
   const struct gpu *c = (const struct gpu *)ctx;
   snprintf(buf, size,
-           "cuda (%s, sm_%d%d, %d SMs; %s force loop, one thread per particle; %s; %d cells of %.4g m; "
+           "cuda (%s, sm_%d%d, %d SMs; %s force loop; %s; %d cells of %.4g m; "
            "%.1f MiB on the device, %.0f B/particle)",
            c->dev.name, c->dev.sm_major, c->dev.sm_minor, c->dev.n_sm,
            c->mode == MODE_SPLIT  ? "split (warp-shared candidates, pairs split evenly over the lanes)"
-           : c->mode == MODE_FAST ? "fast (cut-off skip)"
-                                  : "reference (wl_sph_gather)",
+           : c->mode == MODE_FAST ? "fast (cut-off skip, one thread per particle)"
+                                  : "reference (wl_sph_gather, one thread per particle)",
            c->k.integrator == WL_SPH_VERLET ? "Verlet steps" : "symplectic steps", c->grid.n_cells,
            c->grid.cell, c->bytes / 1048576.0, (double)c->bytes / (c->n > 0 ? c->n : 1));
 }

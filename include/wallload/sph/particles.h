@@ -32,7 +32,8 @@ struct wl_particles {
   unsigned int *id;             /* particle number at creation, kept through sorting */
   unsigned char *kind;          /* enum wl_particle_kind */
   unsigned char *body;          /* moving body 1..WL_SPH_BODIES_MAX, 0 otherwise */
-  /* work arrays of one step: not sorted (rewritten each step), not output */
+  /* work arrays of one step: not output, and not sorted (rewritten each step),
+   * except vel_h and rho_h under Verlet, which hold the previous step */
   double *pos_h[WL_SPH_DIM_MAX];  /* half-step (predictor) position [m] */
   wl_real *vel_h[WL_SPH_DIM_MAX]; /* half-step velocity [m/s]; Verlet: the previous step's
                                      velocity, which the backend's sort carries along */
