@@ -11,11 +11,15 @@
  * reference loop (the shared wl_sph_gather). Skipped (77) without a GPU; in a build without
  * CUDA it checks that the backend says so.
  *
+ * The GPU's square root and reciprocal of the pair loops (sph/defs.h) are
+ * first checked against its correctly rounded sqrtf and 1/x on every float
+ * of their ranges (bit for bit).
+ *
  * Why the backends are not bit-identical. They evaluate the same shared
  * functions on the same sorted order (both sorts are stable by the same
  * keys), but
  *  - the square root differs: the CPU uses a Newton iteration (sph/defs.h,
- *    within a few ulp), the GPU the hardware sqrt (correctly rounded);
+ *    within a few ulp), the GPU a correctly rounded one;
  *  - nvcc contracts a*b + c into fused multiply-adds (one rounding instead
  *    of two); the CPU build is ISO C without contraction.
  * Both are float rounding (relative 6e-8 per operation). A force is a sum
@@ -326,6 +330,20 @@ int main(void) {
     return 77;
   }
   printf("# GPU: %s\n", dev.name);
+  {
+    /* the GPU's square root and reciprocal (sph/defs.h) against its own
+     * correctly rounded sqrtf and 1/x, every float of their ranges: they
+     * must be the same bits, which is what lets them replace the library
+     * calls in the pair loops without changing a result */
+    unsigned long long n_sqrt, bad_sqrt, n_rcp, bad_rcp;
+    const enum wl_status st = wl_cuda_math_check(&n_sqrt, &bad_sqrt, &n_rcp, &bad_rcp, &err);
+    CHECK_TRUE(st == WL_OK, "wl_cuda_math_check runs");
+    CHECK_TRUE(n_sqrt > 1800000000ull && n_rcp > 4000000000ull,
+               "math check: every float from 2^-100 (sqrt) and every normal float below 2^126 "
+               "(reciprocal) tried");
+    CHECK_ABS((double)bad_sqrt, 0, 0, "wl_sph_sqrt: floats whose bits differ from sqrtf");
+    CHECK_ABS((double)bad_rcp, 0, 0, "wl_sph_rcp: floats whose bits differ from 1/x");
+  }
   const struct scene_case c2 = {2, 0.01, 300, "2D dam break", 0, 0, 0, NULL};
   const struct scene_case c3 = {3, 0.01, 100, "3D dam break with pillar", 0, 0, 0, NULL};
   const struct scene_case c3m = {3, 0.01, 100, "3D dam break with pillar, free-slip side walls "

@@ -26,4 +26,14 @@ int wl_cuda_built(void);
  * GPU is present (the CUDA runtime's reason in the message). */
 enum wl_status wl_cuda_device_query(struct wl_cuda_device *dev, struct wl_error *err);
 
+/* The GPU's wl_sph_sqrt and wl_sph_rcp (sph/defs.h) against its correctly
+ * rounded sqrtf and 1/x, on every float of their stated ranges (sqrt: from
+ * 2^-100 to the largest finite float; reciprocal: every normal float of
+ * magnitude below 2^126, both signs): *n_sqrt and *n_rcp get the numbers
+ * of floats tried, *bad_sqrt and *bad_rcp those whose bits differ.
+ * WL_EUNSUPPORTED without CUDA or a GPU. A few tenths of a second. */
+enum wl_status wl_cuda_math_check(unsigned long long *n_sqrt, unsigned long long *bad_sqrt,
+                                  unsigned long long *n_rcp, unsigned long long *bad_rcp,
+                                  struct wl_error *err);
+
 #endif

@@ -318,11 +318,9 @@ static __device__ __forceinline__ void range_fast(const struct wl_sph_const *k,
     const wl_real rv = dx * ux + dy * uy + dz * uz;
     const struct wl_sph_pair o = wl_sph_pair_eval(LAM, WITH_DDT, k, r2, rv, dz, rho_i, inv_rho_i,
                                                   p_i, rho_j, inv_rho_j, vol_j, p_j, av, lam);
-    if (WANT_ACE) {
-      acc->a[0] += o.c_r * dx + (LAM ? o.c_v * ux : WL_R(0.0));
-      if (DIM == 3) acc->a[1] += o.c_r * dy + (LAM ? o.c_v * uy : WL_R(0.0));
-      acc->a[2] += o.c_r * dz + (LAM ? o.c_v * uz : WL_R(0.0));
-    }
+    if (WANT_ACE)
+      wl_sph_pair_add_ace(DIM, LAM, &o, dx, dy, dz, ux, uy, uz, &acc->a[0], &acc->a[1],
+                          &acc->a[2]);
     acc->cont += o.cont;
     acc->ddt += o.ddt;
     acc->wsum += o.wq;
@@ -392,7 +390,7 @@ __global__ void __launch_bounds__(THREADS)
     vi[0] = e.vel[0][i];
     vi[1] = DIM == 3 ? e.vel[1][i] : WL_R(0.0);
     vi[2] = e.vel[az][i];
-    const wl_real rho_i = e.rho[i], inv_rho_i = WL_R(1.0) / rho_i, p_i = e.press[i];
+    const wl_real rho_i = e.rho[i], inv_rho_i = wl_sph_rcp(rho_i), p_i = e.press[i];
     struct acc1 f = {{0, 0, 0}, 0, 0, 0, 0};
     if (fluid) {
       struct acc1 b = f;
@@ -475,9 +473,9 @@ enum { TILE = 64 };
  * that starts at lane t's first position inside a particle's pairs. */
 enum { SPLIT_RUNS = 64 };
 struct split_warp {
-  float4 cr[TILE]; /* candidates: offset from the segment's origin, rho */
+  float4 cr[TILE]; /* candidates: offset c from the segment's origin, (|c|^2 - skip2)/2 */
   float4 cv[TILE]; /* velocity, pressure */
-  float2 cj[TILE]; /* wl_sph_pair_j: 1/rho, m/rho */
+  float4 cj[TILE]; /* rho; wl_sph_pair_j: 1/rho, m/rho; unused */
   float4 sr[32];   /* the warp's own particles, as cr and cv, and 1/rho */
   float4 sv[32];
   wl_real sinv[32];
@@ -488,21 +486,35 @@ struct split_warp {
   wl_real run[6][SPLIT_RUNS];
 };
 
-/* Marks of the 32 staged candidates cr[0..31] inside (2h)^2 (1 + 1e-4) of
- * self (float offsets from the segment's origin), bit s for cr[s]; the
- * caller masks off the slots beyond the batch. Unrolled, so each bit
- * position is a constant and the loop has no branch. */
+/* Marks of the 32 staged candidates cr[0..31] inside skip2 = (2h)^2 (1 +
+ * 1e-4) of self (float offsets from the segment's origin), bit s for cr[s];
+ * the caller masks off the slots beyond the batch. Unrolled and branch-free.
+ *
+ * |s - c|^2 < skip2 is tested as t = hs + hc - s.c < 0, with hs = |s|^2/2
+ * (per lane) and hc = (|c|^2 - skip2)/2 (staged with the candidate): an add
+ * and three FMAs, where the differences cost three adds, a multiply and
+ * two FMAs. The expanded form cancels: offsets reach ~8h, so its terms are
+ * up to ~32 h^2 and their float rounding ~1e-5 h^2, 40 times inside the
+ * margin of 4e-4 h^2 in skip2. A pair marked beyond 2h adds exact zeros
+ * (sph/kernel.h), so only a pair inside 2h left unmarked would be an
+ * error, and the margin rules it out. The mark is t's sign bit, so t = -0
+ * (exactly on the margin) counts as inside, which is as good. */
 template <int DIM>
 static __device__ __forceinline__ unsigned split_marks32(const float4 *cr, float4 self,
-                                                         float skip2) {
+                                                         float hs) {
   unsigned m = 0;
 #pragma unroll
   for (int s = 0; s < 32; s++) {
     const float4 c = cr[s];
-    const float dx = self.x - c.x, dy = DIM == 3 ? self.y - c.y : 0.f, dz = self.z - c.z;
-    m |= (dx * dx + dy * dy + dz * dz < skip2) ? (1u << s) : 0u;
+    float t = hs + c.w;
+    t = fmaf(-self.x, c.x, t);
+    if (DIM == 3) t = fmaf(-self.y, c.y, t);
+    t = fmaf(-self.z, c.z, t);
+    /* t's sign bit shifted in at the bottom: one funnel shift, where
+     * setting bit s costs a compare, a select and half an OR */
+    m = __funnelshift_l(__float_as_uint(t), m, 1);
   }
-  return m;
+  return __brev(m); /* candidate 0 went in first, so it is bit 31 */
 }
 
 /* Add pair (particle ri, vi, inv_rho_i; staged candidate s) to acc: the
@@ -513,7 +525,7 @@ static __device__ __forceinline__ void split_pair(const struct wl_sph_const *k,
                                                   float4 vi, wl_real inv_rho_i, wl_real av,
                                                   wl_real lam, struct acc1 *acc) {
   const float4 rj = w->cr[s], vj = w->cv[s];
-  const float2 pj = w->cj[s];
+  const float4 pj = w->cj[s];
   const wl_real dx = ri.x - rj.x;
   const wl_real dy = DIM == 3 ? ri.y - rj.y : WL_R(0.0);
   const wl_real dz = ri.z - rj.z;
@@ -523,12 +535,9 @@ static __device__ __forceinline__ void split_pair(const struct wl_sph_const *k,
   const wl_real r2 = dx * dx + dy * dy + dz * dz;
   const wl_real rv = dx * ux + dy * uy + dz * uz;
   const struct wl_sph_pair o = wl_sph_pair_eval(LAM, WITH_DDT, k, r2, rv, dz, ri.w, inv_rho_i, vi.w,
-                                                rj.w, pj.x, pj.y, vj.w, av, lam);
-  if (WANT_ACE) {
-    acc->a[0] += o.c_r * dx + (LAM ? o.c_v * ux : WL_R(0.0));
-    if (DIM == 3) acc->a[1] += o.c_r * dy + (LAM ? o.c_v * uy : WL_R(0.0));
-    acc->a[2] += o.c_r * dz + (LAM ? o.c_v * uz : WL_R(0.0));
-  }
+                                                pj.x, pj.y, pj.z, vj.w, av, lam);
+  if (WANT_ACE)
+    wl_sph_pair_add_ace(DIM, LAM, &o, dx, dy, dz, ux, uy, uz, &acc->a[0], &acc->a[1], &acc->a[2]);
   acc->cont += o.cont;
   if (WITH_DDT) acc->ddt += o.ddt;
   acc->wsum += o.wq;
@@ -590,38 +599,50 @@ static __device__ __forceinline__ void split_batch(const struct wl_sph_const *k,
       if (l + step < 32 && w->excl[l + step] <= q0) l += step;
     /* the particle's marks as two 32-bit halves (cheaper bit scans), less
      * the q0 - excl[l] before q0 (branch-free: a loop over them ran at a
-     * third of the lanes) */
+     * third of the lanes): the half being scanned (cur, its bit s is
+     * candidate base + s) and the upper half still to come (nxt) */
     unsigned long long mm = w->mask[l];
-    unsigned mlo = (unsigned)mm, mhi = (unsigned)(mm >> 32);
+    unsigned cur, nxt;
+    int base;
     {
+      const unsigned mlo = (unsigned)mm, mhi = (unsigned)(mm >> 32);
       const int skip = q0 - w->excl[l], plo = __popc(mlo);
       const bool in_hi = skip >= plo;
-      const unsigned kept = split_drop_low(in_hi ? mhi : mlo, in_hi ? skip - plo : skip);
-      mhi = in_hi ? kept : mhi;
-      mlo = in_hi ? 0u : kept;
+      cur = split_drop_low(in_hi ? mhi : mlo, in_hi ? skip - plo : skip);
+      nxt = in_hi ? 0u : mhi;
+      base = in_hi ? 32 : 0;
     }
     int slot = q0 == w->excl[l] ? l : 32 + lane;
     float4 ri = w->sr[l], vi = w->sv[l];
     wl_real inv_rho_i = w->sinv[l];
     struct acc1 r = {{0, 0, 0}, 0, 0, 0, 0};
-    for (int q = q0; q < q1; q++) {
-      if (!(mlo | mhi)) { /* this particle's pairs are done: the next one's */
-        split_store(w, slot, &r);
-        r = acc1{{0, 0, 0}, 0, 0, 0, 0};
-        l = __ffs(with_marks & (0xfffffffeu << l)) - 1; /* next lane with marks */
-        mm = w->mask[l];
-        mlo = (unsigned)mm;
-        mhi = (unsigned)(mm >> 32);
-        slot = l;
-        ri = w->sr[l];
-        vi = w->sv[l];
-        inv_rho_i = w->sinv[l];
+    for (int left = q1 - q0; left > 0; left--) {
+      if (!cur) { /* rare: one of these per particle and half */
+        if (nxt) { /* on to the upper half */
+          cur = nxt;
+          nxt = 0u;
+          base = 32;
+        } else { /* this particle's pairs are done: the next one's */
+          split_store(w, slot, &r);
+          r = acc1{{0, 0, 0}, 0, 0, 0, 0};
+          l = __ffs(with_marks & (0xfffffffeu << l)) - 1; /* next lane with marks */
+          mm = w->mask[l];
+          cur = (unsigned)mm;
+          nxt = (unsigned)(mm >> 32);
+          base = 0;
+          if (!cur) {
+            cur = nxt;
+            nxt = 0u;
+            base = 32;
+          }
+          slot = l;
+          ri = w->sr[l];
+          vi = w->sv[l];
+          inv_rho_i = w->sinv[l];
+        }
       }
-      const bool in_lo = mlo != 0;
-      const unsigned cur = in_lo ? mlo : mhi;
-      const int s = __ffs(cur) - 1 + (in_lo ? 0 : 32);
-      if (in_lo) mlo = cur & (cur - 1);
-      else mhi = cur & (cur - 1);
+      const int s = __ffs(cur) - 1 + base;
+      cur &= cur - 1;
       split_pair<DIM, LAM, WANT_ACE, WITH_DDT>(k, w, s, ri, vi, inv_rho_i, av, lam, &r);
     }
     split_store(w, slot, &r);
@@ -633,7 +654,8 @@ static __device__ __forceinline__ void split_batch(const struct wl_sph_const *k,
      * only a non-empty block wrote one) */
     split_add(w, lane, acc);
     const int incl = excl + mc;
-    for (int t = (excl * 32) / total + 1; t < 32; t++) {
+    /* unsigned: a signed division costs about twice the instructions */
+    for (int t = (int)((unsigned)(excl * 32) / (unsigned)total) + 1; t < 32; t++) {
       const int b = (t * total) >> 5;
       if (b >= incl) break;
       if (b > excl && ((t + 1) * total) >> 5 > b) split_add(w, 32 + t, acc);
@@ -646,14 +668,16 @@ static __device__ __forceinline__ void split_batch(const struct wl_sph_const *k,
 template <int DIM, int LAM>
 static __device__ __forceinline__ void split_group(const struct wl_sph_const *k,
                                                    struct split_warp *w, int lane, bool in_seg,
-                                                   float4 self, int fill, float skip2, int grp,
+                                                   float4 self, int fill, int grp,
                                                    int seg_fluid, struct acc1 *f,
                                                    struct acc1 *b) {
   __syncwarp();
   unsigned long long m = 0;
   if (in_seg) {
-    m = split_marks32<DIM>(w->cr, self, skip2);
-    if (fill > 32) m |= (unsigned long long)split_marks32<DIM>(w->cr + 32, self, skip2) << 32;
+    /* recomputed per batch: a register less across the walk */
+    const float hs = 0.5f * (self.x * self.x + self.y * self.y + self.z * self.z);
+    m = split_marks32<DIM>(w->cr, self, hs);
+    if (fill > 32) m |= (unsigned long long)split_marks32<DIM>(w->cr + 32, self, hs) << 32;
     if (fill < 64) m &= (1ull << fill) - 1ull;
   }
   /* list positions: exclusive scan of the mark counts over lanes */
@@ -700,7 +724,7 @@ __global__ void __launch_bounds__(THREADS, WL_SPLIT_MIN_BLOCKS)
     const wl_real rho = e.rho[i];
     w->sv[lane] = make_float4(e.vel[0][i], DIM == 3 ? e.vel[1][i] : WL_R(0.0), e.vel[az][i],
                               e.press[i]);
-    w->sinv[lane] = WL_R(1.0) / rho;
+    w->sinv[lane] = wl_sph_rcp(rho);
     w->sr[lane].w = rho;
   } else {
     w->sv[lane] = make_float4(0.f, 0.f, 0.f, 0.f);
@@ -773,23 +797,23 @@ __global__ void __launch_bounds__(THREADS, WL_SPLIT_MIN_BLOCKS)
           if (keep) {
             const int slot = fill + __popc(kept & ((1u << lane) - 1u));
             const wl_real rho_j = e.rho[j];
-            cr.w = rho_j;
+            cr.w = 0.5f * (cr.x * cr.x + cr.y * cr.y + cr.z * cr.z - skip2);
             w->cr[slot] = cr;
             w->cv[slot] = make_float4(e.vel[0][j], DIM == 3 ? e.vel[1][j] : WL_R(0.0),
                                       e.vel[az][j], e.press[j]);
             wl_real inv_rho_j, vol_j;
             wl_sph_pair_j(&k, rho_j, &inv_rho_j, &vol_j);
-            w->cj[slot] = make_float2(inv_rho_j, vol_j);
+            w->cj[slot] = make_float4(rho_j, inv_rho_j, vol_j, 0.f);
           }
           fill += __popc(kept);
           if (fill > TILE - 32) { /* the next 32 might not fit: evaluate */
-            split_group<DIM, LAM>(&k, w, lane, in_seg, self, fill, skip2, grp, seg_fluid, &f, &b);
+            split_group<DIM, LAM>(&k, w, lane, in_seg, self, fill, grp, seg_fluid, &f, &b);
             fill = 0;
           }
         }
       }
       if (fill)
-        split_group<DIM, LAM>(&k, w, lane, in_seg, self, fill, skip2, grp, seg_fluid, &f, &b);
+        split_group<DIM, LAM>(&k, w, lane, in_seg, self, fill, grp, seg_fluid, &f, &b);
     }
   }
   double a2 = 0, v2 = 0, vmax = 0;

@@ -108,6 +108,14 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
   k->lam_fb = (wl_real)(art ? 0.0 : 4.0 * prm->nu * prm->visc_bound_factor);
   k->ddt_k = (wl_real)(prm->ddt == WL_SPH_DDT_NONE ? 0.0 : prm->delta * 2.0 * h * c0);
   k->ddt_g = (wl_real)(prm->rho0 * prm->g / B);
+  {
+    /* sph/eos.h: the series' coefficients 1/7, -3/49, 13/343 times powers of
+     * rho0 g / B, in double, so the pair loop multiplies dz alone */
+    const double gz = prm->rho0 * prm->g / B;
+    k->ddt_h[0] = (wl_real)(prm->rho0 * gz / 7.0);
+    k->ddt_h[1] = (wl_real)(prm->rho0 * gz * gz * -3.0 / 49.0);
+    k->ddt_h[2] = (wl_real)(prm->rho0 * gz * gz * gz * 13.0 / 343.0);
+  }
   for (int a = 0; a < WL_SPH_DIM_MAX; a++) k->gravity[a] = 0;
   k->gravity[dim - 1] = (wl_real)(-prm->g);
   k->dp = prm->dp;

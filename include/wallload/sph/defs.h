@@ -71,10 +71,26 @@ typedef float wl_real;
  * y <- y (3 - x y^2)/2, each squaring the relative error (3.5e-2 -> 1.8e-3
  * -> 4.7e-6 -> 3e-11), so only float rounding is left: within a few ulp of the
  * correctly rounded sqrt (test_sph_kernel checks 4 ulp over [1e-12, 1e4]).
- * x = 0 gives 0; x must be >= 0 and finite. nvcc uses sqrtf (one
- * instruction there), so CPU and GPU agree to a few ulp in r. */
+ * x = 0 gives 0; x must be >= 0 and finite.
+ *
+ * On the GPU it is correctly rounded, the same bits as sqrtf, without
+ * sqrtf's range check and branch (about 10 instructions; this is 6): for
+ * a finite x >= 2^-101, nvcc's sqrtf is the hardware estimate y of
+ * 1/sqrt(x), r = x y, and one FMA correction r + (x - r^2) y/2, and that
+ * is what this does; below 2^-101 (zero and denormals) sqrtf takes a slow
+ * path. Here x is raised to 2^-100 first, so x < 2^-100 gives 2^-50 (9e-16):
+ * a distance of 1e-15 m or less is 0 to every term that uses it (q = r/h
+ * rounds 1 - q/2 to 1). wl_cuda_math_check (cuda_device.h) compares it
+ * with sqrtf on every float from 2^-100 up (test_cuda_backend). CPU and GPU
+ * agree to a few ulp in r. */
 WL_HD static WL_INLINE wl_real wl_sph_sqrt(wl_real x) {
-#if defined(__CUDACC__)
+#if defined(__CUDA_ARCH__) && !WL_REAL_DOUBLE
+  const float xs = x < 0x1p-100f ? 0x1p-100f : x; /* a NaN stays NaN */
+  float y;
+  asm("rsqrt.approx.ftz.f32 %0, %1;" : "=f"(y) : "f"(xs));
+  const float r = xs * y;
+  return fmaf(fmaf(-r, r, xs), 0.5f * y, r);
+#elif defined(__CUDACC__)
   return sqrt(x);
 #elif WL_REAL_DOUBLE
   return __builtin_sqrt(x);
@@ -91,6 +107,25 @@ WL_HD static WL_INLINE wl_real wl_sph_sqrt(wl_real x) {
   y = y * (1.5f - hx * y * y);
   y = y * (1.5f - hx * y * y);
   return x * y;
+#endif
+}
+
+/* 1/x, correctly rounded for a normal x with |x| < 2^126 (the same bits as
+ * 1/x); the pair loops divide by rho ~ 1e3 and by (r^2 + eta^2)(rho_i +
+ * rho_j) ~ 1e-5..1e5 in SI units, far inside that. On the host it is
+ * the division. On the GPU, nvcc's correctly rounded 1/x is the hardware
+ * estimate y and one FMA correction y - (x y - 1) y for such x, behind a
+ * range check and a branch to a slow path for the rest (about 10
+ * instructions; this is 3). Outside the range: 0 gives NaN (IEEE: inf),
+ * |x| >= 2^126 gives 0 (IEEE: a denormal), a NaN stays NaN.
+ * wl_cuda_math_check compares it with 1/x on every float in the range. */
+WL_HD static WL_INLINE wl_real wl_sph_rcp(wl_real x) {
+#if defined(__CUDA_ARCH__) && !WL_REAL_DOUBLE
+  float y;
+  asm("rcp.approx.ftz.f32 %0, %1;" : "=f"(y) : "f"(x));
+  return fmaf(-fmaf(x, y, -1.0f), y, y);
+#else
+  return WL_R(1.0) / x;
 #endif
 }
 

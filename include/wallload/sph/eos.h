@@ -19,7 +19,9 @@
  * cut after x^3 is off by < 0.19 x^3 relative to the leading term (< 2e-6 at
  * x = 0.02). It is more accurate than powf(1 + x, 1/7) - 1 in float, which
  * loses the digits of x to the rounding of 1 + x (4e-4 relative at x = 1e-3),
- * and it costs three multiplications. */
+ * and it costs two FMAs and a multiplication: the coefficients times powers
+ * of rho0 g / B are folded in once (k->ddt_h, sph/params.c), so the series
+ * runs in dz itself. */
 #ifndef WALLLOAD_SPH_EOS_H
 #define WALLLOAD_SPH_EOS_H
 
@@ -36,10 +38,7 @@ WL_HD static WL_INLINE wl_real wl_sph_eos_p(const struct wl_sph_const *k, wl_rea
 /* Hydrostatic density difference rho_H(z_j) - rho_H(z_i) [kg/m^3] for
  * dz = z_i - z_j [m] (the deeper particle is the denser). */
 WL_HD static WL_INLINE wl_real wl_sph_eos_drho_hydro(const struct wl_sph_const *k, wl_real dz) {
-  const wl_real x = k->ddt_g * dz;
-  const wl_real c1 = WL_R(1.0) / WL_R(7.0), c2 = WL_R(-3.0) / WL_R(49.0),
-                c3 = WL_R(13.0) / WL_R(343.0);
-  return k->rho0 * (x * (c1 + x * (c2 + x * c3)));
+  return dz * (k->ddt_h[0] + dz * (k->ddt_h[1] + dz * k->ddt_h[2]));
 }
 
 /* Density [kg/m^3] of pressure p [Pa] (inverse Tait), in double for set-up. */

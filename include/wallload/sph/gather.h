@@ -118,11 +118,9 @@ WL_HD static WL_INLINE void wl_sph_gather_range(const int dim, const int laminar
       const struct wl_sph_pair o =
           wl_sph_pair_eval(laminar, with_ddt, k, r2, rv, dz, in->rho[l], in->inv_rho[l], in->p[l],
                            rho_j, inv_rho_j, vol_j, p_j, av, lam);
-      if (want_ace) {
-        acc->a[0][l] += o.c_r * dx + (laminar ? o.c_v * ux : WL_R(0.0));
-        if (dim == 3) acc->a[1][l] += o.c_r * dy + (laminar ? o.c_v * uy : WL_R(0.0));
-        acc->a[2][l] += o.c_r * dz + (laminar ? o.c_v * uz : WL_R(0.0));
-      }
+      if (want_ace)
+        wl_sph_pair_add_ace(dim, laminar, &o, dx, dy, dz, ux, uy, uz, &acc->a[0][l],
+                            &acc->a[1][l], &acc->a[2][l]);
       acc->cont[l] += o.cont;
       acc->ddt[l] += o.ddt;
       acc->wsum[l] += o.wq;
@@ -158,7 +156,7 @@ WL_HD static WL_INLINE void wl_sph_gather_block(const int dim, const int laminar
       in.v[a][l] = e->vel[a][i];
     }
     in.rho[l] = e->rho[i];
-    in.inv_rho[l] = WL_R(1.0) / e->rho[i];
+    in.inv_rho[l] = wl_sph_rcp(e->rho[i]);
     in.p[l] = e->press[i];
   }
   struct wl_sph_acc f; /* fluid neighbours */
