@@ -217,23 +217,25 @@ __global__ void k_permute(struct permute_args a, struct wl_sph_const k, int n) {
   }
 }
 
-/* Block maxima of three non-negative doubles, one atomic max per block. */
+/* Block maxima of three non-negative doubles, one atomic max per block of
+ * NT threads (a multiple of 32; one warp: no block barrier). */
+template <int NT = THREADS>
 static __device__ __forceinline__ void block_max3(double a, double b, double c, struct dstats *st) {
   for (int o = 16; o > 0; o >>= 1) {
     a = fmax(a, __shfl_xor_sync(0xffffffffu, a, o));
     b = fmax(b, __shfl_xor_sync(0xffffffffu, b, o));
     c = fmax(c, __shfl_xor_sync(0xffffffffu, c, o));
   }
-  __shared__ double sh[3][THREADS / 32];
+  __shared__ double sh[3][NT / 32];
   const int w = threadIdx.x >> 5, l = threadIdx.x & 31;
-  if (l == 0) {
+  if (NT > 32 && l == 0) {
     sh[0][w] = a;
     sh[1][w] = b;
     sh[2][w] = c;
   }
-  __syncthreads();
+  if (NT > 32) __syncthreads();
   if (threadIdx.x == 0) {
-    for (int q = 1; q < THREADS / 32; q++) {
+    for (int q = 1; q < NT / 32; q++) {
       a = fmax(a, sh[0][q]);
       b = fmax(b, sh[1][q]);
       c = fmax(c, sh[2][q]);
@@ -462,12 +464,25 @@ enum { TILE = 64 };
  * warps fit an SM, which this latency-bound loop needs. Everything staged
  * is float: a build with double wl_real (WL_REAL_DOUBLE) uses the fast
  * loop instead. */
-/* Resident blocks per multiprocessor the split loop is compiled for: 8
- * caps it at 64 registers (8 x 128 threads x 64 = the register file); 8,
- * 7 and 6 ran at 4.8e8, 4.7e8 and 4.4e8 evaluations/s on the H100 (3D 1M,
- * before the staging filter): latency-bound, occupancy pays. */
+/* Threads per block of the split loop: one warp. A block's registers and
+ * shared memory are freed only when all its warps are done, and a warp
+ * done with its particles waited for its slowest sibling: with blocks of
+ * four warps ncu sampled 15 % of the warps of the loop waiting at the exit
+ * barrier, slots no new block could use. WL_SPLIT_THREADS = 128 builds the
+ * four-warp blocks for comparison (BENCHMARKS.md). */
+#ifndef WL_SPLIT_THREADS
+#define WL_SPLIT_THREADS 32
+#endif
+/* Resident threads per multiprocessor the split loop is compiled for: 1024
+ * caps it at 64 registers (1024 x 64 = the register file) and needs 32
+ * blocks of one warp (the most an SM holds) or 8 of four; 1024, 896 and
+ * 768 threads ran at 4.8e8, 4.7e8 and 4.4e8 evaluations/s on the H100 (3D
+ * 1M, before the staging filter): latency-bound, occupancy pays. 32 blocks
+ * take 32 x (6 KB + 1 KB the hardware reserves a block) = 224 KB of shared
+ * memory, within the H100's 228 KB when the carveout asks for the most
+ * (cuda_init). */
 #ifndef WL_SPLIT_MIN_BLOCKS
-#define WL_SPLIT_MIN_BLOCKS 8
+#define WL_SPLIT_MIN_BLOCKS (1024 / WL_SPLIT_THREADS)
 #endif
 /* Run slots: 0..31 a particle's first run in the batch, 32 + t the run
  * that starts at lane t's first position inside a particle's pairs. */
@@ -700,11 +715,11 @@ static __device__ __forceinline__ void split_group(const struct wl_sph_const *k,
 }
 
 template <int DIM, int LAM>
-__global__ void __launch_bounds__(THREADS, WL_SPLIT_MIN_BLOCKS)
+__global__ void __launch_bounds__(WL_SPLIT_THREADS, WL_SPLIT_MIN_BLOCKS)
     k_gather_split(const struct wl_sph_const kp, const struct wl_sph_grid gp,
                    const struct wl_sph_eval ep, int n, int nb, float skip2, wl_real r2_skip,
                    struct dstats *st) {
-  __shared__ struct split_warp warps[THREADS / 32];
+  __shared__ struct split_warp warps[WL_SPLIT_THREADS / 32];
   const struct wl_sph_const k = kp;
   const struct wl_sph_grid g = gp;
   const struct wl_sph_eval e = ep;
@@ -839,7 +854,7 @@ __global__ void __launch_bounds__(THREADS, WL_SPLIT_MIN_BLOCKS)
     }
     particle_max<DIM>(&e, i, nb, &a2, &v2, &vmax);
   }
-  block_max3(a2, v2, vmax, st);
+  block_max3<WL_SPLIT_THREADS>(a2, v2, vmax, st);
 }
 
 /* Predictor (sph/integrate.h) and the pressure of the half-step density. */
@@ -1048,10 +1063,11 @@ static enum wl_status evaluate(struct gpu *c, double *const *pos, wl_real *const
   cudaStream_t s = c->stream;
   if (c->mode == MODE_SPLIT) {
     const float skip2 = (float)(4.0 * c->k.h_d * c->k.h_d * 1.0001);
-    if (c->dim == 3 && !lam) k_gather_split<3, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, skip2, r2_skip, c->stats);
-    else if (c->dim == 3) k_gather_split<3, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, skip2, r2_skip, c->stats);
-    else if (!lam) k_gather_split<2, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, skip2, r2_skip, c->stats);
-    else k_gather_split<2, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, skip2, r2_skip, c->stats);
+    const int nbs = (n + WL_SPLIT_THREADS - 1) / WL_SPLIT_THREADS, ts = WL_SPLIT_THREADS;
+    if (c->dim == 3 && !lam) k_gather_split<3, 0><<<nbs, ts, 0, s>>>(c->k, c->grid, e, n, nb, skip2, r2_skip, c->stats);
+    else if (c->dim == 3) k_gather_split<3, 1><<<nbs, ts, 0, s>>>(c->k, c->grid, e, n, nb, skip2, r2_skip, c->stats);
+    else if (!lam) k_gather_split<2, 0><<<nbs, ts, 0, s>>>(c->k, c->grid, e, n, nb, skip2, r2_skip, c->stats);
+    else k_gather_split<2, 1><<<nbs, ts, 0, s>>>(c->k, c->grid, e, n, nb, skip2, r2_skip, c->stats);
   } else if (c->mode == MODE_FAST) {
     if (c->dim == 3 && !lam) k_gather_fast<3, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, r2_skip, c->stats);
     else if (c->dim == 3) k_gather_fast<3, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, r2_skip, c->stats);
@@ -1275,6 +1291,22 @@ static enum wl_status cuda_init(void **ctx, const struct wl_sph_config *cfg,
   if ((st = wl_sph_grid_make(cfg, k, &c->grid, err))) {
     cuda_free(c);
     return st;
+  }
+  if (c->mode == MODE_SPLIT) {
+    /* the most shared memory, so that 32 one-warp blocks fit an SM (see
+     * WL_SPLIT_MIN_BLOCKS) */
+    cudaError_t e = cudaSuccess;
+    const int most = cudaSharedmemCarveoutMaxShared;
+    const cudaFuncAttribute carve = cudaFuncAttributePreferredSharedMemoryCarveout;
+    if (e == cudaSuccess) e = cudaFuncSetAttribute(k_gather_split<3, 0>, carve, most);
+    if (e == cudaSuccess) e = cudaFuncSetAttribute(k_gather_split<3, 1>, carve, most);
+    if (e == cudaSuccess) e = cudaFuncSetAttribute(k_gather_split<2, 0>, carve, most);
+    if (e == cudaSuccess) e = cudaFuncSetAttribute(k_gather_split<2, 1>, carve, most);
+    if (e != cudaSuccess) {
+      cuda_free(c);
+      return wl_error_set(err, WL_EIO, "cuda backend: cudaFuncSetAttribute (shared memory "
+                          "carveout of the split loop) failed: %s", cudaGetErrorString(e));
+    }
   }
   const int n = c->n, n_keys = 2 * c->grid.n_cells;
   unsigned int mk = (unsigned int)(n_keys - 1);
