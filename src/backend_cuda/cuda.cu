@@ -491,9 +491,9 @@ struct split_warp {
   float4 cr[TILE]; /* candidates: offset c from the segment's origin, (|c|^2 - skip2)/2 */
   float4 cv[TILE]; /* velocity, pressure */
   float4 cj[TILE]; /* rho; wl_sph_pair_j: 1/rho, m/rho; unused */
-  float4 sr[32];   /* the warp's own particles, as cr and cv, and 1/rho */
-  float4 sv[32];
-  wl_real sinv[32];
+  float4 sr[32];   /* the warp's own particles: offset from the segment's origin, rho */
+  float4 sv[32];   /* velocity, pressure */
+  wl_real sinv[32]; /* 1/rho */
   unsigned long long mask[32];
   int excl[32];
   /* a[3], cont, ddt, visc of each run; visc < 0: no pair of the run

@@ -55,9 +55,9 @@ wl_sph_pair_eval(const int laminar, const int with_ddt, const struct wl_sph_cons
   /* One correctly rounded division for both 1/(r^2 + eta^2) and
    * 1/(rho_i + rho_j): the viscous terms only need their product, and
    * 1/(r^2 + eta^2) alone is that product times (rho_i + rho_j). One
-   * division fewer a pair (about 8 instructions on the GPU, a vector
-   * division on the CPU) for one multiplication; the quotients move by an
-   * ulp. The product is ~1e-4 m^2 x 2e3 kg/m^3: far from float's limits. */
+   * division fewer a pair (a vector division on the CPU, three
+   * instructions on the GPU, sph/defs.h wl_sph_rcp) for one
+   * multiplication; the quotients move by an ulp. The product is ~1e-4 m^2 x 2e3 kg/m^3: far from float's limits. */
   const wl_real rho_sum = rho_i + rho_j;
   const wl_real inv_r2e_rho_sum = wl_sph_rcp((r2 + k->eta2) * rho_sum);
   const wl_real inv_r2e = inv_r2e_rho_sum * rho_sum;
