@@ -484,6 +484,7 @@ enum { TILE = 64 };
 #ifndef WL_SPLIT_MIN_BLOCKS
 #define WL_SPLIT_MIN_BLOCKS (1024 / WL_SPLIT_THREADS)
 #endif
+
 /* Run slots: 0..31 a particle's first run in the batch, 32 + t the run
  * that starts at lane t's first position inside a particle's pairs. */
 enum { SPLIT_RUNS = 64 };
@@ -799,6 +800,17 @@ __global__ void __launch_bounds__(WL_SPLIT_THREADS, WL_SPLIT_MIN_BLOCKS)
           const int j = c0 + lane;
           bool keep = false;
           float4 cr = make_float4(0.f, 0.f, 0.f, 0.f);
+          /* the rest of the candidate's data is loaded with its position,
+           * before the filter: one trip to memory instead of two for the
+           * ~60 % kept (a third more bytes loaded, mostly from L2; fewer
+           * spills, +0.9 % at 1M and 8M on the H100) */
+          float4 cv = make_float4(0.f, 0.f, 0.f, 0.f);
+          wl_real rho_j = WL_R(1.0);
+          if (j < j1) {
+            rho_j = e.rho[j];
+            cv = make_float4(e.vel[0][j], DIM == 3 ? e.vel[1][j] : WL_R(0.0), e.vel[az][j],
+                             e.press[j]);
+          }
           if (j < j1) {
             cr.x = (float)(e.pos[0][j] - o0);
             cr.y = DIM == 3 ? (float)(e.pos[1][j] - o1) : 0.f;
@@ -811,11 +823,9 @@ __global__ void __launch_bounds__(WL_SPLIT_THREADS, WL_SPLIT_MIN_BLOCKS)
           const unsigned kept = __ballot_sync(0xffffffffu, keep);
           if (keep) {
             const int slot = fill + __popc(kept & ((1u << lane) - 1u));
-            const wl_real rho_j = e.rho[j];
             cr.w = 0.5f * (cr.x * cr.x + cr.y * cr.y + cr.z * cr.z - skip2);
             w->cr[slot] = cr;
-            w->cv[slot] = make_float4(e.vel[0][j], DIM == 3 ? e.vel[1][j] : WL_R(0.0),
-                                      e.vel[az][j], e.press[j]);
+            w->cv[slot] = cv;
             wl_real inv_rho_j, vol_j;
             wl_sph_pair_j(&k, rho_j, &inv_rho_j, &vol_j);
             w->cj[slot] = make_float4(rho_j, inv_rho_j, vol_j, 0.f);
