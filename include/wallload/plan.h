@@ -151,13 +151,13 @@ void wl_plan_default_numerics(struct wl_sph_params *prm);
  * Verlet step (one force evaluation, no predictor) about 150 us (35.8k and
  * 94.3k steps in 5.6 and 13.5 s, 2026-11-24). Large runs go at the force
  * loop's rate, 2.70e9 force evaluations/s for the 2D dam break of 0.89M
- * particles and 7.62e8 for the 3D one of 1.03M (h = 1.41 and 1.73 dp; the
- * 3D split loop, bench/gpu.sh 2026-11-24T08:12Z). The estimate takes the
+ * particles and 7.67e8 for the 3D one of 1.03M (h = 1.41 and 1.73 dp; the
+ * 3D split loop, bench/gpu.sh 2026-11-24T09:00Z). The estimate takes the
  * larger of the two times. */
 #define WL_PLAN_GPU_STEP_S 2.2e-4
 #define WL_PLAN_GPU_STEP_S_VERLET 1.5e-4
 #define WL_PLAN_GPU_RATE 2.70e9
-#define WL_PLAN_GPU_RATE_3D 7.62e8
+#define WL_PLAN_GPU_RATE_3D 7.67e8
 
 /* Build the plan of a validated scenario. Returns WL_OK; WL_EINPUT when a
  * formula's validity is exceeded (message names the scenario key);
