@@ -77,7 +77,7 @@ static void still_bounds(const struct wl_case_result *c, double h, double dp, in
   printf("  still water after %.0f s: rms speed %.4g m/s (bound %.4g), centre of mass moved %.3g dp\n",
          r->t[n - 1], v_rms, ref, (r->potential[n - 1] - r->potential[0]) / (mass * g * dp));
   if (quiet) CHECK_TRUE(v_rms < ref, "60 s of still water: rms speed under 1 % of sqrt(g h)");
-  else printf("  (the speed bound is asserted by the accuracy test hard_cases_still_quiet)\n");
+  else printf("  (the speed bound is asserted by the accuracy tests hard_cases[_verlet]_still_quiet)\n");
   CHECK_TRUE(fabs(r->potential[n - 1] - r->potential[0]) < STILL_SETTLE * mass * g * dp,
              "60 s of still water: the centre of mass settles less than dp/4");
 }

@@ -111,7 +111,7 @@ int main(void) {
   double worst_h = 0;
   for (int i = -100; i <= 100; i++) {
     const double x = 0.02 * i / 100.0; /* rho0 g dz / B */
-    const double dz = x / k.ddt_g;
+    const double dz = x / (k.rho0 * 9.81 / k.B); /* x = rho0 g dz / B, make()'s g */
     const double want = k.rho0 * (pow(1 + x, 1 / 7.0) - 1);
     const double got = wl_sph_eos_drho_hydro(&k, (wl_real)dz);
     const double e = fabs(got - want) / (k.rho0 * 0.02 / 7);

@@ -484,7 +484,6 @@ enum { TILE = 64 };
 #ifndef WL_SPLIT_MIN_BLOCKS
 #define WL_SPLIT_MIN_BLOCKS (1024 / WL_SPLIT_THREADS)
 #endif
-
 /* Run slots: 0..31 a particle's first run in the batch, 32 + t the run
  * that starts at lane t's first position inside a particle's pairs. */
 enum { SPLIT_RUNS = 64 };
@@ -810,8 +809,6 @@ __global__ void __launch_bounds__(WL_SPLIT_THREADS, WL_SPLIT_MIN_BLOCKS)
             rho_j = e.rho[j];
             cv = make_float4(e.vel[0][j], DIM == 3 ? e.vel[1][j] : WL_R(0.0), e.vel[az][j],
                              e.press[j]);
-          }
-          if (j < j1) {
             cr.x = (float)(e.pos[0][j] - o0);
             cr.y = DIM == 3 ? (float)(e.pos[1][j] - o1) : 0.f;
             cr.z = (float)(e.pos[az][j] - o2);

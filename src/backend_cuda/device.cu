@@ -9,6 +9,12 @@ extern "C" {
 #include "wallload/sph/defs.h"
 }
 
+/* wl_cuda_math_check's reference is nvcc's correctly rounded sqrtf and 1/x:
+ * meaningless under fast-math, which the project never builds with. */
+#if defined(__USE_FAST_MATH__)
+#error "device.cu must not be built with --use_fast_math (wl_cuda_math_check's reference)"
+#endif
+
 extern "C" int wl_cuda_built(void) { return 1; }
 
 extern "C" enum wl_status wl_cuda_device_query(struct wl_cuda_device *dev, struct wl_error *err) {

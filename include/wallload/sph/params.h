@@ -114,8 +114,8 @@ struct wl_sph_const {
   wl_real lam_ff;     /* 4 nu (Lo & Shao), fluid-fluid [m^2/s] */
   wl_real lam_fb;     /* 4 nu visc_bound_factor, fluid-boundary [m^2/s] */
   wl_real ddt_k;      /* delta * 2h * c0 (DualSPHysics DDTkh * Cs0) [m^2/s] */
-  wl_real ddt_g;      /* rho0 g / B [1/m] (DualSPHysics DDTgz) */
-  wl_real ddt_h[3];   /* the series of sph/eos.h in dz: rho0 c_n ddt_g^n [kg/m^(3+n)] */
+  wl_real ddt_h[3];   /* the series of sph/eos.h in dz: rho0 c_n (rho0 g / B)^n [kg/m^(3+n)]
+                         (rho0 g / B is DualSPHysics' DDTgz) */
   wl_real gravity[WL_SPH_DIM_MAX]; /* [m/s^2]; last used component -g */
   double dp;          /* [m] */
   double h_d;         /* h in double [m] */
