@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
 # sloshing_walls.sh: the first sloshing mode between mirror-plane end walls
 # with dynamic-boundary side walls W apart, and between dynamic-boundary
-# end walls (see sloshing_walls.c); h/dp = 10. Results go to stdout (README,
-# "Known accuracy gaps", quotes them). About 2 minutes on one core.
+# end walls (see sloshing_walls.c). Results go to stdout (README, "Known
+# accuracy gaps", quotes them). At h/dp = 10 (the default) about 2 minutes
+# on one core; the README's h/dp = 20 rows are NH=20 WIDTHS=2, about 6
+# minutes a run on 16 cores (THREADS=16).
 #
-#   usage: bench/sloshing_walls.sh [BUILD_DIR]      (default: build)
+#   usage: [NH=h/dp] [WIDTHS="W ..."] [THREADS=N] bench/sloshing_walls.sh [BUILD_DIR]
+#          (defaults: NH=10, WIDTHS="0.25 0.5 1 2", THREADS=1, build)
 #
 # BUILD_DIR must hold a Release build of the libraries (cmake --build).
 set -eu
@@ -18,5 +21,6 @@ for m in plan scenario explosion waves units scene backend_cpu sph error; do lib
 gcc -std=c11 -O3 -fopenmp -I"$root/include" -I"$build/include" "$root/bench/sloshing_walls.c" \
   -Wl,--start-group $libs -Wl,--end-group -lgsl -lgslcblas -lyaml -lm -o "$exe"
 echo "# $(lscpu | grep 'Model name' | sed 's/  */ /g'), $(date -u +%Y-%m-%d)"
-for w in 0.25 0.5 1 2; do OMP_NUM_THREADS=${THREADS:-1} "$exe" y 10 "$w"; done
-OMP_NUM_THREADS=${THREADS:-1} "$exe" x 10 0.25
+nh=${NH:-10}
+for w in ${WIDTHS:-0.25 0.5 1 2}; do OMP_NUM_THREADS=${THREADS:-1} "$exe" y "$nh" "$w"; done
+OMP_NUM_THREADS=${THREADS:-1} "$exe" x "$nh" 0.25
