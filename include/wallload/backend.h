@@ -39,6 +39,9 @@ struct wl_sph_step_in {
   long step;  /* number of this step (0 = first) */
   /* velocity of each moving body over this step [m/s]; row 0 unused */
   double body_vel[WL_SPH_BODIES_MAX + 1][WL_SPH_DIM_MAX];
+  /* acceleration of each moving body at the step start [m/s^2] (the wall
+   * condition's inertial term, sph/wall.h); row 0 unused */
+  double body_acc[WL_SPH_BODIES_MAX + 1][WL_SPH_DIM_MAX];
 };
 
 /* Result of one step (or of the initial force evaluation). */

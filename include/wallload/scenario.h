@@ -45,6 +45,7 @@ enum wl_explosion_model_choice { WL_MODEL_CRATER, WL_MODEL_THROWN_MASS };
 enum wl_backend_choice { WL_BACKEND_AUTO, WL_BACKEND_CPU, WL_BACKEND_CUDA };
 enum wl_viscosity_choice { WL_VISCOSITY_ARTIFICIAL, WL_VISCOSITY_LAMINAR };
 enum wl_integrator_choice { WL_INTEGRATOR_SYMPLECTIC, WL_INTEGRATOR_VERLET };
+enum wl_boundary_choice { WL_BOUNDARY_ADAMI, WL_BOUNDARY_DBC };
 /* What closes the flume behind the seawall: a wall, or a damping zone over
  * the far half of the land that brings overtopping water to rest. */
 enum wl_far_end_choice { WL_FAR_END_WALL, WL_FAR_END_DAMPING };
@@ -109,7 +110,7 @@ struct wl_scenario {
   } run;
   struct {
     struct wl_scenario_value coefh, coefsound, cfl, alpha, viscosity, nu, density_diffusion,
-        shifting, integrator, verlet_steps;
+        shifting, integrator, verlet_steps, boundary;
   } numerics;
   struct {
     struct wl_scenario_value template_name;

@@ -92,7 +92,7 @@ static enum wl_status boundary_force(struct run_ctx *rc, const struct wl_particl
       wl_real rho_i = p->rho[i], p_i = wl_sph_eos_p(k, rho_i), rv = dx * vx + dz * vz;
       if (d3) rv += dy * ((mirror ? -p->vel[1][i] : p->vel[1][i]) - p->vel[1][j]);
       wl_real inv_rho_j, vol_j;
-      wl_sph_pair_j(k, rho_j, &inv_rho_j, &vol_j);
+      wl_sph_pair_j_bound(k, rho_j, &inv_rho_j, &vol_j);
       /* the solver's own fluid-boundary pair term (no density diffusion) */
       struct wl_sph_pair pr =
           laminar ? wl_sph_pair_eval(1, 0, k, r2, rv, dz, rho_i, 1 / rho_i, p_i, rho_j, inv_rho_j,

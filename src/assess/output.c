@@ -386,6 +386,10 @@ static enum wl_status write_summary(const struct wl_scenario *s, const struct wl
       jval(&t, "density_diffusion", prm->ddt == WL_SPH_DDT_NONE ? 0.0 : prm->delta, "1",
            "delta-SPH coefficient (0: off)", 0);
       jval(&t, "shifting", prm->shift_coef, "1", "particle shifting coefficient A (0: off)", 0);
+      jval(&t, "wall_condition", prm->boundary, "1",
+           prm->boundary == WL_SPH_BOUND_DBC ? "0: dynamic boundary particles (DBC)"
+                                             : "1: pressure from the fluid (Adami et al. 2012)",
+           0);
       jval(&t, "force_evaluations_per_step", prm->integrator == WL_SPH_VERLET ? 1 : 2, "1",
            prm->integrator == WL_SPH_VERLET ? "Verlet integrator" : "symplectic integrator", 0);
     }

@@ -19,6 +19,7 @@
 #include "wallload/sph/shift.h"
 #include "wallload/sph/guard.h"
 #include "wallload/sph/integrate.h"
+#include "wallload/sph/wall.h"
 
 struct cpu;
 struct eval_stats;
@@ -307,6 +308,11 @@ static void evaluate(struct cpu *c, double *const *pos, wl_real *const *vel, wl_
   wl_real *press = p->press;
   const int n_keys = 2 * c->grid.n_cells;
   const int n_chunks = (n_keys + CELLS_PER_CHUNK - 1) / CELLS_PER_CHUNK;
+  /* with the wall condition the force loop visits the fluid keys only
+   * (key_first = nc .. 2 nc - 1), from the chunk that holds key nc */
+  const int wall_bc = k->boundary == WL_SPH_BOUND_ADAMI, nb = p->n_bound;
+  const int nb_eos = wall_bc ? nb : 0;
+  const int key_first = wall_bc ? c->grid.n_cells : 0, b_first = key_first / CELLS_PER_CHUNK;
 #pragma omp parallel num_threads(threads(c))
   {
     if (in) {
@@ -315,12 +321,22 @@ static void evaluate(struct cpu *c, double *const *pos, wl_real *const *vel, wl_
         wl_sph_predict(dim, k, p, in->dt, (const double(*)[WL_SPH_DIM_MAX])in->body_vel, i);
     }
 #pragma omp for schedule(static)
-    for (int i = 0; i < n; i++) press[i] = wl_sph_eos_p(k, rho[i]);
+    for (int i = nb_eos; i < n; i++) press[i] = wl_sph_eos_p(k, rho[i]);
+    if (wall_bc) {
+      /* the wall condition (sph/wall.h) from the fluid's pressures: the
+       * boundary particles' density and pressure before the fluid reads them */
+#pragma omp for schedule(dynamic, 64)
+      for (int i = 0; i < nb; i++) {
+        const double *aw = p->kind[i] == WL_KIND_MOVING && in ? in->body_acc[p->body[i]] : NULL;
+        if (dim == 2) wl_sph_wall_sample(2, k, &c->grid, &e, aw, i, rho, press);
+        else wl_sph_wall_sample(3, k, &c->grid, &e, aw, i, rho, press);
+      }
+    }
     struct eval_stats mine = {0, 0, 0};
 #pragma omp for schedule(dynamic, 1)
-    for (int b = 0; b < n_chunks; b++) {
-      const int c0 = b * CELLS_PER_CHUNK;
-      block(c, &e, c0, c0 + CELLS_PER_CHUNK < n_keys ? c0 + CELLS_PER_CHUNK : n_keys, &mine);
+    for (int b = b_first; b < n_chunks; b++) {
+      const int c0 = b * CELLS_PER_CHUNK, c1 = c0 + CELLS_PER_CHUNK < n_keys ? c0 + CELLS_PER_CHUNK : n_keys;
+      block(c, &e, c0 > key_first ? c0 : key_first, c1, &mine);
     }
 #pragma omp critical
     {

@@ -64,6 +64,7 @@ extern "C" {
 #include "wallload/sph/gather.h"
 #include "wallload/sph/guard.h"
 #include "wallload/sph/integrate.h"
+#include "wallload/sph/wall.h"
 #include "wallload/sph/shift.h"
 
 /* Threads per block of every particle kernel. */
@@ -267,11 +268,11 @@ static __device__ __forceinline__ void particle_max(const struct wl_sph_eval *e,
 template <int DIM, int LAM>
 __global__ void __launch_bounds__(THREADS)
     k_gather_ref(const struct wl_sph_const kp, const struct wl_sph_grid gp,
-                 const struct wl_sph_eval ep, int n, int nb, struct dstats *st) {
+                 const struct wl_sph_eval ep, int i0, int n, int nb, struct dstats *st) {
   const struct wl_sph_const k = kp;
   const struct wl_sph_grid g = gp;
   const struct wl_sph_eval e = ep;
-  const int i = tid();
+  const int i = i0 + tid();
   double a2 = 0, v2 = 0, vi = 0;
   if (i < n) {
     wl_sph_gather(DIM, LAM, &k, &g, &e, nb, i);
@@ -313,7 +314,8 @@ static __device__ __forceinline__ void range_fast(const struct wl_sph_const *k,
                   uzj = __ldg(e->vel[az] + j);
     const wl_real rho_j = __ldg(e->rho + j), p_j = __ldg(e->press + j);
     wl_real inv_rho_j, vol_j;
-    wl_sph_pair_j(k, rho_j, &inv_rho_j, &vol_j);
+    if (WANT_ACE && !WITH_DDT) wl_sph_pair_j_bound(k, rho_j, &inv_rho_j, &vol_j); /* as gather.h */
+    else wl_sph_pair_j(k, rho_j, &inv_rho_j, &vol_j);
     const wl_real ux = vi[0] - uxj;
     const wl_real uy = DIM == 3 ? vi[1] - uyj : WL_R(0.0);
     const wl_real uz = vi[2] - uzj;
@@ -369,11 +371,12 @@ static __device__ __forceinline__ void mirror_fast(const struct wl_sph_const *k,
 template <int DIM, int LAM>
 __global__ void __launch_bounds__(THREADS)
     k_gather_fast(const struct wl_sph_const kp, const struct wl_sph_grid gp,
-                  const struct wl_sph_eval ep, int n, int nb, wl_real r2_skip, struct dstats *st) {
+                  const struct wl_sph_eval ep, int i0, int n, int nb, wl_real r2_skip,
+                  struct dstats *st) {
   const struct wl_sph_const k = kp;
   const struct wl_sph_grid g = gp;
   const struct wl_sph_eval e = ep;
-  const int i = tid();
+  const int i = i0 + tid();
   double a2 = 0, v2 = 0, vmax = 0;
   if (i < n) {
     const int nc = g.n_cells;
@@ -717,13 +720,13 @@ static __device__ __forceinline__ void split_group(const struct wl_sph_const *k,
 template <int DIM, int LAM>
 __global__ void __launch_bounds__(WL_SPLIT_THREADS, WL_SPLIT_MIN_BLOCKS)
     k_gather_split(const struct wl_sph_const kp, const struct wl_sph_grid gp,
-                   const struct wl_sph_eval ep, int n, int nb, float skip2, wl_real r2_skip,
-                   struct dstats *st) {
+                   const struct wl_sph_eval ep, int i0, int n, int nb, float skip2,
+                   wl_real r2_skip, struct dstats *st) {
   __shared__ struct split_warp warps[WL_SPLIT_THREADS / 32];
   const struct wl_sph_const k = kp;
   const struct wl_sph_grid g = gp;
   const struct wl_sph_eval e = ep;
-  const int i = tid(), lane = threadIdx.x & 31;
+  const int i = i0 + tid(), lane = threadIdx.x & 31;
   struct split_warp *const w = warps + (threadIdx.x >> 5);
   const int nc = g.n_cells, nx = g.n[0], az = DIM - 1;
   const bool active = i < n;
@@ -824,7 +827,8 @@ __global__ void __launch_bounds__(WL_SPLIT_THREADS, WL_SPLIT_MIN_BLOCKS)
             w->cr[slot] = cr;
             w->cv[slot] = cv;
             wl_real inv_rho_j, vol_j;
-            wl_sph_pair_j(&k, rho_j, &inv_rho_j, &vol_j);
+            if (grp) wl_sph_pair_j(&k, rho_j, &inv_rho_j, &vol_j);
+            else wl_sph_pair_j_bound(&k, rho_j, &inv_rho_j, &vol_j); /* fluid i, boundary j */
             w->cj[slot] = make_float4(rho_j, inv_rho_j, vol_j, 0.f);
           }
           fill += __popc(kept);
@@ -862,6 +866,27 @@ __global__ void __launch_bounds__(WL_SPLIT_THREADS, WL_SPLIT_MIN_BLOCKS)
     particle_max<DIM>(&e, i, nb, &a2, &v2, &vmax);
   }
   block_max3<WL_SPLIT_THREADS>(a2, v2, vmax, st);
+}
+
+/* The wall condition (sph/wall.h), one thread per boundary particle:
+ * its density and pressure from the fluid's, before the fluid's force
+ * loop reads them. ba: the moving bodies' accelerations [m/s^2]. */
+struct wallin {
+  const unsigned char *kind, *body;
+  wl_real *rho, *press;
+  double acc[WL_SPH_BODIES_MAX + 1][WL_SPH_DIM_MAX];
+};
+template <int DIM>
+__global__ void __launch_bounds__(THREADS)
+    k_wall(const struct wl_sph_const kp, const struct wl_sph_grid gp, const struct wl_sph_eval ep,
+           int nb, const struct wallin w) {
+  const struct wl_sph_const k = kp;
+  const struct wl_sph_grid g = gp;
+  const struct wl_sph_eval e = ep;
+  const int i = tid();
+  if (i >= nb) return;
+  const double *aw = w.kind[i] == WL_KIND_MOVING ? w.acc[w.body[i]] : NULL;
+  wl_sph_wall_sample(DIM, &k, &g, &e, aw, i, w.rho, w.press);
 }
 
 /* Predictor (sph/integrate.h) and the pressure of the half-step density. */
@@ -1047,9 +1072,13 @@ static enum wl_status rebuild(struct gpu *c, struct wl_error *err) {
   return WL_OK;
 }
 
-/* One force evaluation at (pos, vel, rho) with press already filled. */
+/* One force evaluation at (pos, vel, rho) with press already filled; with
+ * the wall condition, the boundary particles' rho and press are sampled
+ * first (body_acc: the moving bodies' accelerations, NULL at rest) and the
+ * force loop visits the fluid only. */
 static enum wl_status evaluate(struct gpu *c, double *const *pos, wl_real *const *vel,
-                               const wl_real *rho, struct wl_error *err) {
+                               wl_real *rho, const double (*body_acc)[WL_SPH_DIM_MAX],
+                               struct wl_error *err) {
   struct wl_sph_eval e;
   memset(&e, 0, sizeof e);
   for (int a = 0; a < WL_SPH_DIM_MAX; a++) {
@@ -1064,27 +1093,41 @@ static enum wl_status evaluate(struct gpu *c, double *const *pos, wl_real *const
   e.ar = c->ar;
   e.visc = c->visc;
   const int n = c->n, nb = c->nb, lam = c->k.visc == WL_SPH_VISC_LAMINAR;
-  const int nbk = blocks(n);
+  cudaStream_t s = c->stream;
+  const int wall_bc = c->k.boundary == WL_SPH_BOUND_ADAMI, i0 = wall_bc ? nb : 0;
+  if (wall_bc && nb > 0) {
+    struct wallin w;
+    memset(&w, 0, sizeof w);
+    w.kind = c->kind;
+    w.body = c->body;
+    w.rho = rho;
+    w.press = c->press;
+    if (body_acc) memcpy(w.acc, body_acc, sizeof w.acc);
+    if (c->dim == 3) k_wall<3><<<blocks(nb), THREADS, 0, s>>>(c->k, c->grid, e, nb, w);
+    else k_wall<2><<<blocks(nb), THREADS, 0, s>>>(c->k, c->grid, e, nb, w);
+    CKL("wall");
+  }
+  const int nbk = blocks(n - i0);
   /* skip threshold: (2h)^2 with a relative margin far above float rounding */
   const wl_real r2_skip = c->k.support2 * WL_R(1.0001);
-  cudaStream_t s = c->stream;
+  if (n == i0) return WL_OK;
   if (c->mode == MODE_SPLIT) {
     const float skip2 = (float)(4.0 * c->k.h_d * c->k.h_d * 1.0001);
-    const int nbs = (n + WL_SPLIT_THREADS - 1) / WL_SPLIT_THREADS, ts = WL_SPLIT_THREADS;
-    if (c->dim == 3 && !lam) k_gather_split<3, 0><<<nbs, ts, 0, s>>>(c->k, c->grid, e, n, nb, skip2, r2_skip, c->stats);
-    else if (c->dim == 3) k_gather_split<3, 1><<<nbs, ts, 0, s>>>(c->k, c->grid, e, n, nb, skip2, r2_skip, c->stats);
-    else if (!lam) k_gather_split<2, 0><<<nbs, ts, 0, s>>>(c->k, c->grid, e, n, nb, skip2, r2_skip, c->stats);
-    else k_gather_split<2, 1><<<nbs, ts, 0, s>>>(c->k, c->grid, e, n, nb, skip2, r2_skip, c->stats);
+    const int nbs = (n - i0 + WL_SPLIT_THREADS - 1) / WL_SPLIT_THREADS, ts = WL_SPLIT_THREADS;
+    if (c->dim == 3 && !lam) k_gather_split<3, 0><<<nbs, ts, 0, s>>>(c->k, c->grid, e, i0, n, nb, skip2, r2_skip, c->stats);
+    else if (c->dim == 3) k_gather_split<3, 1><<<nbs, ts, 0, s>>>(c->k, c->grid, e, i0, n, nb, skip2, r2_skip, c->stats);
+    else if (!lam) k_gather_split<2, 0><<<nbs, ts, 0, s>>>(c->k, c->grid, e, i0, n, nb, skip2, r2_skip, c->stats);
+    else k_gather_split<2, 1><<<nbs, ts, 0, s>>>(c->k, c->grid, e, i0, n, nb, skip2, r2_skip, c->stats);
   } else if (c->mode == MODE_FAST) {
-    if (c->dim == 3 && !lam) k_gather_fast<3, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, r2_skip, c->stats);
-    else if (c->dim == 3) k_gather_fast<3, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, r2_skip, c->stats);
-    else if (!lam) k_gather_fast<2, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, r2_skip, c->stats);
-    else k_gather_fast<2, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, r2_skip, c->stats);
+    if (c->dim == 3 && !lam) k_gather_fast<3, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, i0, n, nb, r2_skip, c->stats);
+    else if (c->dim == 3) k_gather_fast<3, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, i0, n, nb, r2_skip, c->stats);
+    else if (!lam) k_gather_fast<2, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, i0, n, nb, r2_skip, c->stats);
+    else k_gather_fast<2, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, i0, n, nb, r2_skip, c->stats);
   } else {
-    if (c->dim == 3 && !lam) k_gather_ref<3, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, c->stats);
-    else if (c->dim == 3) k_gather_ref<3, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, c->stats);
-    else if (!lam) k_gather_ref<2, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, c->stats);
-    else k_gather_ref<2, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, n, nb, c->stats);
+    if (c->dim == 3 && !lam) k_gather_ref<3, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, i0, n, nb, c->stats);
+    else if (c->dim == 3) k_gather_ref<3, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, i0, n, nb, c->stats);
+    else if (!lam) k_gather_ref<2, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, i0, n, nb, c->stats);
+    else k_gather_ref<2, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, i0, n, nb, c->stats);
   }
   CKL("gather");
   return WL_OK;
@@ -1168,13 +1211,14 @@ static enum wl_status cuda_step(void *ctx, const struct wl_sph_step_in *in,
     else k_shift<2><<<blocks(nf), THREADS, 0, c->stream>>>(c->k, c->grid, e, c->n, c->nb, in->dt, sp);
     CKL("shift");
   }
-  if ((st = evaluate(c, c->pos, c->vel, c->rho, err))) return st;
+  const double(*acc)[WL_SPH_DIM_MAX] = in->body_acc;
+  if ((st = evaluate(c, c->pos, c->vel, c->rho, acc, err))) return st;
   if (c->k.integrator == WL_SPH_VERLET) return finish(c, in, &bv, out, err);
   struct wl_particles p = view(c);
   if (c->dim == 3) k_predict<3><<<blocks(c->n), THREADS, 0, c->stream>>>(c->k, p, in->dt, bv, c->n);
   else k_predict<2><<<blocks(c->n), THREADS, 0, c->stream>>>(c->k, p, in->dt, bv, c->n);
   CKL("predict");
-  if ((st = evaluate(c, c->pos_h, c->vel_h, c->rho_h, err))) return st;
+  if ((st = evaluate(c, c->pos_h, c->vel_h, c->rho_h, acc, err))) return st;
   return finish(c, in, &bv, out, err);
 }
 
@@ -1444,7 +1488,7 @@ static enum wl_status cuda_init(void **ctx, const struct wl_sph_config *cfg,
   /* forces of the initial state give the first dt (as the CPU backend) */
   struct bodyvel bv;
   memset(&bv, 0, sizeof bv);
-  if ((st = rebuild(c, err)) || (st = evaluate(c, c->pos, c->vel, c->rho, err)) ||
+  if ((st = rebuild(c, err)) || (st = evaluate(c, c->pos, c->vel, c->rho, NULL, err)) ||
       (st = finish(c, NULL, &bv, out, err))) {
     cuda_free(c);
     return st;

@@ -107,6 +107,8 @@ static void set_params(const struct wl_scenario *s, const struct wl_plan *plan, 
   prm->integrator = s->numerics.integrator.choice == WL_INTEGRATOR_VERLET ? WL_SPH_VERLET
                                                                           : WL_SPH_SYMPLECTIC;
   prm->verlet_steps = (int)s->numerics.verlet_steps.q.si;
+  prm->boundary = s->numerics.boundary.choice == WL_BOUNDARY_DBC ? WL_SPH_BOUND_DBC
+                                                                 : WL_SPH_BOUND_ADAMI;
   if (!s->run.threads.is_auto) cfg->n_threads = (int)s->run.threads.q.si;
 }
 

@@ -866,7 +866,7 @@ enum wl_status wl_report_render_metadata(struct wl_report_ctx *c, const struct w
 
   if (!st && r->have_scenario) {
     const struct wl_scenario *sc = &r->scenario;
-    char v[12][160];
+    char v[13][160];
     struct wl_report_kv num[] = {
         {"coefh (h = coefh sqrt(dim) dp)", value_text(&sc->numerics.coefh, v[0], 160), 0, NULL, 0},
         {"coefsound (c0 = coefsound sqrt(g h_max))", value_text(&sc->numerics.coefsound, v[1], 160),
@@ -880,6 +880,7 @@ enum wl_status wl_report_render_metadata(struct wl_report_ctx *c, const struct w
         {"time integrator", value_text(&sc->numerics.integrator, v[10], 160), 0, NULL, 0},
         {"Euler step every (Verlet)", value_text(&sc->numerics.verlet_steps, v[11], 160), 0, NULL,
          0},
+        {"wall condition", value_text(&sc->numerics.boundary, v[12], 160), 0, NULL, 0},
         {"output interval", value_text(&sc->run.output_interval, v[8], 160), 0, NULL, 0},
         {"end time", value_text(&sc->run.end_time, v[9], 160), 0, NULL, 0},
     };

@@ -23,6 +23,7 @@ static const char *const model_choices[] = {"crater", "thrown-mass", NULL};
 static const char *const backend_choices[] = {"auto", "cpu", "cuda", NULL};
 static const char *const viscosity_choices[] = {"artificial", "laminar", NULL};
 static const char *const onoff_choices[] = {"off", "on", NULL};
+static const char *const boundary_choices[] = {"adami", "dbc", NULL}; /* wl_boundary_choice */
 static const char *const integrator_choices[] = {"symplectic", "verlet", NULL};
 static const char *const far_end_choices[] = {"wall", "damping", NULL};
 static const char *const symmetry_choices[] = {"auto", "none", "centreline", NULL};
@@ -166,6 +167,10 @@ static const struct wl_key numerics_keys[] = {
      "fast)"},
     {"verlet_steps", KT_INT, WL_DIM_NONE, OFF(numerics.verlet_steps), NULL, 1, 1000, 0, 0, "40",
      NULL, NO_FLAG, 0, "verlet: an Euler step every this many steps (DualSPHysics VerletSteps)"},
+    {"boundary", KT_ENUM, WL_DIM_NONE, OFF(numerics.boundary), boundary_choices, NONE, NONE, 0, 0,
+     "adami", NULL, NO_FLAG, 0,
+     "wall condition: adami (boundary particles take the fluid's pressure, Adami et al. 2012) or "
+     "dbc (dynamic boundary particles, as DualSPHysics' DBC)"},
     {0}};
 
 static const struct wl_key report_keys[] = {

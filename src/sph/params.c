@@ -22,6 +22,7 @@ void wl_sph_params_default(struct wl_sph_params *prm, int dim, double dp, double
   prm->delta = 0.1;     /* DualSPHysics DensityDTvalue */
   prm->cfl = 0.2;       /* DualSPHysics CFLnumber */
   prm->integrator = WL_SPH_SYMPLECTIC;
+  prm->boundary = WL_SPH_BOUND_ADAMI;
   prm->verlet_steps = 40; /* DualSPHysics VerletSteps */
   prm->dt_collapse = 1e-3;
   prm->rho_min_factor = 0.7; /* DualSPHysics RhopOutMin 700 for rho0 1000 */
@@ -56,6 +57,8 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
     return bad(err, "ddt", prm->ddt, "must be 0 (none), 1 (Fourtakas) or 2 (Fourtakas, full)");
   if (!(prm->delta >= 0 && prm->delta <= 1)) return bad(err, "delta", prm->delta, "must be in [0, 1]");
   if (!(prm->cfl > 0 && prm->cfl <= 1)) return bad(err, "cfl", prm->cfl, "must be in (0, 1]");
+  if (prm->boundary != WL_SPH_BOUND_DBC && prm->boundary != WL_SPH_BOUND_ADAMI)
+    return bad(err, "boundary", prm->boundary, "must be 0 (dbc) or 1 (adami)");
   if (prm->integrator != WL_SPH_SYMPLECTIC && prm->integrator != WL_SPH_VERLET)
     return bad(err, "integrator", prm->integrator, "must be 0 (symplectic) or 1 (Verlet)");
   if (!(prm->verlet_steps >= 1 && prm->verlet_steps <= 1000))
@@ -90,6 +93,7 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
   k->dim = dim;
   k->visc = prm->visc;
   k->ddt = prm->ddt;
+  k->boundary = prm->boundary;
   k->h = (wl_real)h;
   k->inv_h = (wl_real)(1.0 / h);
   k->support2 = (wl_real)(4.0 * h * h);

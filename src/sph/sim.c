@@ -207,9 +207,14 @@ enum wl_status wl_sph_sim_step(struct wl_sph_sim *sim, double dt_max, struct wl_
   in.dt_prev = sim->dt_last;
   in.step = sim->steps;
   for (int b = 1; b <= WL_SPH_BODIES_MAX; b++)
-    if (sim->motion[b].type != WL_SPH_MOTION_NONE)
-      in.body_vel[b][0] =
-          (motion_x(&sim->motion[b], sim->t + in.dt) - motion_x(&sim->motion[b], sim->t)) / in.dt;
+    if (sim->motion[b].type != WL_SPH_MOTION_NONE) {
+      const struct body_motion *m = &sim->motion[b];
+      const double x0 = motion_x(m, sim->t), x1 = motion_x(m, sim->t + in.dt);
+      in.body_vel[b][0] = (x1 - x0) / in.dt;
+      /* central difference at the step start; one-sided at t = 0 (at rest before) */
+      const double xm = sim->t > in.dt ? motion_x(m, sim->t - in.dt) : x0;
+      in.body_acc[b][0] = (x1 - 2.0 * x0 + xm) / (in.dt * in.dt);
+    }
   struct wl_sph_step_out out;
   enum wl_status st = sim->ops->step(sim->ctx, &in, &out, err);
   sim->host_valid = 0;

@@ -104,7 +104,10 @@ WL_HD static WL_INLINE void wl_sph_gather_range(const int dim, const int laminar
     const wl_real uyj = dim != 3 ? WL_R(0.0) : mirror ? -e->vel[1][j] : e->vel[1][j];
     const wl_real rho_j = e->rho[j], p_j = e->press[j];
     wl_real inv_rho_j, vol_j;
-    wl_sph_pair_j(k, rho_j, &inv_rho_j, &vol_j);
+    /* the pairs with an acceleration and no density diffusion are exactly
+     * those of a fluid i with a boundary j (wl_sph_gather_block) */
+    if (want_ace && !with_ddt) wl_sph_pair_j_bound(k, rho_j, &inv_rho_j, &vol_j);
+    else wl_sph_pair_j(k, rho_j, &inv_rho_j, &vol_j);
     for (int l = 0; l < lanes; l++) {
       /* position differences in double, narrowed (sph/defs.h) */
       const wl_real dx = (wl_real)(in->x[0][l] - xj);

@@ -110,4 +110,22 @@ WL_HD static WL_INLINE void wl_sph_pair_j(const struct wl_sph_const *k, wl_real 
   *vol_j = k->mass * *inv_rho_j;
 }
 
+/* The same for a boundary neighbour j. With the wall condition (sph/wall.h)
+ * a wall particle's volume is its lattice cell, m/rho0, whatever the
+ * pressure it carries: a wall does not compress (Adami et al. 2012 keep
+ * the wall particles' volumes fixed likewise). Were its volume m/rho_w, a
+ * wall under the pressure p would push a fraction p/(7B) too weakly (1 %
+ * at the bed of a still tank at coefsound 10: test_sph_wall). With the
+ * dynamic condition the boundary particle's density gives both, as a fluid
+ * particle's. */
+WL_HD static WL_INLINE void wl_sph_pair_j_bound(const struct wl_sph_const *k, wl_real rho_j,
+                                                wl_real *inv_rho_j, wl_real *vol_j) {
+  if (k->boundary == WL_SPH_BOUND_ADAMI) {
+    *inv_rho_j = k->inv_rho0;
+    *vol_j = k->mass * k->inv_rho0;
+  } else {
+    wl_sph_pair_j(k, rho_j, inv_rho_j, vol_j);
+  }
+}
+
 #endif

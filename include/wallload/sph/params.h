@@ -34,6 +34,19 @@ enum wl_sph_ddt {
   WL_SPH_DDT_FOURTAKAS_FULL = 2,
 };
 
+/* Wall boundary condition of the boundary particles. */
+enum wl_sph_boundary {
+  /* Dynamic boundary particles (Crespo et al. 2007, CMC 5:173): boundary
+   * particles integrate their own continuity equation, so a wall pushes
+   * back only once the fluid has compressed it (DualSPHysics' DBC; kept
+   * for comparison with DualSPHysics runs). */
+  WL_SPH_BOUND_DBC = 0,
+  /* Boundary particles take their pressure from the fluid next to them:
+   * Adami, Hu & Adams (2012) generalized wall condition, sph/wall.h.
+   * Default. */
+  WL_SPH_BOUND_ADAMI = 1,
+};
+
 /* Time integrator (sph/integrate.h). */
 enum wl_sph_integrator {
   WL_SPH_SYMPLECTIC = 0, /* symplectic position Verlet: two force evaluations a step (default) */
@@ -57,6 +70,7 @@ struct wl_sph_params {
   double delta;             /* density diffusion coefficient [-]; default 0.1 */
   double cfl;               /* CFL number [-]; default 0.2 */
   enum wl_sph_integrator integrator; /* default WL_SPH_SYMPLECTIC */
+  enum wl_sph_boundary boundary;     /* wall condition; default WL_SPH_BOUND_ADAMI */
   int verlet_steps;         /* Verlet: an Euler step every verlet_steps steps; default 40
                                (DualSPHysics VerletSteps) */
   /* Guard (instability detection after every step; see sph/guard.h). */
@@ -98,6 +112,7 @@ struct wl_sph_const {
   int dim;
   enum wl_sph_visc visc;
   enum wl_sph_ddt ddt;
+  enum wl_sph_boundary boundary;
   wl_real h;          /* smoothing length [m] */
   wl_real inv_h;      /* 1/h [1/m] */
   wl_real support2;   /* (2h)^2 [m^2] */
