@@ -12,6 +12,12 @@
 #                              both scenarios on both backends, one after the
 #                              other; $OUT/e2e.log, $OUT/e2e.tgz (summary.json
 #                              and CSV of each run), the GPU seawall report
+#   bench/assess_e2e.sh walls  there (carry [".e2e"]): issue 17's wall-condition
+#                              set: the CPU/GPU test, the bench cost of the
+#                              wall condition against DBC, 3D and 2D dam
+#                              breaks to the end with assess's numerics, and
+#                              seawall.yaml with each wall condition on the
+#                              GPU; $OUT/walls.log, $OUT/walls.tgz
 #   python3 bench/assess_compare.py DIR   here, on the unpacked e2e.tgz
 set -u
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -24,7 +30,8 @@ pack)
   cmake --build build-e2e -j2 --target wallload >/dev/null
   grep -qx '/.e2e/' .git/info/exclude || echo /.e2e/ >>.git/info/exclude
   rm -rf "$E" && mkdir -p "$E/lib" "$E/fonts"
-  cp build-e2e/wallload "$E/"
+  cmake --build build-e2e -j2 --target test_cuda_backend >/dev/null
+  cp build-e2e/wallload build-e2e/tests/test_cuda_backend "$E/"
   ldd build-e2e/wallload | awk '$3 ~ /^\// {print $3}' |
     grep -v -E '/(libc|libm|libdl|libpthread|librt|libresolv|ld-linux-x86-64)\.so' |
     xargs -I{} cp -L {} "$E/lib/"
@@ -76,5 +83,35 @@ run)
   (cd $R && tar czf "$out/e2e.tgz" */summary.json */*.csv *.log)
   cp $R/sea_cuda/report.pdf "$out/sea_cuda_report.pdf" 2>/dev/null
   ;;
-*) echo "usage: bench/assess_e2e.sh pack|run" >&2; exit 2 ;;
+walls)
+  R=/tmp/walls; mkdir -p $R; out=${OUT:-/tmp}
+  export FONTCONFIG_FILE=$E/fonts.conf LD_LIBRARY_PATH=$E/lib
+  W=$E/wallload
+  # the same scenario with the dynamic boundary condition (its numerics block
+  # is in block style: the key goes in under it)
+  sed 's/^numerics:$/numerics:\n  boundary: dbc/' "$root/scenarios/seawall.yaml" >$R/seawall-dbc.yaml
+  {
+    echo "# $(date -u +%FT%TZ) $(nvidia-smi --query-gpu=name,memory.total,driver_version --format=csv,noheader 2>&1)"
+    "$W" --version
+    echo "== CPU/GPU agreement"; timeout 240 "$E/test_cuda_backend" 2>&1 | grep -E '^(FAIL|INFO)|passed|failed' | grep -v '^PASS' | tail -25
+    if [ -z "${WALLS_NO_COST:-}" ]; then
+      echo "== cost: wall condition vs DBC (DualSPHysics numerics, equal layers)"
+      for b in adami dbc; do "$W" bench --backend cuda --case dambreak3d --particles 1.04e6 --steps 100 --boundary $b | tail -2; done
+      "$W" bench --backend cuda --case dambreak3d --particles 1.04e6 --steps 100 --boundary dbc --layers 2 | tail -2
+      for b in adami dbc; do "$W" bench --backend cuda --case dambreak2d --particles 8.9e5 --steps 100 --boundary $b | tail -2; done
+    fi
+    echo "== stability: dam breaks to the end with assess's numerics (default walls)"
+    for v in ${WALLS_VARIANTS:---boundary_adami}; do  # variants: options joined by _
+      echo "-- ${v//_/ }"
+      timeout ${WALLS_T3D:-150} "$W" bench --backend cuda --case dambreak3d --particles 1.04e6 --until 1.6 --numerics assess ${v//_/ } | tail -3
+      timeout ${WALLS_T2D:-60} "$W" bench --backend cuda --case dambreak2d --particles 1e5 --until 3 --numerics assess ${v//_/ } | tail -3
+    done
+    [ -n "${WALLS_NO_SEAWALL:-}" ] && exit 0
+    echo "== seawall.yaml on the GPU"
+    timeout 120 "$W" assess "$root/scenarios/seawall.yaml" --backend cuda --quiet -o $R/sea_adami >$R/sea_adami.log 2>&1; echo "rc=$?"; tail -30 $R/sea_adami.log
+    timeout 120 "$W" assess $R/seawall-dbc.yaml --backend cuda --quiet -o $R/sea_dbc >$R/sea_dbc.log 2>&1; echo "rc=$?"; tail -30 $R/sea_dbc.log
+  } 2>&1 | tee "$out/walls.log"
+  (cd $R && tar czf "$out/walls.tgz" */summary.json */*.csv *.log *.yaml)
+  ;;
+*) echo "usage: bench/assess_e2e.sh pack|run|walls" >&2; exit 2 ;;
 esac

@@ -177,13 +177,18 @@ static int run(int dim) {
         rv += d[a] * u[a];
       }
       if (!(r2 < k.support2)) continue;
+      /* a fluid particle's pair with a wall particle: the wall's volume
+       * and the fluid's pressure as the wall condition takes them
+       * (sph/interact.h wl_sph_pair_j_bound, wl_sph_pair_p_wall) */
       wl_real ij, vj;
-      wl_sph_pair_j(&k, s.rho[j], &ij, &vj);
-      const int ff = fi && fj;
+      const int ff = fi && fj, fb = fi && !fj;
+      if (fb) wl_sph_pair_j_bound(&k, s.rho[j], &ij, &vj);
+      else wl_sph_pair_j(&k, s.rho[j], &ij, &vj);
+      const wl_real p_i = fb ? wl_sph_pair_p_wall(&k, s.press[i]) : s.press[i];
       const struct wl_sph_pair o =
-          ff ? wl_sph_pair_eval(0, 1, &k, r2, rv, d[dim - 1], s.rho[i], 1 / s.rho[i], s.press[i],
+          ff ? wl_sph_pair_eval(0, 1, &k, r2, rv, d[dim - 1], s.rho[i], 1 / s.rho[i], p_i,
                                 s.rho[j], ij, vj, s.press[j], k.av_ff, 0)
-             : wl_sph_pair_eval(0, 0, &k, r2, rv, d[dim - 1], s.rho[i], 1 / s.rho[i], s.press[i],
+             : wl_sph_pair_eval(0, 0, &k, r2, rv, d[dim - 1], s.rho[i], 1 / s.rho[i], p_i,
                                 s.rho[j], ij, vj, s.press[j], k.av_fb, 0);
       for (int a = 0; a < dim; a++) acc[a] += o.c_r * d[a];
       cont += o.cont;

@@ -74,7 +74,7 @@ static void wall_forces(const struct wl_particles *p, const struct wl_sph_const 
         r2 += d[a] * d[a];
       }
       if (r2 >= k->support2) continue;
-      const wl_real rho_i = p->rho[i], p_i = wl_sph_eos_p(k, rho_i);
+      const wl_real rho_i = p->rho[i], p_i = wl_sph_pair_p_wall(k, wl_sph_eos_p(k, rho_i));
       const struct wl_sph_pair o =
           laminar ? wl_sph_pair_eval(1, 0, k, r2, 0, d[az], rho_i, 1 / rho_i, p_i, rho_j,
                                      inv_rho_j, vol_j, p_j, 0, k->lam_fb)

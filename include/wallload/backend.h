@@ -58,6 +58,8 @@ struct wl_sph_step_out {
   int fault_kind;
   int fault_wall;   /* for WL_SPH_FAULT_PENETRATION */
   double fault_pos[WL_SPH_DIM_MAX], fault_vel[WL_SPH_DIM_MAX], fault_rho;
+  long n_limited;   /* fluid particles the wall limiter moved in this step (sph/guard.h) */
+  long n_excluded;  /* fluid particles that left the domain box in this step (sph/guard.h) */
 };
 
 struct wl_backend_ops {

@@ -129,7 +129,13 @@ struct wl_plan {
  * validate`), so that they measure what `assess` runs; test_plan checks
  * it against the scenario path. wl_sph_params_default itself keeps
  * DualSPHysics' settings, the benchmarks' common ground. */
-void wl_plan_default_numerics(struct wl_sph_params *prm);
+static inline void wl_plan_default_numerics(struct wl_sph_params *prm) {
+  /* inline: `wallload bench` uses it where only the solver's modules are
+   * built (bench/gpu.sh on a GPU host without GSL or libyaml) */
+  prm->coefh = prm->dim == 3 ? WL_PLAN_COEFH_3D : WL_PLAN_COEFH_2D;
+  prm->visc = WL_SPH_VISC_LAMINAR;
+  prm->nu = 1e-6; /* water at 20 C */
+}
 
 /* Reference throughput used for runtime estimates [force evaluations/s per
  * particle; a symplectic step has two, a Verlet step one]; the measured

@@ -58,6 +58,13 @@ void wl_sph_config_default(struct wl_sph_config *cfg, int dim, double dp, double
 enum wl_status wl_sph_config_add_wall(struct wl_sph_config *cfg, double ax, double az, double bx,
                                       double bz, double thickness, struct wl_error *err);
 
+/* The faces of a boundary polyline (x[i], z[i]), i < n [m], fluid on the
+ * left, layers `thickness` [m] deep, with a cap across the layers at each
+ * end (so that water passing over a wall's open top is above a face, not
+ * deep behind the wall's). Errors as wl_sph_config_add_wall. */
+enum wl_status wl_sph_config_add_faces(struct wl_sph_config *cfg, const double *x, const double *z,
+                                       int n, double thickness, struct wl_error *err);
+
 /* ---- cell lists (host side; the physics side is sph/cells.h) ----------- */
 
 /* Most cells a domain box may have (2 int arrays of twice this size). */
@@ -208,6 +215,12 @@ const struct wl_particles *wl_sph_sim_particles(struct wl_sph_sim *sim, struct w
 void wl_sph_sim_describe(const struct wl_sph_sim *sim, char *buf, size_t size);
 
 double wl_sph_sim_time(const struct wl_sph_sim *sim);          /* [s] */
+long wl_sph_sim_limited(const struct wl_sph_sim *sim);         /* wall-limiter corrections so far */
+/* Fluid particles that left the domain box so far (taken out of the run at
+ * rest where they left it, sph/guard.h wl_sph_exclude); a run stops as
+ * unstable when they exceed WL_SPH_EXCLUDED_MAX of the fluid. */
+long wl_sph_sim_excluded(const struct wl_sph_sim *sim);
+#define WL_SPH_EXCLUDED_MAX 0.01
 long wl_sph_sim_steps(const struct wl_sph_sim *sim);           /* steps done */
 double wl_sph_sim_dt(const struct wl_sph_sim *sim);            /* next step [s] */
 double wl_sph_sim_dt_initial(const struct wl_sph_sim *sim);    /* first step [s] */

@@ -89,14 +89,15 @@ static enum wl_status boundary_force(struct run_ctx *rc, const struct wl_particl
       }
       if (r2 >= k->support2) continue;
       wl_real vx = p->vel[0][i] - p->vel[0][j], vz = p->vel[az][i] - p->vel[az][j];
-      wl_real rho_i = p->rho[i], p_i = wl_sph_eos_p(k, rho_i), rv = dx * vx + dz * vz;
+      wl_real rho_i = p->rho[i], p_i = wl_sph_pair_p_wall(k, wl_sph_eos_p(k, rho_i));
+      wl_real rv = dx * vx + dz * vz;
       if (d3) rv += dy * ((mirror ? -p->vel[1][i] : p->vel[1][i]) - p->vel[1][j]);
       wl_real inv_rho_j, vol_j;
       wl_sph_pair_j_bound(k, rho_j, &inv_rho_j, &vol_j);
       /* the solver's own fluid-boundary pair term (no density diffusion) */
       struct wl_sph_pair pr =
           laminar ? wl_sph_pair_eval(1, 0, k, r2, rv, dz, rho_i, 1 / rho_i, p_i, rho_j, inv_rho_j,
-                                     vol_j, p_j, 0, k->lam_fb)
+                                     vol_j, p_j, k->av_fb, k->lam_fb)
                   : wl_sph_pair_eval(0, 0, k, r2, rv, dz, rho_i, 1 / rho_i, p_i, rho_j, inv_rho_j,
                                      vol_j, p_j, k->av_fb, 0);
       double ax = (double)pr.c_r * dx + (double)pr.c_v * vx;

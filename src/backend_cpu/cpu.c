@@ -384,21 +384,29 @@ static void guard(struct cpu *c, const struct wl_sph_step_in *in, struct wl_sph_
   struct wl_particles *p = &c->p;
   const int n = p->n, dim = p->dim;
   int first = n;
+  long limited = 0, excluded = 0;
   const int verlet = c->k.integrator == WL_SPH_VERLET;
   const int euler = in && verlet && wl_sph_verlet_euler(&c->k, in->step);
-#pragma omp parallel for schedule(static) num_threads(threads(c)) reduction(min : first)
+  const int limiter = in && c->k.wall_limiter;
+#pragma omp parallel for schedule(static) num_threads(threads(c)) reduction(min : first) \
+    reduction(+ : limited, excluded)
   for (int i = 0; i < n; i++) {
     if (in && verlet)
       wl_sph_verlet(dim, &c->k, p, in->dt, in->dt_prev,
                     (const double(*)[WL_SPH_DIM_MAX])in->body_vel, euler, i);
     else if (in)
       wl_sph_correct(dim, &c->k, p, in->dt, (const double(*)[WL_SPH_DIM_MAX])in->body_vel, i);
+    if (limiter) limited += wl_sph_wall_limit(dim, p, c->cfg.walls, c->cfg.n_walls,
+                                                   c->k.penetration, i);
+    if (in) excluded += wl_sph_exclude(dim, p, c->cfg.lo, c->cfg.hi, i);
     int w = -1;
     if (wl_sph_guard(dim, &c->k, p, c->cfg.lo, c->cfg.hi, c->cfg.walls, c->cfg.n_walls, i, &w) &&
         i < first)
       first = i;
   }
   out->fault = WL_SPH_FAULT_NONE;
+  out->n_limited = limited;
+  out->n_excluded = excluded;
   if (first == n) return;
   int w = -1;
   out->fault = wl_sph_guard(dim, &c->k, p, c->cfg.lo, c->cfg.hi, c->cfg.walls, c->cfg.n_walls,

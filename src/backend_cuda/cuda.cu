@@ -98,6 +98,8 @@ struct dstats {
   unsigned int id;
   int pad;
   double pos[WL_SPH_DIM_MAX], vel[WL_SPH_DIM_MAX], rho;
+  unsigned long long limited; /* particles the wall limiter moved */
+  unsigned long long excluded; /* particles that left the domain box (guard.h wl_sph_exclude) */
 };
 
 /* Read-only configuration on the device (guard). */
@@ -156,6 +158,8 @@ __global__ void k_keys(struct wl_sph_grid g, const double *__restrict__ x,
     st->ace2 = st->vel2 = st->visc = 0ull;
     st->first = 0x7fffffff;
     st->fault = 0;
+    st->limited = 0ull;
+    st->excluded = 0ull;
   }
   if (i >= n) return;
   double *pos[WL_SPH_DIM_MAX] = {(double *)x, (double *)y, (double *)z};
@@ -320,8 +324,9 @@ static __device__ __forceinline__ void range_fast(const struct wl_sph_const *k,
     const wl_real uy = DIM == 3 ? vi[1] - uyj : WL_R(0.0);
     const wl_real uz = vi[2] - uzj;
     const wl_real rv = dx * ux + dy * uy + dz * uz;
+    const wl_real p_ip = WANT_ACE && !WITH_DDT ? wl_sph_pair_p_wall(k, p_i) : p_i; /* gather.h */
     const struct wl_sph_pair o = wl_sph_pair_eval(LAM, WITH_DDT, k, r2, rv, dz, rho_i, inv_rho_i,
-                                                  p_i, rho_j, inv_rho_j, vol_j, p_j, av, lam);
+                                                  p_ip, rho_j, inv_rho_j, vol_j, p_j, av, lam);
     if (WANT_ACE)
       wl_sph_pair_add_ace(DIM, LAM, &o, dx, dy, dz, ux, uy, uz, &acc->a[0], &acc->a[1],
                           &acc->a[2]);
@@ -552,7 +557,8 @@ static __device__ __forceinline__ void split_pair(const struct wl_sph_const *k,
   const wl_real uz = vi.z - vj.z;
   const wl_real r2 = dx * dx + dy * dy + dz * dz;
   const wl_real rv = dx * ux + dy * uy + dz * uz;
-  const struct wl_sph_pair o = wl_sph_pair_eval(LAM, WITH_DDT, k, r2, rv, dz, ri.w, inv_rho_i, vi.w,
+  const wl_real p_i = WANT_ACE && !WITH_DDT ? wl_sph_pair_p_wall(k, vi.w) : vi.w; /* gather.h */
+  const struct wl_sph_pair o = wl_sph_pair_eval(LAM, WITH_DDT, k, r2, rv, dz, ri.w, inv_rho_i, p_i,
                                                 pj.x, pj.y, pj.z, vj.w, av, lam);
   if (WANT_ACE)
     wl_sph_pair_add_ace(DIM, LAM, &o, dx, dy, dz, ux, uy, uz, &acc->a[0], &acc->a[1], &acc->a[2]);
@@ -929,6 +935,9 @@ __global__ void k_correct_guard(struct wl_sph_const kp, struct wl_particles p, d
     wl_sph_verlet(DIM, &k, &p, dt, dt_prev, (const double(*)[WL_SPH_DIM_MAX])bv.v, euler, i);
   else if (update)
     wl_sph_correct(DIM, &k, &p, dt, (const double(*)[WL_SPH_DIM_MAX])bv.v, i);
+  if (update && k.wall_limiter && wl_sph_wall_limit(DIM, &p, m->walls, m->n_walls, k.penetration, i))
+    atomicAdd(&st->limited, 1ull);
+  if (update && wl_sph_exclude(DIM, &p, m->lo, m->hi, i)) atomicAdd(&st->excluded, 1ull);
   int w = -1;
   if (wl_sph_guard(DIM, &k, &p, m->lo, m->hi, m->walls, m->n_walls, i, &w))
     atomicMin(&st->first, i);
@@ -1169,6 +1178,8 @@ static enum wl_status finish(struct gpu *c, const struct wl_sph_step_in *in,
   out->dt_cv = h / ((c0 > 10 * vmax ? c0 : 10 * vmax) + visc);
   out->dt_next = c->k.cfl * (out->dt_force < out->dt_cv ? out->dt_force : out->dt_cv);
   out->fault = WL_SPH_FAULT_NONE;
+  out->n_limited = (long)st->limited;
+  out->n_excluded = (long)st->excluded;
   if (st->first < n) {
     out->fault = st->fault;
     out->fault_index = st->first;

@@ -2,18 +2,27 @@
  * on two dam breaks:
  *
  *  dambreak2d  DualSPHysics CaseDambreakVal2D proportions: a water column
- *              1 m wide and 2 m high in a 4 m tank with walls 3 m high;
+ *              1 m wide and 2 m high in a 4 m tank (walls 6 m high and
+ *              room above them to 12 m: the jet up the far wall rises
+ *              above 6 m);
  *  dambreak3d  DualSPHysics example 01_DamBreak: tank 1.6 x 0.67 x 0.4 m,
  *              water column 0.4 x 0.67 x 0.3 m at x = 0, a 0.12 x 0.12 m
  *              square pillar standing at x = 0.9, y = 0.24 m (as tall as
  *              the tank).
  *
- * Physics as every wallload run: Wendland C2, h = coefh sqrt(dim) dp (coefh
- * 1: 1.41 dp in 2D, 1.73 dp in 3D), symmetric pressure term, artificial
- * viscosity 0.01, Fourtakas density diffusion (full) 0.1, dynamic boundary
- * particles (2 layers), coefsound 10, CFL 0.2, symplectic steps (two force
- * evaluations each). Timing covers the steps only, after a few warm-up
- * steps (set-up, the initial force evaluation and the warm-up excluded).
+ * Physics (--numerics dualsphysics, the default): Wendland C2, h = coefh
+ * sqrt(dim) dp (coefh 1: 1.41 dp in 2D, 1.73 dp in 3D), symmetric pressure
+ * term, artificial viscosity 0.01, Fourtakas density diffusion (full) 0.1,
+ * coefsound 10, CFL 0.2, symplectic steps (two force evaluations each);
+ * --numerics assess: what `assess` runs (wl_plan_default_numerics: coefh
+ * 1.2 in 2D, laminar viscosity). Walls: --boundary adami (the default, the
+ * wall condition of sph/wall.h) or dbc (dynamic boundary particles), in
+ * --layers layers (default: ceil(2h/dp), the kernel's full support, as the
+ * flume builds them; DualSPHysics' examples use 2). Timing covers the
+ * steps only, after a few warm-up steps (set-up, the initial force
+ * evaluation and the warm-up excluded). --until T runs to the simulated
+ * time T instead of a step count and reports whether the run stayed stable
+ * (the guard, sph/guard.h), with the guard's message if not.
  *
  * Per run it prints particles, steps, force evaluations (particles x 2 x
  * steps), seconds, particle-steps/s, force-evaluations/s, kernel, h/dp and
@@ -29,6 +38,7 @@
 #include "cli.h"
 #include "wallload/backend.h"
 #include "wallload/cuda_device.h"
+#include "wallload/plan.h"
 #include "wallload/scene.h"
 #include "wallload/sph.h"
 
@@ -43,6 +53,13 @@ struct bench_opts {
   double coefh;         /* 0: default (1) */
   double shift;         /* particle shifting coefficient A (0: off) */
   int threads;
+  int boundary;         /* enum wl_sph_boundary */
+  int assess_numerics;  /* 1: wl_plan_default_numerics */
+  int layers;           /* boundary layers; 0: ceil(2h/dp) */
+  double until;         /* > 0: run to this simulated time [s] instead of `steps` */
+  double wall_alpha;    /* < 0: the solver's default */
+  double coefsound;     /* 0: the default */
+  int limiter;          /* < 0: the solver's default */
 };
 
 static double now_s(void) {
@@ -52,18 +69,23 @@ static double now_s(void) {
 }
 
 /* Build the case at spacing dp into cfg and p. */
-static enum wl_status build_case(int dim, double dp, double coefh, double shift, int threads,
+static enum wl_status build_case(const struct bench_opts *o, int dim, double dp,
                                  struct wl_sph_config *cfg, struct wl_particles *p,
                                  struct wl_error *err) {
-  const int layers = 2;
   const double H = dim == 2 ? 2.0 : 0.3; /* water column height [m] */
   wl_sph_config_default(cfg, dim, dp, H);
-  if (coefh > 0) cfg->prm.coefh = coefh;
-  cfg->prm.shift_coef = shift;
-  cfg->n_threads = threads;
+  if (o->assess_numerics) wl_plan_default_numerics(&cfg->prm);
+  if (o->coefh > 0) cfg->prm.coefh = o->coefh;
+  cfg->prm.shift_coef = o->shift;
+  cfg->prm.boundary = (enum wl_sph_boundary)o->boundary;
+  if (o->wall_alpha >= 0) cfg->prm.wall_alpha = o->wall_alpha;
+  if (o->coefsound > 0) cfg->prm.coefsound = o->coefsound;
+  if (o->limiter >= 0) cfg->prm.wall_limiter = o->limiter;
+  cfg->n_threads = o->threads;
   struct wl_sph_const k;
   enum wl_status st = wl_sph_const_make(&cfg->prm, &k, err);
   if (st) return st;
+  const int layers = o->layers > 0 ? o->layers : (int)ceil(2.0 * k.h_d / dp - 1e-9);
   const double margin = (layers + 2) * dp;
   struct wl_scene sc;
   if (dim == 2) {
@@ -71,9 +93,9 @@ static enum wl_status build_case(int dim, double dp, double coefh, double shift,
     cfg->lo[0] = -margin;
     cfg->hi[0] = L + margin;
     cfg->lo[1] = -margin;
-    cfg->hi[1] = 2 * H;
+    cfg->hi[1] = 6 * H; /* room above the walls (3 H) for the jet up the far wall */
     wl_scene_init(&sc, &k, 0, 0);
-    const double tx[4] = {0, 0, L, L}, tz[4] = {1.5 * H, 0, 0, 1.5 * H};
+    const double tx[4] = {0, 0, L, L}, tz[4] = {3 * H, 0, 0, 3 * H};
     const double lo[2] = {0, 0}, hi[2] = {A, H};
     st = wl_scene_boundary_polyline(&sc, tx, tz, 4, layers, WL_KIND_FIXED, 0, cfg, err);
     if (!st) st = wl_scene_fluid_block(&sc, lo, hi, H, err);
@@ -100,14 +122,14 @@ static enum wl_status build_case(int dim, double dp, double coefh, double shift,
  * corrected once by the count of a trial build (boundary particles scale
  * as dp^-(dim-1), fluid as dp^-dim; the correction assumes all scale as the
  * fluid, close enough at these sizes). */
-static enum wl_status choose_dp(int dim, double target, double coefh, double *dp,
+static enum wl_status choose_dp(const struct bench_opts *o, int dim, double target, double *dp,
                                 struct wl_error *err) {
   const double vol = dim == 2 ? 1.0 * 2.0 : 0.4 * 0.67 * 0.3;
   double d = pow(vol / target, 1.0 / dim);
   for (int it = 0; it < 2; it++) {
     struct wl_sph_config cfg;
     struct wl_particles p = {0};
-    enum wl_status st = build_case(dim, d, coefh, 0.0, 0, &cfg, &p, err);
+    enum wl_status st = build_case(o, dim, d, &cfg, &p, err);
     if (st) return st;
     const double n = p.n;
     wl_particles_clear(&p);
@@ -121,7 +143,7 @@ static enum wl_status run_one(const struct bench_opts *o, int dim, double dp,
                               const struct wl_backend_ops *ops, struct wl_error *err) {
   struct wl_sph_config cfg;
   struct wl_particles init = {0};
-  enum wl_status st = build_case(dim, dp, o->coefh, o->shift, o->threads, &cfg, &init, err);
+  enum wl_status st = build_case(o, dim, dp, &cfg, &init, err);
   if (st) return st;
   const int n = init.n, nb = init.n_bound;
   const int gpu = !strcmp(ops->name, "cuda");
@@ -141,19 +163,42 @@ static enum wl_status run_one(const struct bench_opts *o, int dim, double dp,
   wl_sph_sim_describe(sim, what, sizeof what);
   for (int s = 0; s < WARMUP_STEPS && !st; s++) st = wl_sph_sim_step(sim, 0, err);
   const double t0 = now_s();
-  for (long s = 0; s < o->steps && !st; s++) st = wl_sph_sim_step(sim, 0, err);
+  const long step0 = wl_sph_sim_steps(sim);
+  struct wl_error run_err;
+  wl_error_clear(&run_err);
+  enum wl_status run_st = WL_OK;
+  if (!st && o->until > 0) {
+    while (!run_st && wl_sph_sim_time(sim) < o->until)
+      run_st = wl_sph_sim_step(sim, o->until - wl_sph_sim_time(sim), &run_err);
+  } else {
+    for (long s = 0; s < o->steps && !st; s++) st = wl_sph_sim_step(sim, 0, err);
+  }
   const double sec = now_s() - t0;
+  const long steps = wl_sph_sim_steps(sim) - step0;
+  const long limited = wl_sph_sim_limited(sim), excluded = wl_sph_sim_excluded(sim);
   const double t_sim = wl_sph_sim_time(sim), dt = wl_sph_sim_dt(sim);
   const struct wl_sph_const *k = wl_sph_sim_const(sim);
   const double h_dp = k->h_d / k->dp;
+  const int evals = k->integrator == WL_SPH_VERLET ? 1 : 2;
+  char k_desc[160];
+  snprintf(k_desc, sizeof k_desc, "c0 %.3g m/s, %s viscosity, wall alpha %.3g, limiter %s",
+           k->c0_d, k->visc == WL_SPH_VISC_LAMINAR ? "laminar" : "artificial",
+           k->visc == WL_SPH_VISC_LAMINAR ? (double)k->av_fb / (k->c0_d * k->h_d) : 0.0,
+           k->wall_limiter ? "on" : "off");
+  const int dbc = k->boundary == WL_SPH_BOUND_DBC;
   wl_sph_sim_free(sim);
   if (st) return st;
-  const double ps = (double)n * (double)o->steps / sec;
+  if (run_st && run_st != WL_EUNSTABLE) return wl_error_set(err, run_st, "%s", run_err.msg);
+  const double ps = (double)n * (double)steps / sec;
   printf("%-10s %-5s %10d %6ld %12.4e %9.3f %12.4e %12.4e  Wendland %.2f %8.1f\n",
-         dim == 2 ? "dambreak2d" : "dambreak3d", ops->name, n, o->steps,
-         2.0 * n * (double)o->steps, sec, ps, 2 * ps, h_dp, bytes / n);
-  printf("    dp %.5g m, %d boundary + %d fluid, simulated %.4g s, dt %.3g s%s; %s\n", dp, nb,
-         n - nb, t_sim, dt, o->shift > 0 ? ", particle shifting on" : "", what);
+         dim == 2 ? "dambreak2d" : "dambreak3d", ops->name, n, steps,
+         (double)evals * n * (double)steps, sec, ps, evals * ps, h_dp, bytes / n);
+  printf("    dp %.5g m, %d boundary + %d fluid, %s walls, simulated %.4g s, dt %.3g s%s; %s\n",
+         dp, nb, n - nb, dbc ? "dbc" : "adami", t_sim, dt,
+         o->shift > 0 ? ", particle shifting on" : "", what);
+  if (o->until > 0)
+    printf("    %s; wall limiter: %ld corrections; %ld fluid particles left the domain; %s\n",
+           run_st ? run_err.msg : "stable to the end time", limited, excluded, k_desc);
   fflush(stdout);
   return WL_OK;
 }
@@ -162,14 +207,19 @@ static enum wl_status parse(int argc, char **argv, struct bench_opts *o, struct 
   memset(o, 0, sizeof *o);
   o->particles = 1e5;
   o->steps = 50;
+  o->boundary = WL_SPH_BOUND_ADAMI;
+  o->wall_alpha = -1;
+  o->limiter = -1;
   const char *cases = "all", *backend = "all";
   for (int i = 1; i < argc; i++) {
     const char *a = argv[i];
     if (!strcmp(a, "-h") || !strcmp(a, "--help"))
       return wl_error_set(err, WL_EUSAGE,
                           "usage: wallload bench [--case dambreak2d|dambreak3d|all] [--backend "
-                          "cpu|cuda|all] [--particles N] [--steps N] [--coefh C] [--shifting A] "
-                          "[--threads N]");
+                          "cpu|cuda|all] [--particles N] [--steps N] [--until T] [--coefh C] "
+                          "[--shifting A] [--threads N] [--boundary adami|dbc] [--layers N] "
+                          "[--numerics dualsphysics|assess] [--wall-alpha A] [--limiter on|off] "
+                          "[--coefsound C]");
     if (i + 1 >= argc) return wl_error_set(err, WL_EUSAGE, "bench: %s needs a value", a);
     const char *v = argv[++i];
     char *end;
@@ -201,10 +251,44 @@ static enum wl_status parse(int argc, char **argv, struct bench_opts *o, struct 
       if (*end || t < 1 || t > 4096)
         return wl_error_set(err, WL_EUSAGE, "bench: --threads: found '%s'; expected 1 to 4096", v);
       o->threads = (int)t;
+    } else if (!strcmp(a, "--boundary")) {
+      if (!strcmp(v, "adami")) o->boundary = WL_SPH_BOUND_ADAMI;
+      else if (!strcmp(v, "dbc")) o->boundary = WL_SPH_BOUND_DBC;
+      else
+        return wl_error_set(err, WL_EUSAGE, "bench: --boundary: found '%s'; valid: adami, dbc", v);
+    } else if (!strcmp(a, "--numerics")) {
+      if (!strcmp(v, "dualsphysics")) o->assess_numerics = 0;
+      else if (!strcmp(v, "assess")) o->assess_numerics = 1;
+      else
+        return wl_error_set(err, WL_EUSAGE, "bench: --numerics: found '%s'; valid: dualsphysics, "
+                            "assess", v);
+    } else if (!strcmp(a, "--layers")) {
+      const long l = strtol(v, &end, 10);
+      if (*end || l < 1 || l > 8)
+        return wl_error_set(err, WL_EUSAGE, "bench: --layers: found '%s'; expected 1 to 8", v);
+      o->layers = (int)l;
+    } else if (!strcmp(a, "--wall-alpha")) {
+      o->wall_alpha = strtod(v, &end);
+      if (*end || !(o->wall_alpha >= 0 && o->wall_alpha <= 1))
+        return wl_error_set(err, WL_EUSAGE, "bench: --wall-alpha: found '%s'; expected 0 to 1", v);
+    } else if (!strcmp(a, "--coefsound")) {
+      o->coefsound = strtod(v, &end);
+      if (*end || !(o->coefsound >= 5 && o->coefsound <= 100))
+        return wl_error_set(err, WL_EUSAGE, "bench: --coefsound: found '%s'; expected 5 to 100", v);
+    } else if (!strcmp(a, "--limiter")) {
+      if (!strcmp(v, "on")) o->limiter = 1;
+      else if (!strcmp(v, "off")) o->limiter = 0;
+      else return wl_error_set(err, WL_EUSAGE, "bench: --limiter: found '%s'; valid: on, off", v);
+    } else if (!strcmp(a, "--until")) {
+      o->until = strtod(v, &end);
+      if (*end || !(o->until > 0 && o->until <= 100))
+        return wl_error_set(err, WL_EUSAGE, "bench: --until: found '%s'; expected a simulated "
+                            "time in (0, 100] s", v);
     } else {
       return wl_error_set(err, WL_EUSAGE,
                           "bench: unknown option '%s'; valid: --case, --backend, --particles, "
-                          "--steps, --coefh, --shifting, --threads", a);
+                          "--steps, --until, --coefh, --shifting, --threads, --boundary, "
+                          "--layers, --numerics, --wall-alpha, --limiter, --coefsound", a);
     }
   }
   if (!strcmp(cases, "all")) o->case2d = o->case3d = 1;
@@ -246,7 +330,7 @@ enum wl_status wl_cli_bench(int argc, char **argv, struct wl_error *err) {
   for (int dim = 2; dim <= 3; dim++) {
     if ((dim == 2 && !o.case2d) || (dim == 3 && !o.case3d)) continue;
     double dp;
-    if ((st = choose_dp(dim, o.particles, o.coefh, &dp, err))) return st;
+    if ((st = choose_dp(&o, dim, o.particles, &dp, err))) return st;
     if (o.cpu && (st = run_one(&o, dim, dp, &wl_backend_cpu_ops, err))) return st;
     if (o.cuda && have_gpu && (st = run_one(&o, dim, dp, &wl_backend_cuda_ops, err))) return st;
   }

@@ -692,9 +692,3 @@ enum wl_status wl_plan_solitary_runnable(const struct wl_scenario *s, const stru
                       "domain.length) or a smaller wave",
                       s->path, s->wall.x.q.si, ps->crest_x0);
 }
-
-void wl_plan_default_numerics(struct wl_sph_params *prm) {
-  prm->coefh = prm->dim == 3 ? WL_PLAN_COEFH_3D : WL_PLAN_COEFH_2D;
-  prm->visc = WL_SPH_VISC_LAMINAR;
-  prm->nu = 1e-6; /* water at 20 C */
-}

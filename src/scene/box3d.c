@@ -102,9 +102,8 @@ enum wl_status wl_scene_box3d_tank(struct wl_scene *sc, const double *lo, const 
   /* penetration guard: floor and the two end walls (extruded along y, as
    * sph/guard.h's walls are); the side walls y = lo, hi have no guard face */
   const double t = n_layers * dp;
-  if (st == WL_OK && cfg) st = wl_sph_config_add_wall(cfg, lo[0], hi[2], lo[0], lo[2], t, err);
-  if (st == WL_OK && cfg) st = wl_sph_config_add_wall(cfg, lo[0], lo[2], hi[0], lo[2], t, err);
-  if (st == WL_OK && cfg) st = wl_sph_config_add_wall(cfg, hi[0], lo[2], hi[0], hi[2], t, err);
+  const double fx[4] = {lo[0], lo[0], hi[0], hi[0]}, fz[4] = {hi[2], lo[2], lo[2], hi[2]};
+  if (st == WL_OK && cfg) st = wl_sph_config_add_faces(cfg, fx, fz, 4, t, err);
   return st;
 }
 

@@ -308,9 +308,7 @@ enum wl_status wl_scene_boundary_polyline(struct wl_scene *sc, const double *x, 
   }
   free(nx);
   if (st != WL_OK) return st;
-  if (cfg && kind == WL_KIND_FIXED)
-    for (int i = 0; i + 1 < nv && st == WL_OK; i++)
-      st = wl_sph_config_add_wall(cfg, x[i], z[i], x[i + 1], z[i + 1], n_layers * dp, err);
+  if (cfg && kind == WL_KIND_FIXED) st = wl_sph_config_add_faces(cfg, x, z, nv, n_layers * dp, err);
   return st;
 }
 

@@ -23,6 +23,9 @@ void wl_sph_params_default(struct wl_sph_params *prm, int dim, double dp, double
   prm->cfl = 0.2;       /* DualSPHysics CFLnumber */
   prm->integrator = WL_SPH_SYMPLECTIC;
   prm->boundary = WL_SPH_BOUND_ADAMI;
+  prm->wall_alpha = 0.0; /* off: 0.01 took 3 % off a reflected solitary wave (docs/boundary.md) */
+  prm->wall_limiter = 1;
+  prm->tension_max = 1;
   prm->verlet_steps = 40; /* DualSPHysics VerletSteps */
   prm->dt_collapse = 1e-3;
   prm->rho_min_factor = 0.7; /* DualSPHysics RhopOutMin 700 for rho0 1000 */
@@ -57,6 +60,8 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
     return bad(err, "ddt", prm->ddt, "must be 0 (none), 1 (Fourtakas) or 2 (Fourtakas, full)");
   if (!(prm->delta >= 0 && prm->delta <= 1)) return bad(err, "delta", prm->delta, "must be in [0, 1]");
   if (!(prm->cfl > 0 && prm->cfl <= 1)) return bad(err, "cfl", prm->cfl, "must be in (0, 1]");
+  if (!(prm->wall_alpha >= 0 && prm->wall_alpha <= 1))
+    return bad(err, "wall_alpha", prm->wall_alpha, "must be in [0, 1]");
   if (prm->boundary != WL_SPH_BOUND_DBC && prm->boundary != WL_SPH_BOUND_ADAMI)
     return bad(err, "boundary", prm->boundary, "must be 0 (dbc) or 1 (adami)");
   if (prm->integrator != WL_SPH_SYMPLECTIC && prm->integrator != WL_SPH_VERLET)
@@ -94,6 +99,7 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
   k->visc = prm->visc;
   k->ddt = prm->ddt;
   k->boundary = prm->boundary;
+  k->wall_limiter = prm->wall_limiter != 0;
   k->h = (wl_real)h;
   k->inv_h = (wl_real)(1.0 / h);
   k->support2 = (wl_real)(4.0 * h * h);
@@ -107,7 +113,7 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
   k->mass = (wl_real)(prm->rho0 * pow(prm->dp, dim));
   const int art = prm->visc == WL_SPH_VISC_ARTIFICIAL;
   k->av_ff = (wl_real)(art ? prm->alpha * c0 * h : 0.0);
-  k->av_fb = (wl_real)(art ? prm->alpha * prm->visc_bound_factor * c0 * h : 0.0);
+  k->av_fb = (wl_real)(art ? prm->alpha * prm->visc_bound_factor * c0 * h : prm->wall_alpha * c0 * h);
   k->lam_ff = (wl_real)(art ? 0.0 : 4.0 * prm->nu);
   k->lam_fb = (wl_real)(art ? 0.0 : 4.0 * prm->nu * prm->visc_bound_factor);
   k->ddt_k = (wl_real)(prm->ddt == WL_SPH_DDT_NONE ? 0.0 : prm->delta * 2.0 * h * c0);
@@ -129,6 +135,10 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
   k->verlet_steps = prm->verlet_steps;
   k->dt_collapse = prm->dt_collapse;
   k->rho_min = prm->rho_min_factor * prm->rho0;
+  k->rho_floor = (wl_real)(prm->tension_max > 0
+                               ? wl_sph_eos_rho_of_p(prm->rho0, (double)k->B,
+                                                     -prm->tension_max * prm->rho0 * prm->g * prm->h_max)
+                               : 0.0);
   k->rho_max = prm->rho_max_factor * prm->rho0;
   k->penetration = prm->penetration * prm->dp;
   k->shift_coef = prm->shift_coef;
@@ -148,6 +158,26 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
 void wl_sph_config_default(struct wl_sph_config *cfg, int dim, double dp, double h_max) {
   memset(cfg, 0, sizeof *cfg);
   wl_sph_params_default(&cfg->prm, dim, dp, h_max);
+}
+
+enum wl_status wl_sph_config_add_faces(struct wl_sph_config *cfg, const double *x, const double *z,
+                                       int n, double thickness, struct wl_error *err) {
+  enum wl_status st = WL_OK;
+  for (int i = 0; i + 1 < n && st == WL_OK; i++)
+    st = wl_sph_config_add_wall(cfg, x[i], z[i], x[i + 1], z[i + 1], thickness, err);
+  if (st != WL_OK || n < 2) return st;
+  /* the caps: across the layers' ends, facing out along the polyline, from
+   * the face's end point to thickness behind it (the layers lie on the
+   * right of the walk) */
+  for (int end = 0; end < 2 && st == WL_OK; end++) {
+    const int i0 = end ? n - 2 : 0, i1 = end ? n - 1 : 1, v = end ? n - 1 : 0;
+    const double tx = x[i1] - x[i0], tz = z[i1] - z[i0], len = sqrt(tx * tx + tz * tz);
+    if (!(len > 0)) continue;
+    const double rx = tz / len * thickness, rz = -tx / len * thickness; /* right normal */
+    st = end ? wl_sph_config_add_wall(cfg, x[v], z[v], x[v] + rx, z[v] + rz, thickness, err)
+             : wl_sph_config_add_wall(cfg, x[v] + rx, z[v] + rz, x[v], z[v], thickness, err);
+  }
+  return st;
 }
 
 enum wl_status wl_sph_config_add_wall(struct wl_sph_config *cfg, double ax, double az, double bx,

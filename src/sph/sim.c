@@ -30,6 +30,9 @@ struct wl_sph_sim {
   double dt_last;           /* the last step taken [s] (0 before the first) */
   double dt_initial;        /* the first CFL step, reference for the dt-collapse guard */
   struct wl_sph_step_out last;
+  long n_limited;           /* wall-limiter corrections since the start (sph/guard.h) */
+  long n_excluded;          /* fluid particles that left the domain box (sph/guard.h) */
+  long n_fluid;             /* fluid particles of the run */
   struct body_motion motion[WL_SPH_BODIES_MAX + 1];
 };
 
@@ -114,6 +117,7 @@ enum wl_status wl_sph_sim_alloc(struct wl_sph_sim **out, const struct wl_backend
   if (st == WL_OK && (initial->n <= initial->n_bound))
     st = wl_error_set(err, WL_EINPUT, "sph: no fluid particles (%d particles, %d boundary)",
                       initial->n, initial->n_bound);
+  sim->n_fluid = initial->n - initial->n_bound;
   if (st == WL_OK) st = wl_particles_alloc(&sim->host, cfg->prm.dim, initial->n, 0, err);
   if (st == WL_OK) st = ops->init(&sim->ctx, cfg, &sim->k, initial, &sim->last, err);
   if (st != WL_OK) {
@@ -226,8 +230,19 @@ enum wl_status wl_sph_sim_step(struct wl_sph_sim *sim, double dt_max, struct wl_
   sim->dt_last = in.dt;
   sim->steps++;
   sim->last = out;
+  sim->n_limited += out.n_limited;
+  sim->n_excluded += out.n_excluded;
   sim->dt_next = out.dt_next;
   if (out.fault) return report_fault(sim, &out, err);
+  /* a few splash particles over the walls are DualSPHysics' "excluded"
+   * particles; a large share of the fluid leaving is a failed run */
+  const long n_fluid = sim->n_fluid;
+  if (sim->n_excluded > WL_SPH_EXCLUDED_MAX * (double)n_fluid)
+    return wl_error_set(err, WL_EUNSTABLE,
+                        "unstable at t = %.6g s, step %ld: %ld of %ld fluid particles (more than "
+                        "%.1f %%) have left the domain box [%g, %g] x ... m and were taken out of "
+                        "the run", sim->t, sim->steps, sim->n_excluded, n_fluid,
+                        100 * WL_SPH_EXCLUDED_MAX, sim->cfg.lo[0], sim->cfg.hi[0]);
   return WL_OK;
 }
 
@@ -299,6 +314,9 @@ const struct wl_particles *wl_sph_sim_particles(struct wl_sph_sim *sim, struct w
   }
   return &sim->host;
 }
+
+long wl_sph_sim_limited(const struct wl_sph_sim *sim) { return sim->n_limited; }
+long wl_sph_sim_excluded(const struct wl_sph_sim *sim) { return sim->n_excluded; }
 
 double wl_sph_sim_time(const struct wl_sph_sim *sim) { return sim->t; }
 long wl_sph_sim_steps(const struct wl_sph_sim *sim) { return sim->steps; }

@@ -118,8 +118,9 @@ WL_HD static WL_INLINE void wl_sph_gather_range(const int dim, const int laminar
       const wl_real uz = in->v[az][l] - uzj;
       const wl_real r2 = dx * dx + dy * dy + dz * dz;
       const wl_real rv = dx * ux + dy * uy + dz * uz;
+      const wl_real p_i = want_ace && !with_ddt ? wl_sph_pair_p_wall(k, in->p[l]) : in->p[l];
       const struct wl_sph_pair o =
-          wl_sph_pair_eval(laminar, with_ddt, k, r2, rv, dz, in->rho[l], in->inv_rho[l], in->p[l],
+          wl_sph_pair_eval(laminar, with_ddt, k, r2, rv, dz, in->rho[l], in->inv_rho[l], p_i,
                            rho_j, inv_rho_j, vol_j, p_j, av, lam);
       if (want_ace)
         wl_sph_pair_add_ace(dim, laminar, &o, dx, dy, dz, ux, uy, uz, &acc->a[0][l],

@@ -63,6 +63,81 @@ WL_HD static inline struct wl_sph_wall wl_sph_wall_make(double ax, double az, do
 
 WL_HD static inline int wl_sph_finite(double x) { return x - x == 0.0; }
 
+/* A fluid particle that the update carried out of the domain box (a splash
+ * over a tank's wall, a jet over the box's top) is taken out of the run,
+ * as DualSPHysics excludes such particles: put back just inside the face
+ * it crossed, at rest, its body set to WL_SPH_BODY_EXCLUDED, after which
+ * the integrators leave it where it is (sph/integrate.h). The runs count
+ * them, and stop when more than a small fraction of the fluid is gone
+ * (sph.c). Returns 1 when it excluded particle i now. */
+WL_HD static inline int wl_sph_exclude(const int dim, const struct wl_particles *p,
+                                       const double *lo, const double *hi, int i) {
+  if (p->kind[i] != WL_KIND_FLUID || p->body[i] == WL_SPH_BODY_EXCLUDED) return 0;
+  int out = 0;
+  for (int a = 0; a < dim; a++) {
+    const double x = p->pos[a][i], eps = 1e-9 * (hi[a] - lo[a]);
+    if (!(x > lo[a] + eps)) p->pos[a][i] = lo[a] + eps, out = 1;
+    if (!(x < hi[a] - eps)) p->pos[a][i] = hi[a] - eps, out = 1;
+  }
+  if (!out) return 0;
+  for (int a = 0; a < dim; a++) {
+    p->vel[a][i] = 0;
+    p->vel_h[a][i] = 0;
+  }
+  p->body[i] = WL_SPH_BODY_EXCLUDED;
+  return 1;
+}
+
+/* The wall limiter (params.h wall_limiter), after a fluid particle's
+ * update: when it lies behind one or more wall faces, within their
+ * boundary layers (the faces of the guard below), it is moved back onto
+ * the face it is least deep behind (the nearest way out: at a convex
+ * corner, the face it slid under, not the one it is far behind) and the
+ * component of its velocity (and, for the Verlet step, of its previous
+ * velocity) into that face is removed. Its momentum into the wall is lost:
+ * a last resort against particles a thin, fast, pressure-free jet drives
+ * into a wall, never active in a flow the wall condition holds (the runs
+ * count the corrections). Returns 1 when it moved the particle. */
+WL_HD static inline int wl_sph_wall_limit(const int dim, const struct wl_particles *p,
+                                          const struct wl_sph_wall *walls, int n_walls,
+                                          double end_margin, int i) {
+  if (p->kind[i] != WL_KIND_FLUID || p->body[i] == WL_SPH_BODY_EXCLUDED) return 0;
+  const int az = dim - 1;
+  const double x = p->pos[0][i], z = p->pos[az][i];
+  int best = -1;
+  double depth = 0;
+  for (int w = 0; w < n_walls; w++) {
+    const double tx = walls[w].t[0], tz = walls[w].t[1];
+    const double rx = x - walls[w].a[0], rz = z - walls[w].a[1];
+    const double s = rx * tx + rz * tz;
+    /* not within end_margin of the face's ends: over a wall's open top a
+     * particle passes above its layers, not through them */
+    if (s < end_margin || s > walls[w].len - end_margin) continue;
+    const double d = tx * rz - tz * rx; /* signed distance, > 0 on the fluid side */
+    if (d < 0 && d > -walls[w].thickness && (best < 0 || -d < depth)) {
+      best = w;
+      depth = -d;
+    }
+  }
+  if (best < 0) return 0;
+  const double nx = -walls[best].t[1], nz = walls[best].t[0]; /* unit normal into the fluid */
+  p->pos[0][i] = x + depth * nx;
+  p->pos[az][i] = z + depth * nz;
+  const double vn = (double)p->vel[0][i] * nx + (double)p->vel[az][i] * nz;
+  if (vn < 0) {
+    p->vel[0][i] = (wl_real)((double)p->vel[0][i] - vn * nx);
+    p->vel[az][i] = (wl_real)((double)p->vel[az][i] - vn * nz);
+  }
+  if (p->vel_h[0]) {
+    const double vh = (double)p->vel_h[0][i] * nx + (double)p->vel_h[az][i] * nz;
+    if (vh < 0) {
+      p->vel_h[0][i] = (wl_real)((double)p->vel_h[0][i] - vh * nx);
+      p->vel_h[az][i] = (wl_real)((double)p->vel_h[az][i] - vh * nz);
+    }
+  }
+  return 1;
+}
+
 /* Fault of particle i (WL_SPH_FAULT_NONE if none); *wall gets the index of
  * the crossed wall for WL_SPH_FAULT_PENETRATION. lo, hi: domain box [m]. */
 WL_HD static inline int wl_sph_guard(const int dim, const struct wl_sph_const *k,
@@ -73,21 +148,34 @@ WL_HD static inline int wl_sph_guard(const int dim, const struct wl_sph_const *k
   for (int a = 0; a < dim; a++)
     finite = finite && wl_sph_finite(p->pos[a][i]) && wl_sph_finite((double)p->vel[a][i]);
   if (!finite) return WL_SPH_FAULT_NONFINITE;
+  if (p->kind[i] == WL_KIND_FLUID && p->body[i] == WL_SPH_BODY_EXCLUDED) return WL_SPH_FAULT_NONE;
   for (int a = 0; a < dim; a++)
     if (p->pos[a][i] < lo[a] || p->pos[a][i] > hi[a]) return WL_SPH_FAULT_OUTSIDE;
   if (p->kind[i] != WL_KIND_FLUID) return WL_SPH_FAULT_NONE;
   if (p->rho[i] < k->rho_min || p->rho[i] > k->rho_max) return WL_SPH_FAULT_DENSITY;
   const double x = p->pos[0][i], z = p->pos[dim - 1][i];
+  /* its depth in the wall: the least over the faces it lies behind (at a
+   * convex corner, a particle sliding just under the crest is not deep in
+   * the wall although it is far behind the wall's vertical face) */
+  int deepest = -1;
+  double depth = 0;
   for (int w = 0; w < n_walls; w++) {
     const double tx = walls[w].t[0], tz = walls[w].t[1];
     const double rx = x - walls[w].a[0], rz = z - walls[w].a[1];
     const double s = rx * tx + rz * tz;
-    if (s < 0 || s > walls[w].len) continue;
+    /* a particle within `penetration` of a face's end is passing over the
+     * wall's open top (or into the neighbouring face's region), not
+     * through it */
+    if (s < k->penetration || s > walls[w].len - k->penetration) continue;
     const double d = tx * rz - tz * rx; /* signed distance, > 0 on the fluid side */
-    if (d < -k->penetration && d > -(walls[w].thickness + k->penetration)) {
-      *wall = w;
-      return WL_SPH_FAULT_PENETRATION;
+    if (d <= 0 && d > -(walls[w].thickness + k->penetration) && (deepest < 0 || -d < depth)) {
+      deepest = w;
+      depth = -d;
     }
+  }
+  if (deepest >= 0 && depth > k->penetration) {
+    *wall = deepest;
+    return WL_SPH_FAULT_PENETRATION;
   }
   return WL_SPH_FAULT_NONE;
 }

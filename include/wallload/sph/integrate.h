@@ -83,8 +83,17 @@ WL_HD static WL_INLINE void wl_sph_predict(const int dim, const struct wl_sph_co
                                         const double (*body_vel)[WL_SPH_DIM_MAX], int i) {
   const wl_real hdt = (wl_real)(0.5 * dt);
   const int kind = p->kind[i];
+  if (kind == WL_KIND_FLUID && p->body[i] == WL_SPH_BODY_EXCLUDED) { /* at rest (guard.h) */
+    p->rho_h[i] = p->rho[i];
+    for (int a = 0; a < dim; a++) {
+      p->vel_h[a][i] = 0;
+      p->pos_h[a][i] = p->pos[a][i];
+    }
+    return;
+  }
   if (kind == WL_KIND_FLUID) {
-    p->rho_h[i] = p->rho[i] + hdt * p->ar[i];
+    const wl_real rho = p->rho[i] + hdt * p->ar[i];
+    p->rho_h[i] = rho > k->rho_floor ? rho : k->rho_floor; /* params.h tension_max */
     for (int a = 0; a < dim; a++) {
       p->vel_h[a][i] = p->vel[a][i] + hdt * p->ace[a][i];
       p->pos_h[a][i] = p->pos[a][i] + 0.5 * dt * (double)p->vel[a][i];
@@ -107,10 +116,11 @@ WL_HD static WL_INLINE void wl_sph_predict(const int dim, const struct wl_sph_co
 WL_HD static WL_INLINE void wl_sph_correct(const int dim, const struct wl_sph_const *k,
                                            const struct wl_particles *p, double dt,
                                            const double (*body_vel)[WL_SPH_DIM_MAX], int i) {
+  if (p->kind[i] == WL_KIND_FLUID && p->body[i] == WL_SPH_BODY_EXCLUDED) return; /* guard.h */
   const wl_real eps = -(p->ar[i] / p->rho_h[i]) * (wl_real)dt;
   const wl_real rho = p->rho[i] * (WL_R(2.0) - eps) / (WL_R(2.0) + eps);
   if (p->kind[i] == WL_KIND_FLUID) {
-    p->rho[i] = rho;
+    p->rho[i] = rho > k->rho_floor ? rho : k->rho_floor;
     for (int a = 0; a < dim; a++) {
       const wl_real v = p->vel[a][i] + (wl_real)dt * p->ace[a][i];
       p->vel[a][i] = v;
@@ -140,12 +150,13 @@ WL_HD static WL_INLINE void wl_sph_verlet(const int dim, const struct wl_sph_con
                                           const struct wl_particles *p, double dt, double dt_prev,
                                           const double (*body_vel)[WL_SPH_DIM_MAX], int euler,
                                           int i) {
+  if (p->kind[i] == WL_KIND_FLUID && p->body[i] == WL_SPH_BODY_EXCLUDED) return; /* guard.h */
   const wl_real span = (wl_real)(euler ? dt : dt_prev + dt);
   const wl_real rho_n = p->rho[i];
   const wl_real rho = (euler ? rho_n : p->rho_h[i]) + span * p->ar[i];
   p->rho_h[i] = rho_n;
   if (p->kind[i] == WL_KIND_FLUID) {
-    p->rho[i] = rho;
+    p->rho[i] = rho > k->rho_floor ? rho : k->rho_floor;
     for (int a = 0; a < dim; a++) {
       const wl_real v_n = p->vel[a][i], acc = p->ace[a][i];
       p->vel[a][i] = (euler ? v_n : p->vel_h[a][i]) + span * acc;

@@ -65,6 +65,9 @@ wl_sph_pair_eval(const int laminar, const int with_ddt, const struct wl_sph_cons
   if (laminar) {
     o.c_r = -k->mass * prs * F;
     o.c_v = k->mass * lam * F * r2 * inv_r2e_rho_sum;
+    /* the pairs without density diffusion (fluid-wall) also get the
+     * approach-only artificial viscosity av (params.h wall_alpha) */
+    if (!with_ddt) o.c_r += k->mass * av * (rv - wl_sph_abs(rv)) * inv_r2e_rho_sum * F;
   } else {
     /* m_j Pi_ij = -m_j av (rv)^- / ((r^2 + eta^2) rho-bar), rho-bar = (rho_i + rho_j)/2;
      * 2 (rv)^- = rv - |rv| (sph/defs.h wl_sph_neg), with the same bits */
@@ -108,6 +111,16 @@ WL_HD static WL_INLINE void wl_sph_pair_j(const struct wl_sph_const *k, wl_real 
                                           wl_real *inv_rho_j, wl_real *vol_j) {
   *inv_rho_j = wl_sph_rcp(rho_j);
   *vol_j = k->mass * *inv_rho_j;
+}
+
+/* The pressure of fluid particle i in its pairs with wall particles: with
+ * the wall condition (sph/wall.h) not below 0, as the wall's own: a wall
+ * pushes the fluid off, it never pulls it on. A splash particle in tension
+ * (density below rho0) would otherwise be drawn into the wall it runs
+ * along, where nothing pushes back (the wall's pressure is the fluid's,
+ * 0 at the surface). With the dynamic condition, p_i as it is. */
+WL_HD static WL_INLINE wl_real wl_sph_pair_p_wall(const struct wl_sph_const *k, wl_real p_i) {
+  return k->boundary == WL_SPH_BOUND_ADAMI && p_i < WL_R(0.0) ? WL_R(0.0) : p_i;
 }
 
 /* The same for a boundary neighbour j. With the wall condition (sph/wall.h)

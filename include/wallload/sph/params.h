@@ -71,6 +71,26 @@ struct wl_sph_params {
   double cfl;               /* CFL number [-]; default 0.2 */
   enum wl_sph_integrator integrator; /* default WL_SPH_SYMPLECTIC */
   enum wl_sph_boundary boundary;     /* wall condition; default WL_SPH_BOUND_ADAMI */
+  /* Artificial viscosity (Monaghan 1992, approaching pairs only) between
+   * fluid and wall particles when the fluid's viscosity is laminar: a
+   * wall resists a particle running into it in proportion to its approach
+   * speed, as the artificial viscosity does everywhere in DualSPHysics'
+   * runs. 0: none. With artificial viscosity the walls get alpha *
+   * visc_bound_factor instead. */
+  double wall_alpha;                 /* [-] */
+  /* Wall limiter (sph/guard.h wl_sph_wall_limit): a fluid particle found
+   * behind a wall face after its update is put back on the face and loses
+   * its velocity into the wall. 0: off. */
+  int wall_limiter;
+  /* Tension limit: a fluid particle's density is not integrated below the
+   * Tait density of the pressure -tension_max rho0 g h_max, so the fluid
+   * sustains at most that tension (in heads of its own depth). A particle
+   * that leaves the fluid or a wall (a splash, a jet off the wall's end)
+   * loses by the continuity equation the density its kernel's lost
+   * neighbours gave it, and would otherwise pull on the fluid with up to
+   * the Tait equation's -B (tens of times rho0 g h_max) when it lands.
+   * Default 1; <= 0: no limit. */
+  double tension_max;       /* [-] */
   int verlet_steps;         /* Verlet: an Euler step every verlet_steps steps; default 40
                                (DualSPHysics VerletSteps) */
   /* Guard (instability detection after every step; see sph/guard.h). */
@@ -113,6 +133,7 @@ struct wl_sph_const {
   enum wl_sph_visc visc;
   enum wl_sph_ddt ddt;
   enum wl_sph_boundary boundary;
+  int wall_limiter;   /* wl_sph_wall_limit after each update (params.h) */
   wl_real h;          /* smoothing length [m] */
   wl_real inv_h;      /* 1/h [1/m] */
   wl_real support2;   /* (2h)^2 [m^2] */
@@ -125,7 +146,8 @@ struct wl_sph_const {
   wl_real c0;         /* [m/s] */
   wl_real mass;       /* rho0 dp^dim, fluid and boundary [kg or kg/m in 2D] */
   wl_real av_ff;      /* alpha c0 h: artificial viscosity, fluid-fluid [m^2/s] */
-  wl_real av_fb;      /* visc_bound_factor alpha c0 h, fluid-boundary [m^2/s] */
+  wl_real av_fb;      /* visc_bound_factor alpha c0 h, fluid-boundary [m^2/s]; with laminar
+                         viscosity wall_alpha c0 h */
   wl_real lam_ff;     /* 4 nu (Lo & Shao), fluid-fluid [m^2/s] */
   wl_real lam_fb;     /* 4 nu visc_bound_factor, fluid-boundary [m^2/s] */
   wl_real ddt_k;      /* delta * 2h * c0 (DualSPHysics DDTkh * Cs0) [m^2/s] */
@@ -139,6 +161,7 @@ struct wl_sph_const {
   enum wl_sph_integrator integrator;
   int verlet_steps;   /* Verlet: an Euler step every verlet_steps steps */
   double dt_collapse, rho_min, rho_max; /* guard thresholds ([-], kg/m^3, kg/m^3) */
+  wl_real rho_floor;  /* fluid density floor (tension_max) [kg/m^3]; 0: none */
   double penetration; /* guard: crossing depth [m] */
   double shift_coef;  /* particle shifting A [-] (0: off) */
   double shift_tfs;   /* its free-surface threshold on div r [-] */

@@ -20,6 +20,11 @@ enum wl_particle_kind {
   WL_KIND_MOVING = 2, /* moving boundary, prescribed motion of its body (paddle) */
 };
 
+/* The body number of a fluid particle taken out of the run (sph/guard.h
+ * wl_sph_exclude): it left the domain box, and now rests where it left it;
+ * the integrators and the guard leave it alone. */
+#define WL_SPH_BODY_EXCLUDED 255
+
 struct wl_particles {
   int dim;      /* 2: components (x, z); 3: (x, y, z) */
   int n;        /* particles in use */
