@@ -10,6 +10,7 @@
 #include "testutil.h"
 #include "wallload/scene.h"
 #include "wallload/sph.h"
+#include "wallload/sph/guard.h"
 
 #define DP 0.02
 #define H 0.4
@@ -80,8 +81,66 @@ static void prog(void *user, const struct wl_sph_progress *pr) {
   if (pr->t >= 0 && pr->n > 0) n_prog++;
 }
 
+/* The guard's depth rule and the wall limiter (sph/guard.h) on one fluid
+ * particle against hand-made faces: a seawall block (vertical face x = 1
+ * up to its crest z = 0.45, crest face on top), layers 0.1 m deep, and a
+ * thin wall (layers 0.05 m) for the back-side rule. Reference: the
+ * geometry itself (distances by hand). */
+static void depth_rules(void) {
+  struct wl_particles p = {0};
+  struct wl_error err;
+  if (wl_particles_alloc(&p, 2, 1, 1, &err)) {
+    printf("FAIL alloc: %s\n", err.msg);
+    wl_test_failures++;
+    return;
+  }
+  p.n = 1;
+  p.kind[0] = WL_KIND_FLUID;
+  p.rho[0] = 1000;
+  struct wl_sph_const k;
+  memset(&k, 0, sizeof k);
+  k.rho_min = 700;
+  k.rho_max = 1300;
+  k.penetration = 0.01;
+  const double lo[2] = {-10, -10}, hi[2] = {10, 10};
+  struct wl_sph_wall w[2] = {wl_sph_wall_make(1, 0, 1, 0.45, 0.1),
+                             wl_sph_wall_make(1, 0.45, 2, 0.45, 0.1)};
+  int wall = -1;
+  p.pos[0][0] = 1.04, p.pos[1][0] = 0.4499;
+  CHECK_TRUE(wl_sph_guard(2, &k, &p, lo, hi, w, 2, 0, &wall) == WL_SPH_FAULT_NONE,
+             "0.1 mm under the crest, 40 mm behind the vertical face: not a crossed wall");
+  p.vel[0][0] = 0.5, p.vel[1][0] = -0.2;
+  CHECK_TRUE(wl_sph_wall_limit(2, &p, w, 2, 0.01, 0) == 1 && fabs(p.pos[1][0] - 0.45) < 1e-12 &&
+                 fabs(p.pos[0][0] - 1.04) < 1e-12 && p.vel[1][0] == 0 && p.vel[0][0] == 0.5f,
+             "the limiter lifts it onto the crest and keeps its velocity along it");
+  p.pos[0][0] = 1.04, p.pos[1][0] = 0.43;
+  CHECK_TRUE(wl_sph_guard(2, &k, &p, lo, hi, w, 2, 0, &wall) == WL_SPH_FAULT_PENETRATION && wall == 1,
+             "20 mm under the crest, 40 mm behind the face: crossed, the crest the nearest way out");
+  struct wl_sph_wall thin = wl_sph_wall_make(1, 0, 1, 1, 0.05);
+  p.pos[0][0] = 1.048, p.pos[1][0] = 0.5;
+  p.vel[0][0] = -0.3, p.vel[1][0] = -1;
+  CHECK_TRUE(wl_sph_guard(2, &k, &p, lo, hi, &thin, 1, 0, &wall) == WL_SPH_FAULT_NONE,
+             "2 mm into the back of a wall's layers (water running down its outside): not crossed");
+  CHECK_TRUE(wl_sph_wall_limit(2, &p, &thin, 1, 0.01, 0) == 1 && fabs(p.pos[0][0] - 1.05) < 1e-12 &&
+                 p.vel[0][0] == 0 && p.vel[1][0] == -1,
+             "the limiter puts it out at the back, its velocity into the wall removed");
+  p.pos[0][0] = 1.025;
+  CHECK_TRUE(wl_sph_guard(2, &k, &p, lo, hi, &thin, 1, 0, &wall) == WL_SPH_FAULT_PENETRATION,
+             "in the middle of the layers (25 mm from face and back): crossed");
+  p.pos[0][0] = 1.02, p.pos[1][0] = 0.995;
+  CHECK_TRUE(wl_sph_guard(2, &k, &p, lo, hi, &thin, 1, 0, &wall) == WL_SPH_FAULT_NONE,
+             "within `penetration` of the face's open end: passing over the top, not crossed");
+  p.pos[0][0] = 20, p.pos[1][0] = 0.5;
+  CHECK_TRUE(wl_sph_exclude(2, &p, lo, hi, 0) == 1 && p.body[0] == WL_SPH_BODY_EXCLUDED &&
+                 p.pos[0][0] < hi[0] && p.pos[0][0] > hi[0] - 1e-6 && p.vel[1][0] == 0 &&
+                 wl_sph_guard(2, &k, &p, lo, hi, &thin, 1, 0, &wall) == WL_SPH_FAULT_NONE,
+             "out of the domain box: taken out of the run at rest on the box's face, no fault");
+  wl_particles_clear(&p);
+}
+
 int main(void) {
   struct wl_error err;
+  depth_rules();
 
   /* ---- guard faults, found in the initial state ---- */
   wl_error_clear(&err);

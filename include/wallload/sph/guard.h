@@ -4,18 +4,24 @@
  *
  * Faults, in the order checked:
  *  - non-finite position, velocity or density (any particle);
- *  - a particle outside the domain box (the cell grid);
+ *  - a particle outside the domain box (the cell grid); a fluid particle
+ *    the update carried out of it is first taken out of the run
+ *    (wl_sph_exclude, below), so this is a boundary particle's fault;
  *  - fluid density outside [rho_min, rho_max] (DualSPHysics RhopOutMin/Max,
  *    700 and 1300 kg/m^3 for water by default): compressibility has failed;
  *  - a fluid particle inside a wall: walls are segments of the wall FACE in
  *    the (x, z) plane (the line where the fluid ends and the boundary
  *    layers begin; scene.h puts the first layer dp/2 behind it), with the
- *    fluid on the left of a -> b. A fluid particle whose projection falls
- *    on the segment and that lies more than `penetration` (default dp/2)
- *    behind the face, but not beyond the back of the boundary layers
- *    (thickness), has crossed the wall. Water that went over a wall and
- *    lands behind it is beyond the layers and is not a fault. In 3D the
- *    segments are extruded along y.
+ *    fluid on the left of a -> b, and caps across the layers at a
+ *    polyline's ends (wl_sph_config_add_faces). A fluid particle's depth
+ *    in a wall is, over the faces on which its projection falls (farther
+ *    than `penetration` from their ends) and behind which it lies within
+ *    the layers (thickness), the least of its distances to the face and to
+ *    the back of the layers: the nearest way out. Deeper than `penetration`
+ *    (default dp/2) is a crossed wall. So water that slides just under a
+ *    convex corner's other face, passes over a wall's open top, or went
+ *    over a wall and runs down its back is not a fault. In 3D the segments
+ *    are extruded along y.
  * The dt collapse (dt < dt_collapse * initial dt) is checked by the driver. */
 #ifndef WALLLOAD_SPH_GUARD_H
 #define WALLLOAD_SPH_GUARD_H
@@ -105,7 +111,7 @@ WL_HD static inline int wl_sph_wall_limit(const int dim, const struct wl_particl
   const int az = dim - 1;
   const double x = p->pos[0][i], z = p->pos[az][i];
   int best = -1;
-  double depth = 0;
+  double depth = 0, way = 1.0;
   for (int w = 0; w < n_walls; w++) {
     const double tx = walls[w].t[0], tz = walls[w].t[1];
     const double rx = x - walls[w].a[0], rz = z - walls[w].a[1];
@@ -114,13 +120,19 @@ WL_HD static inline int wl_sph_wall_limit(const int dim, const struct wl_particl
      * particle passes above its layers, not through them */
     if (s < end_margin || s > walls[w].len - end_margin) continue;
     const double d = tx * rz - tz * rx; /* signed distance, > 0 on the fluid side */
-    if (d < 0 && d > -walls[w].thickness && (best < 0 || -d < depth)) {
+    if (!(d < 0 && d > -walls[w].thickness)) continue;
+    /* out through the face, or through the back of the layers (water
+     * that went over the wall and runs down its outside), the nearer */
+    const double front = -d, back = walls[w].thickness + d;
+    if (best < 0 || (front < back ? front : back) < depth) {
       best = w;
-      depth = -d;
+      depth = front < back ? front : back;
+      way = front < back ? 1.0 : -1.0;
     }
   }
   if (best < 0) return 0;
-  const double nx = -walls[best].t[1], nz = walls[best].t[0]; /* unit normal into the fluid */
+  /* unit normal out of the wall on the way taken */
+  const double nx = -walls[best].t[1] * way, nz = walls[best].t[0] * way;
   p->pos[0][i] = x + depth * nx;
   p->pos[az][i] = z + depth * nz;
   const double vn = (double)p->vel[0][i] * nx + (double)p->vel[az][i] * nz;
@@ -168,9 +180,13 @@ WL_HD static inline int wl_sph_guard(const int dim, const struct wl_sph_const *k
      * through it */
     if (s < k->penetration || s > walls[w].len - k->penetration) continue;
     const double d = tx * rz - tz * rx; /* signed distance, > 0 on the fluid side */
-    if (d <= 0 && d > -(walls[w].thickness + k->penetration) && (deepest < 0 || -d < depth)) {
+    if (!(d <= 0 && d > -walls[w].thickness)) continue;
+    /* depth from the face or from the back of the layers, the less: water
+     * that went over a wall runs down its outside, against the back */
+    const double front = -d, back = walls[w].thickness + d, dw = front < back ? front : back;
+    if (deepest < 0 || dw < depth) {
       deepest = w;
-      depth = -d;
+      depth = dw;
     }
   }
   if (deepest >= 0 && depth > k->penetration) {
