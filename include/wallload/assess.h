@@ -94,6 +94,8 @@ struct wl_case_result {
   double output_dt;         /* sampling interval [s] */
   double t_reached;         /* [s] */
   long steps;
+  long n_limited;           /* wall-limiter corrections (sph/guard.h wl_sph_wall_limit) */
+  long n_excluded;          /* fluid particles that left the domain box (wl_sph_exclude) */
   double runtime_s;         /* wall-clock [s] */
   int n_particles, n_fluid;
   double dp, h, c0;

@@ -340,6 +340,8 @@ static enum wl_status run_case(const struct wl_assess_opts *opts,
   if (sim) {
     c->t_reached = wl_sph_sim_time(sim);
     c->steps = wl_sph_sim_steps(sim);
+    c->n_limited = wl_sph_sim_limited(sim);
+    c->n_excluded = wl_sph_sim_excluded(sim);
   }
   c->runtime_s = now_s() - start;
   if (rc.snaps) {

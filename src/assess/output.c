@@ -395,6 +395,10 @@ static enum wl_status write_summary(const struct wl_scenario *s, const struct wl
     }
     jval(&t, "particles", c->n_particles, "1", NULL, 0);
     jval(&t, "steps", (double)c->steps, "1", NULL, 0);
+    jval(&t, "wall_limiter_corrections", (double)c->n_limited, "1",
+         "fluid particles put back on a wall face they had passed (particle-steps)", 0);
+    jval(&t, "particles_left_domain", (double)c->n_excluded, "1",
+         "fluid particles that left the domain box and were taken out of the run", 0);
     jval(&t, "end_time", c->t_end, "s", "planned", 0);
     jval(&t, "time_reached", c->t_reached, "s", NULL, 0);
     jval(&t, "runtime", c->runtime_s, "s", "wall clock", 0);

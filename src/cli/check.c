@@ -150,6 +150,9 @@ static void print_case(const struct wl_case_result *c, const struct wl_scenario 
   printf("  %-34s %12.5g m\n", "max run-up at the wall", l->runup);
   printf("  %-34s %12.5g s\n", "rise time", l->force_peak.rise_time);
   printf("  %-34s %12.5g s\n", "load duration", l->force_peak.duration);
+  if (c->n_limited || c->n_excluded)
+    printf("  %-34s %ld wall-limiter corrections, %ld fluid particles left the domain\n",
+           "kept in bounds", c->n_limited, c->n_excluded);
   struct wl_load_units u;
   if (wl_scenario_load_units(s, &u))
     printf("  %-34s %.5g %s, impulse %.5g %s (positive phase %.5g), moment %.5g %s, run-up "
