@@ -4,7 +4,9 @@
  * Part. Mech. 9:867): Wendland C2 kernel, Tait equation of state, symmetric
  * pressure term with Monaghan artificial or laminar viscosity, delta-SPH
  * density diffusion with the Fourtakas et al. (2019) hydrostatic correction,
- * dynamic boundary particles, symplectic position-Verlet integration with a
+ * walls whose particles take the fluid's pressure (Adami et al. 2012,
+ * sph/wall.h; or DualSPHysics' dynamic boundary particles), symplectic
+ * position-Verlet integration with a
  * variable step. The physics is in the headers include/wallload/sph/ (shared with the
  * backends); this header holds the host-side pieces:
  *

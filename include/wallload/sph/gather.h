@@ -18,7 +18,12 @@
  * 2007, CMC 5:173): fluid i sums fluid and boundary neighbours; boundary i
  * sums fluid neighbours only, and only the continuity equation (its density
  * then gives the pressure that keeps fluid out). Boundary-boundary pairs are
- * never visited. Density diffusion acts between fluid pairs only.
+ * never visited. Density diffusion acts between fluid pairs only. With the
+ * wall condition (params.h WL_SPH_BOUND_ADAMI, the default) the backends
+ * call this for fluid particles only: the boundary particles' density and
+ * pressure come from sph/wall.h's pass before it, and a fluid particle's
+ * pairs with them take the wall's volume and pressure rules of
+ * sph/interact.h (wl_sph_pair_j_bound, wl_sph_pair_p_wall).
  *
  * Mirror planes (k->mirror, 3D; sph/params.h), at the grid's low and high
  * y faces: a particle in the cell layers beside a plane also sums, after

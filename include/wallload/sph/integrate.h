@@ -30,7 +30,11 @@
  *
  * Boundary particles (dynamic boundary condition) integrate density the same
  * way, clamped to rho >= rho0 as DualSPHysics does (a wall never sucks fluid
- * in). Fixed ones never move; moving ones (paddle) move with the velocity
+ * in); with the wall condition (sph/wall.h) their density rate is 0 and the
+ * wall pass sets their density before each force evaluation. A fluid
+ * particle's density is not integrated below k->rho_floor (params.h
+ * tension_max), and one taken out of the run (guard.h wl_sph_exclude) is
+ * left where it is. Fixed ones never move; moving ones (paddle) move with the velocity
  * of their body over the step, v_body = (X(t + dt) - X(t))/dt, which lands
  * them exactly on the prescribed trajectory X(t).
  *
