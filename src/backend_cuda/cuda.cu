@@ -8,6 +8,9 @@
  *             fields gathered into sorted order; begin[key] = first sorted
  *             index of each key by binary search (every entry written, no
  *             memset, no atomics)
+ *   walls     with the wall condition (the default), k_wall: one thread per
+ *             boundary particle samples the fluid (sph/wall.h); the force
+ *             loops then start at the first fluid particle
  *   forces    one thread per particle, the pair physics of sph/interact.h
  *             summed as wl_sph_gather (sph/gather.h) does (three loops,
  *             below) at the step start; predictor (sph/integrate.h) and the
