@@ -115,4 +115,19 @@ msg=$("$bin" frobnicate 2>&1); rc=$?
 out=$("$bin" check "$src/scenarios/seawall.yaml"); rc=$?
 [ $rc = 0 ] && grep -q "water.gravity .*9.81 m/s^2 .*(default)" <<<"$out" && ok "check lists defaults" || bad "check defaults"
 grep -q "bathymetry\[0\].slope .*0.175439 .*(given as 1/5.7" <<<"$out" && ok "check shows the user's value beside SI" || bad "check user value"
+# SIGTERM and SIGHUP stop a run as Ctrl-C does (issue 18): the case in
+# progress keeps what it computed, its status is `interrupted` and names the
+# signal, and no temporary file is left behind.
+for sig in TERM HUP; do
+  rm -rf "sig$sig"
+  "$bin" assess tiny.yaml --quiet --end-time 30 -o "sig$sig" >"sig$sig.out" 2>&1 &
+  pid=$!
+  for _ in $(seq 1 200); do [ -e "sig$sig" ] && sleep 1 && break; sleep 0.1; done
+  kill -s "$sig" "$pid"
+  wait "$pid"; rc=$?
+  st=$(python3 -c "import json;print(json.load(open('sig$sig/summary.json'))['cases']['solitary']['status'])" 2>/dev/null)
+  [ "$st" = interrupted ] && ok "SIG$sig: summary.json status interrupted (exit $rc)" || bad "SIG$sig: status '$st', exit $rc: $(tail -3 "sig$sig.out")"
+  grep -q "SIG$sig" "sig$sig/summary.json" && ok "SIG$sig: the stop reason names the signal" || bad "SIG$sig: reason not in summary.json"
+  ls "sig$sig" | grep -q '\.tmp$' && bad "SIG$sig: temporary files left" || ok "SIG$sig: no temporary files left"
+done
 exit $fail

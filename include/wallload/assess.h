@@ -178,7 +178,8 @@ struct wl_assess_opts {
   const char *backend;       /* NULL: the scenario's run.backend; else "cpu", "cuda", "auto" */
   double snapshot_interval;  /* [s]; <= 0: a twentieth of each case's end time */
   double end_time;           /* > 0: override every case's end time [s] (tests) */
-  volatile sig_atomic_t *interrupted; /* the CLI's Ctrl-C flag; may be NULL */
+  volatile sig_atomic_t *interrupted; /* the CLI's stop flag: the signal's number (SIGINT,
+                                         SIGTERM, SIGHUP) once one came, else 0; may be NULL */
   wl_assess_progress_fn progress;     /* may be NULL */
   void *user;
 };

@@ -5,6 +5,7 @@
 #include <errno.h>
 #include <math.h>
 #include <omp.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -188,8 +189,11 @@ static enum wl_status on_output(void *user, struct wl_sph_sim *sim, double t,
                                 struct wl_error *err) {
   struct run_ctx *rc = user;
   struct wl_case_result *c = rc->c;
-  if (rc->opts->interrupted && *rc->opts->interrupted)
-    return wl_error_set(err, WL_EINTERRUPTED, "interrupted by the user at t = %.4f s", t);
+  if (rc->opts->interrupted && *rc->opts->interrupted) {
+    const int sig = (int)*rc->opts->interrupted;
+    return wl_error_set(err, WL_EINTERRUPTED, "interrupted by %s at t = %.4f s",
+                        sig == SIGTERM ? "SIGTERM" : sig == SIGHUP ? "SIGHUP" : "the user (SIGINT)", t);
+  }
   const struct wl_particles *p = wl_sph_sim_particles(sim, err);
   if (!p) return err->status ? err->status : WL_EIO;
   enum wl_status st = wl_sph_probe_index(rc->probe, p, err);

@@ -85,15 +85,14 @@ enum wl_status wl_cli_check(int argc, char **argv, struct wl_error *err) {
   return st;
 }
 
-/* Ctrl-C sets this; the running case stops at its next output time and
- * everything computed so far is written. (The one piece of process state:
- * a signal handler can reach nothing else.) */
+/* Ctrl-C (SIGINT), SIGTERM (a scheduler's or `kill`'s stop) and SIGHUP (a
+ * closed terminal) set this to the signal's number; the running case stops
+ * at its next output time and everything computed so far is written, with
+ * status `interrupted`. (The one piece of process state: a signal handler
+ * can reach nothing else.) */
 static volatile sig_atomic_t interrupted = 0;
 
-static void on_sigint(int sig) {
-  (void)sig;
-  interrupted = 1;
-}
+static void on_stop_signal(int sig) { interrupted = sig; }
 
 struct progress_state {
   int tty;
@@ -249,13 +248,14 @@ enum wl_status wl_cli_assess(int argc, char **argv, struct wl_error *err) {
     }
   }
   opts.interrupted = &interrupted;
-  struct sigaction sa, old;
+  static const int stop_signals[3] = {SIGINT, SIGTERM, SIGHUP};
+  struct sigaction sa, old[3];
   memset(&sa, 0, sizeof sa);
-  sa.sa_handler = on_sigint;
-  sigaction(SIGINT, &sa, &old);
+  sa.sa_handler = on_stop_signal;
+  for (int k = 0; k < 3; k++) sigaction(stop_signals[k], &sa, &old[k]);
   struct wl_assess_result res;
   st = wl_assess_run(&s, &plan, &opts, &res, err);
-  sigaction(SIGINT, &old, NULL);
+  for (int k = 0; k < 3; k++) sigaction(stop_signals[k], &old[k], NULL);
   for (int i = 0; i < res.n_cases; i++) {
     print_case(&res.cases[i], &s);
     print_convergence(&res.cases[i], &res.conv[i]);
