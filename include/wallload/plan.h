@@ -119,6 +119,11 @@ struct wl_plan {
  * laminar viscosity, 2.5 % with coefh 1.2 and laminar viscosity (measured
  * 2026-11-23, README "Numerical choices"). 3D's coefh 1 already gives
  * h = 1.73 dp. */
+/* Most particles (fluid and boundary) one case may have: the backends
+ * index particles with int, and 2^30 particles need about 160 GiB on the
+ * CPU and 120 GiB on a GPU, beyond the machines wallload runs on. */
+#define WL_PLAN_PARTICLES_MAX (1L << 30)
+
 #define WL_PLAN_COEFH_2D 1.2
 #define WL_PLAN_COEFH_3D 1.0
 

@@ -2,6 +2,7 @@
  * See plan.h for the two equal-energy bases. */
 #include "wallload/plan.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdarg.h>
 #include <string.h>
@@ -401,6 +402,14 @@ static double wet_area(const struct wl_scenario *s, double h, double x0) {
   return area;
 }
 
+/* x as a count, without the undefined conversion of a value beyond long's
+ * range (a dp of 1e-10 m): clamped to LONG_MAX / 4, so that sums of a few
+ * counts stay representable; the plan then refuses it (WL_PLAN_PARTICLES_MAX). */
+static long count_of(double x) {
+  const double most = (double)(LONG_MAX / 4);
+  return !(x > 0) ? 0 : x >= most ? LONG_MAX / 4 : (long)x;
+}
+
 /* Particles of one case whose flume starts at x_left, and its
  * particle-steps to t_end. */
 static void case_cost(const struct wl_scenario *s, struct wl_plan *p, double x_left, double t_end,
@@ -411,8 +420,8 @@ static void case_cost(const struct wl_scenario *s, struct wl_plan *p, double x_l
   /* bed and land to the end of the flume, left end and seawall faces */
   double perimeter = (xw + p->land_length - x_left) + 2.0 * wall_top + p->h;
   double across = p->dims == 3 ? s->domain.width.q.si / (p->symmetry ? 2 : 1) / p->dp : 1.0;
-  *n_fluid = (long)(area / (p->dp * p->dp) * across);
-  *n_boundary = (long)(BOUNDARY_LAYERS * perimeter / p->dp * across);
+  *n_fluid = count_of(area / (p->dp * p->dp) * across);
+  *n_boundary = count_of(BOUNDARY_LAYERS * perimeter / p->dp * across);
   if (p->dims == 3) {
     /* flume.c: the polyline extruded under the side walls too, and the
      * side walls over the flume's profile up to the domain's top */
@@ -424,8 +433,8 @@ static void case_cost(const struct wl_scenario *s, struct wl_plan *p, double x_l
     if (profile < 0) profile = 0;
     /* side walls of boundary particles (none where a mirror plane is) */
     const double sides = p->slip_walls ? 0.0 : p->symmetry ? 1.0 : 2.0;
-    *n_boundary = (long)(layers * perimeter / p->dp * (across + sides * layers) +
-                         sides * layers * profile / (p->dp * p->dp));
+    *n_boundary = count_of(layers * perimeter / p->dp * (across + sides * layers) +
+                           sides * layers * profile / (p->dp * p->dp));
   }
   *particle_steps = (double)(*n_fluid + *n_boundary) * t_end / p->dt;
 }
@@ -531,6 +540,18 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
       n_max = px->n_fluid + px->n_boundary, p->n_fluid = px->n_fluid, p->n_boundary = px->n_boundary;
   }
   p->memory_bytes = BYTES_PER_PARTICLE * (double)n_max;
+  if (n_max > WL_PLAN_PARTICLES_MAX) {
+    const struct wl_scenario_value *r =
+        s->resolution.dp.is_auto ? &s->resolution.particles_per_height : &s->resolution.dp;
+    char rbuf[32];
+    return wl_error_set(err, WL_EINPUT,
+                        "%s:%s: resolution.%s: dp = %g m needs about %.3g particles (%.3g GiB), "
+                        "more than the %.3g a run can hold; expected a larger dp or fewer "
+                        "particles per wave height",
+                        s->path, where(r, rbuf), s->resolution.dp.is_auto ? "particles_per_height" : "dp",
+                        p->dp, (double)n_max, p->memory_bytes / 1073741824.0,
+                        (double)WL_PLAN_PARTICLES_MAX);
+  }
   p->cpu_seconds = p->particle_steps * p->evals_per_step /
                    (p->dims == 3 ? WL_PLAN_CPU_RATE_3D : WL_PLAN_CPU_RATE);
   const double gpu_rate = p->dims == 3 ? WL_PLAN_GPU_RATE_3D : WL_PLAN_GPU_RATE;
