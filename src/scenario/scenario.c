@@ -440,6 +440,25 @@ static enum wl_status check_rules(struct ctx *c, struct wl_scenario *s) {
                xg, xw);
       return at_value(c, &s->gauges[i].x, key, msg);
     }
+    /* a name becomes a results.h5 group, a CSV column and a report label:
+     * letters, digits and . _ + - only; "wall" is the wall-face gauge's */
+    const char *nm = s->gauges[i].name.text;
+    int good = nm[0] != '\0' && strlen(nm) <= 31 && strcmp(nm, "wall") != 0;
+    for (const char *q = nm; good && *q; q++)
+      good = isalnum((unsigned char)*q) || *q == '.' || *q == '_' || *q == '+' || *q == '-';
+    if (!good) {
+      char shown[41]; /* the name as printable text: control bytes as '?' */
+      size_t m = 0;
+      for (; nm[m] && m + 1 < sizeof shown; m++)
+        shown[m] = isprint((unsigned char)nm[m]) ? nm[m] : '?';
+      shown[m] = '\0';
+      snprintf(key, sizeof key, "gauges[%d].name", i);
+      snprintf(msg, sizeof msg,
+               "'%s' is not a gauge name; expected 1 to 31 letters, digits, '.', '_', '+' "
+               "or '-', and not 'wall' (the wall face's own gauge)",
+               shown);
+      return at_value(c, &s->gauges[i].name, key, msg);
+    }
     for (int j = 0; j < i; j++)
       if (strcmp(s->gauges[i].name.text, s->gauges[j].name.text) == 0) {
         snprintf(key, sizeof key, "gauges[%d].name", i);

@@ -41,8 +41,8 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
                                  struct wl_error *err) {
   if (prm->dim != 2 && prm->dim != 3) return bad(err, "dim", prm->dim, "must be 2 or 3");
   if (!(prm->dp > 0) || !isfinite(prm->dp)) return bad(err, "dp", prm->dp, "must be > 0 m");
-  if (!(prm->coefh > 0.5 && prm->coefh < 4))
-    return bad(err, "coefh", prm->coefh, "must be in (0.5, 4)");
+  if (!(prm->coefh >= 0.5 && prm->coefh <= 4))
+    return bad(err, "coefh", prm->coefh, "must be in [0.5, 4]");
   if (!(prm->coefsound >= 1 && prm->coefsound <= 1000))
     return bad(err, "coefsound", prm->coefsound, "must be in [1, 1000]");
   if (!(prm->h_max > 0) || !isfinite(prm->h_max))
