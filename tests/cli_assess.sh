@@ -109,7 +109,13 @@ msg=$("$bin" assess "$src/tests/scenarios/bad/04_negative_depth.yaml" 2>&1); rc=
 msg=$("$bin" assess tiny.yaml --bogus 2>&1); rc=$?
 [ $rc = 2 ] && ok "unknown option -> 2" || bad "unknown option -> $rc"
 msg=$("$bin" assess /nonexistent.yaml 2>&1); rc=$?
-[ $rc = 1 ] && grep -q "cannot open" <<<"$msg" && ok "missing file -> 1: $msg" || bad "missing file -> $rc: $msg"
+[ $rc = 2 ] && grep -q "cannot open the scenario file: No such file" <<<"$msg" && ok "missing file -> 2, with the reason: $msg" || bad "missing file -> $rc: $msg"
+msg=$("$bin" check "$work" 2>&1); rc=$?
+[ $rc = 2 ] && grep -q "is a directory" <<<"$msg" && ok "a directory given -> 2, says so: $msg" || bad "directory -> $rc: $msg"
+# a byte libyaml's reader refuses is reported where it is, not at 1:1
+printf 'scenario: x\nwater: {depth: 0.3 m}\ndomain: {length: 2 m\377}\n' > badutf8.yaml
+msg=$("$bin" check badutf8.yaml 2>&1); rc=$?
+[ $rc = 2 ] && grep -q "badutf8.yaml:3:21: malformed YAML" <<<"$msg" && ok "invalid UTF-8 at its line and column: $msg" || bad "invalid UTF-8 -> $rc: $msg"
 msg=$("$bin" frobnicate 2>&1); rc=$?
 [ $rc = 2 ] && ok "unknown command -> 2" || bad "unknown command -> $rc"
 out=$("$bin" check "$src/scenarios/seawall.yaml"); rc=$?

@@ -2,6 +2,9 @@
  * schema table (schema.c), then check the rules that span several keys. */
 #include "wallload/scenario.h"
 
+#include <errno.h>
+#include <sys/stat.h>
+
 #include <ctype.h>
 #include <math.h>
 #include <stdint.h>
@@ -583,10 +586,19 @@ enum wl_status wl_scenario_parse(const char *path, const char *text, size_t len,
     if (parser.context)
       snprintf(opened, sizeof opened, " %s started at %d:%d", parser.context,
                (int)parser.context_mark.line + 1, (int)parser.context_mark.column + 1);
+    int line = (int)parser.problem_mark.line + 1, col = (int)parser.problem_mark.column + 1;
+    if (parser.error == YAML_READER_ERROR) {
+      /* the reader (bad UTF-8, a NUL or control byte) gives a byte offset,
+       * not a mark: its line and column from the text */
+      line = 1, col = 1;
+      for (size_t b = 0; b < parser.problem_offset && b < len; b++) {
+        if (s->text[b] == '\n') line++, col = 1;
+        else if (((unsigned char)s->text[b] & 0xC0) != 0x80) col++; /* not a continuation byte */
+      }
+    }
     enum wl_status st = wl_error_set(
-        err, WL_EINPUT, "%s:%d:%d: malformed YAML: %s%s", path, (int)parser.problem_mark.line + 1,
-        (int)parser.problem_mark.column + 1, parser.problem ? parser.problem : "syntax error",
-        opened);
+        err, WL_EINPUT, "%s:%d:%d: malformed YAML: %s%s", path, line, col,
+        parser.problem ? parser.problem : "syntax error", opened);
     yaml_parser_delete(&parser);
     return st;
   }
@@ -617,8 +629,13 @@ enum wl_status wl_scenario_parse(const char *path, const char *text, size_t len,
 }
 
 enum wl_status wl_scenario_load(const char *path, struct wl_scenario *s, struct wl_error *err) {
+  struct stat sb;
+  if (stat(path, &sb) == 0 && S_ISDIR(sb.st_mode))
+    return wl_error_set(err, WL_EINPUT, "%s: is a directory; expected a scenario file (.yaml)", path);
   FILE *f = fopen(path, "rb");
-  if (!f) return wl_error_set(err, WL_EIO, "%s: cannot open the scenario file", path);
+  if (!f)
+    return wl_error_set(err, WL_EINPUT, "%s: cannot open the scenario file: %s", path,
+                        strerror(errno));
   size_t cap = 1 << 14, len = 0;
   char *buf = malloc(cap);
   if (!buf) {
