@@ -432,6 +432,26 @@ static enum wl_status check_rules(struct ctx *c, struct wl_scenario *s) {
              z_wall + s->wall.height.q.si, h, h - z_wall);
     return at_value(c, &s->wall.height, "wall.height", msg);
   }
+  {
+    /* the name makes the default output directory NAME-results in the
+     * working directory: no path separators, no leading dot, printable */
+    const char *nm = s->name.text;
+    int good = nm[0] != '\0' && nm[0] != '.' && strlen(nm) <= 64;
+    for (const char *q = nm; good && *q; q++)
+      good = isalnum((unsigned char)*q) || *q == '.' || *q == '_' || *q == '+' || *q == '-';
+    if (!good) {
+      char shown[65];
+      size_t m = 0;
+      for (; nm[m] && m + 1 < sizeof shown; m++)
+        shown[m] = isprint((unsigned char)nm[m]) ? nm[m] : '?';
+      shown[m] = '\0';
+      snprintf(msg, sizeof msg,
+               "'%s' is not a scenario name; expected 1 to 64 letters, digits, '.', '_', '+' or "
+               "'-', not starting with '.' (it names the output directory NAME-results)",
+               shown);
+      return at_value(c, &s->name, "scenario", msg);
+    }
+  }
   for (int i = 0; i < s->n_gauges; i++) {
     char key[64];
     snprintf(key, sizeof key, "gauges[%d].x", i);
