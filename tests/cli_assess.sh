@@ -121,6 +121,21 @@ msg=$("$bin" frobnicate 2>&1); rc=$?
 out=$("$bin" check "$src/scenarios/seawall.yaml"); rc=$?
 [ $rc = 0 ] && grep -q "water.gravity .*9.81 m/s^2 .*(default)" <<<"$out" && ok "check lists defaults" || bad "check defaults"
 grep -q "bathymetry\[0\].slope .*0.175439 .*(given as 1/5.7" <<<"$out" && ok "check shows the user's value beside SI" || bad "check user value"
+# The output directory is locked for the run (issue 18): a second assess into
+# it is refused, naming the first one's process; a stale lock and the
+# temporary files a killed run left are cleaned by the next run.
+rm -rf locked
+"$bin" assess tiny.yaml --quiet --end-time 30 -o locked >/dev/null 2>&1 &
+pid=$!
+for _ in $(seq 1 200); do [ -e locked/.wallload.lock ] && break; sleep 0.1; done
+msg=$("$bin" assess tiny.yaml --quiet --end-time 0.1 -o locked --force 2>&1); rc=$?
+[ $rc = 2 ] && grep -q "being written by wallload process $pid" <<<"$msg" && ok "a second writer is refused (exit 2): $msg" || bad "second writer -> $rc: $msg"
+kill -9 "$pid"; wait "$pid" 2>/dev/null
+touch locked/results.h5.tmp locked/report.pdf.part
+msg=$("$bin" assess tiny.yaml --quiet --end-time 0.1 -o locked --force 2>&1); rc=$?
+[ $rc = 0 ] && ok "a stale lock (killed writer) is taken over (exit 0)" || bad "after a killed writer -> $rc: $msg"
+ls -A locked | grep -q '\.tmp$\|\.part$\|wallload.lock' && bad "stale files or the lock left: $(ls -A locked)" || ok "no temporary files and no lock left"
+
 # SIGTERM and SIGHUP stop a run as Ctrl-C does (issue 18): the case in
 # progress keeps what it computed, its status is `interrupted` and names the
 # signal, and no temporary file is left behind.

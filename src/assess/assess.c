@@ -2,7 +2,9 @@
  * SPH solver, sample gauges, wall probes and the wall's boundary force at
  * every output time, then post-process and write (output.c). */
 #define _POSIX_C_SOURCE 200809L /* mkdir, stat */
+#include <dirent.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <omp.h>
 #include <signal.h>
@@ -11,6 +13,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <time.h>
+#include <unistd.h>
 
 #include "assess_private.h"
 #include "wallload/backend.h"
@@ -458,6 +461,65 @@ static enum wl_status prepare_dir(const char *dir, int force, struct wl_error *e
   return WL_OK;
 }
 
+/* The output directory's lock: DIR/.wallload.lock holds the writer's pid,
+ * created exclusively, so a second `assess` into the same directory is
+ * refused with the first one's pid instead of both writing (or one failing
+ * inside HDF5's own lock). A lock whose process is gone is stale: taken
+ * over, and the temporary files the killed run left (*.tmp, *.part: the
+ * atomic writes' halves) are removed. */
+static enum wl_status lock_dir(const char *dir, char *lock, size_t size, struct wl_error *err) {
+  snprintf(lock, size, "%s/.wallload.lock", dir);
+  for (int attempt = 0; attempt < 2; attempt++) {
+    const int fd = open(lock, O_CREAT | O_EXCL | O_WRONLY, 0644);
+    if (fd >= 0) {
+      char pid[32];
+      const int len = snprintf(pid, sizeof pid, "%ld\n", (long)getpid());
+      const int ok = write(fd, pid, (size_t)len) == len;
+      close(fd);
+      if (!ok) {
+        unlink(lock);
+        return wl_error_set(err, WL_EIO, "%s: cannot write the lock file", lock);
+      }
+      break;
+    }
+    if (errno != EEXIST)
+      return wl_error_set(err, WL_EIO, "%s: cannot create the lock file (%s)", lock,
+                          strerror(errno));
+    long other = 0;
+    FILE *f = fopen(lock, "r");
+    if (f) {
+      if (fscanf(f, "%ld", &other) != 1) other = 0;
+      fclose(f);
+    }
+    if (other > 0 && kill((pid_t)other, 0) == 0)
+      return wl_error_set(err, WL_EINPUT,
+                          "%s: being written by wallload process %ld (%s); wait for it to end, or "
+                          "choose another directory with -o",
+                          dir, other, lock);
+    if (attempt == 1 || unlink(lock) != 0)
+      return wl_error_set(err, WL_EIO, "%s: a stale lock file cannot be removed", lock);
+  }
+  DIR *d = opendir(dir);
+  if (d) {
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+      const size_t n = strlen(e->d_name);
+      if ((n > 4 && !strcmp(e->d_name + n - 4, ".tmp")) ||
+          (n > 5 && !strcmp(e->d_name + n - 5, ".part"))) {
+        char path[1200];
+        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+        unlink(path);
+      }
+    }
+    closedir(d);
+  }
+  return WL_OK;
+}
+
+static enum wl_status assess_locked(const struct wl_scenario *s, const struct wl_plan *plan,
+                                    const struct wl_assess_opts *opts,
+                                    struct wl_assess_result *res, struct wl_error *err);
+
 enum wl_status wl_assess_run(const struct wl_scenario *s, const struct wl_plan *plan,
                              const struct wl_assess_opts *opts, struct wl_assess_result *res,
                              struct wl_error *err) {
@@ -473,7 +535,17 @@ enum wl_status wl_assess_run(const struct wl_scenario *s, const struct wl_plan *
   /* input the plan found unusable is refused before anything is written */
   if (plan->solitary.present && (st = wl_plan_solitary_runnable(s, plan, err))) return st;
   if ((st = prepare_dir(res->out_dir, opts->force, err))) return st;
+  char lock[1100];
+  if ((st = lock_dir(res->out_dir, lock, sizeof lock, err))) return st;
+  st = assess_locked(s, plan, opts, res, err);
+  unlink(lock);
+  return st;
+}
 
+static enum wl_status assess_locked(const struct wl_scenario *s, const struct wl_plan *plan,
+                                    const struct wl_assess_opts *opts,
+                                    struct wl_assess_result *res, struct wl_error *err) {
+  enum wl_status st;
   enum wl_load_case todo[2];
   int n = 0;
   if (plan->solitary.present) todo[n++] = WL_CASE_SOLITARY;
