@@ -145,6 +145,19 @@ enum wl_status wl_report_template_parse(const char *path, const char *text, size
 enum wl_status wl_report_template_load(const char *path, struct wl_report_template *t,
                                        struct wl_error *err);
 
+/* Find and load the report template `name` (a scenario's report.template):
+ * a path (with '/' or a .yaml ending) as given, beside the scenario file
+ * or in results_dir (either may be NULL); a name as NAME.yaml in
+ * $WALLLOAD_TEMPLATE_DIR, ./report_templates, report_templates beside or
+ * above the executable; "design" (or NULL/empty) falls back to the built-in
+ * copy. source gets where it came from. `check` calls it so that a missing
+ * or malformed template is refused before a run, not after it. Returns
+ * what wl_report_template_load returns, or WL_EINPUT naming the places
+ * looked in. */
+enum wl_status wl_report_template_find(const char *name, const char *scenario_file,
+                                       const char *results_dir, struct wl_report_template *t,
+                                       char *source, size_t size, struct wl_error *err);
+
 /* The YAML name of a section type ("title", "scene", ...); "?" out of range. */
 const char *wl_report_section_type_name(enum wl_report_section_type type);
 

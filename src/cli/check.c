@@ -10,15 +10,26 @@
 #include "wallload/assess.h"
 #include "cli.h"
 #include "wallload/plan.h"
+#include "wallload/report.h"
 #include "wallload/scenario.h"
 #include "wallload/units.h"
 
-/* Load and plan a scenario; on failure everything is freed. */
+/* Load and plan a scenario, and find and parse its report template (so
+ * that a missing or malformed one is refused now, not after the run); on
+ * failure everything is freed. */
 static enum wl_status load_and_plan(const char *path, struct wl_scenario *s, struct wl_plan *plan,
                                     struct wl_error *err) {
   wl_scenario_init(s);
   enum wl_status st = wl_scenario_load(path, s, err);
   if (st == WL_OK) st = wl_plan_make(s, plan, err);
+  if (st == WL_OK) {
+    struct wl_report_template t;
+    wl_report_template_init(&t);
+    char source[1200];
+    st = wl_report_template_find(s->report.template_name.text, path, NULL, &t, source,
+                                 sizeof source, err);
+    wl_report_template_clear(&t);
+  }
   if (st != WL_OK) wl_scenario_clear(s);
   return st;
 }

@@ -122,23 +122,21 @@ static int ends_with(const char *s, const char *tail) {
   return a >= b && !strcmp(s + a - b, tail);
 }
 
-enum wl_status wl_report_template_resolve(const struct wl_report_results *r,
-                                          struct wl_report_template *t, char *source,
-                                          size_t size, struct wl_error *err) {
-  const char *name = r->have_scenario && r->scenario.report.template_name.text[0]
-                         ? r->scenario.report.template_name.text
-                         : "design";
+enum wl_status wl_report_template_find(const char *name, const char *scenario_file,
+                                       const char *results_dir, struct wl_report_template *t,
+                                       char *source, size_t size, struct wl_error *err) {
+  if (!name || !name[0]) name = "design";
   char cand[8][1100];
   int n = 0;
   if (strchr(name, '/') || ends_with(name, ".yaml") || ends_with(name, ".yml")) {
     char dir[1024];
     snprintf(cand[n++], sizeof cand[0], "%s", name);
     if (name[0] != '/') {
-      if (r->scenario_file[0]) {
-        dir_of(r->scenario_file, dir, sizeof dir);
+      if (scenario_file && scenario_file[0]) {
+        dir_of(scenario_file, dir, sizeof dir);
         snprintf(cand[n++], sizeof cand[0], "%s/%s", dir, name);
       }
-      snprintf(cand[n++], sizeof cand[0], "%s/%s", r->dir, name);
+      if (results_dir && results_dir[0]) snprintf(cand[n++], sizeof cand[0], "%s/%s", results_dir, name);
     }
   } else {
     const char *env = getenv("WALLLOAD_TEMPLATE_DIR");
@@ -170,5 +168,16 @@ enum wl_status wl_report_template_resolve(const struct wl_report_results *r,
   return wl_error_set(err, WL_EINPUT,
                       "%s: report.template: found '%s', but no such template file (looked in "
                       "%d places, first %s); valid: a template file, or 'design'",
-                      r->scenario_file[0] ? r->scenario_file : r->path, name, n, cand[0]);
+                      scenario_file && scenario_file[0] ? scenario_file : "results", name, n,
+                      cand[0]);
+}
+
+enum wl_status wl_report_template_resolve(const struct wl_report_results *r,
+                                          struct wl_report_template *t, char *source,
+                                          size_t size, struct wl_error *err) {
+  const char *name = r->have_scenario && r->scenario.report.template_name.text[0]
+                         ? r->scenario.report.template_name.text
+                         : "design";
+  return wl_report_template_find(name, r->scenario_file[0] ? r->scenario_file : r->path, r->dir,
+                                 t, source, size, err);
 }
