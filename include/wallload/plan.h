@@ -124,6 +124,10 @@ struct wl_plan {
  * CPU and 120 GiB on a GPU, beyond the machines wallload runs on. */
 #define WL_PLAN_PARTICLES_MAX (1L << 30)
 
+/* Most output times (samples of gauges, probes and wall force) one case may
+ * have (run.output_interval against its end time). */
+#define WL_PLAN_OUTPUTS_MAX 1e6
+
 #define WL_PLAN_COEFH_2D 1.2
 #define WL_PLAN_COEFH_3D 1.0
 

@@ -540,6 +540,23 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
       n_max = px->n_fluid + px->n_boundary, p->n_fluid = px->n_fluid, p->n_boundary = px->n_boundary;
   }
   p->memory_bytes = BYTES_PER_PARTICLE * (double)n_max;
+  {
+    /* each output samples gauges, probes and the wall force and may write
+     * a snapshot: a million of them is a run that never ends, whatever
+     * its particles */
+    const double t_last = fmax(p->solitary.present ? p->solitary.end_time : 0.0,
+                               p->explosion.present ? p->explosion.end_time : 0.0);
+    const double outputs = t_last / s->run.output_interval.q.si;
+    if (outputs > WL_PLAN_OUTPUTS_MAX) {
+      char obuf[32];
+      return wl_error_set(err, WL_EINPUT,
+                          "%s:%s: run.output_interval: %g s over %g s of simulated time is %.3g "
+                          "outputs, more than %.0f; expected an interval of at least %.3g s",
+                          s->path, where(&s->run.output_interval, obuf),
+                          s->run.output_interval.q.si, t_last, outputs, WL_PLAN_OUTPUTS_MAX,
+                          t_last / WL_PLAN_OUTPUTS_MAX);
+    }
+  }
   if (n_max > WL_PLAN_PARTICLES_MAX) {
     const struct wl_scenario_value *r =
         s->resolution.dp.is_auto ? &s->resolution.particles_per_height : &s->resolution.dp;

@@ -36,7 +36,7 @@ static const struct wl_key water_keys[] = {
      1, "still-water depth at the paddle"},
     {"density", KT_QTY, WL_DIM_DENSITY, OFF(water.density), NULL, 500, 2000, 0, 0, "1000 kg/m^3",
      NULL, NO_FLAG, 0, "water density"},
-    {"gravity", KT_QTY, WL_DIM_ACCELERATION, OFF(water.gravity), NULL, 0, 100, 1, 0, "9.81 m/s^2",
+    {"gravity", KT_QTY, WL_DIM_ACCELERATION, OFF(water.gravity), NULL, 0.1, 100, 0, 0, "9.81 m/s^2",
      NULL, NO_FLAG, 0, "gravitational acceleration"},
     {0}};
 
@@ -133,9 +133,9 @@ static const struct wl_key resolution_keys[] = {
     {0}};
 
 static const struct wl_key run_keys[] = {
-    {"end_time", KT_QTY_OR_AUTO, WL_DIM_TIME, OFF(run.end_time), NULL, 0, NONE, 1, 0, "auto", NULL,
+    {"end_time", KT_QTY_OR_AUTO, WL_DIM_TIME, OFF(run.end_time), NULL, 0, 1e5, 1, 0, "auto", NULL,
      NO_FLAG, 0, "simulated time, or auto (wave travel to the wall and load decay)"},
-    {"output_interval", KT_QTY, WL_DIM_TIME, OFF(run.output_interval), NULL, 0, NONE, 1, 0,
+    {"output_interval", KT_QTY, WL_DIM_TIME, OFF(run.output_interval), NULL, 1e-5, NONE, 0, 0,
      "0.01 s", NULL, NO_FLAG, 0, "sampling interval of gauges and wall loads"},
     {"backend", KT_ENUM, WL_DIM_NONE, OFF(run.backend), backend_choices, NONE, NONE, 0, 0, "auto",
      NULL, NO_FLAG, 0, "where the solver runs"},
