@@ -103,7 +103,8 @@ struct wl_plan {
   double fluid_area;                /* wetted flume section up to the wall [m^2] (2D) */
   double land_length;               /* land modelled behind the seawall [m] */
   long n_fluid, n_boundary;         /* estimated particles of the largest case */
-  double memory_bytes;              /* estimated solver memory */
+  double memory_bytes;              /* estimated host memory of a run (either backend) */
+  double gpu_memory_bytes;          /* estimated GPU memory of a CUDA run */
   double particle_steps;            /* estimated for all cases */
   double cpu_seconds;               /* estimated on the reference CPU rate */
   double gpu_seconds;               /* estimated for the CUDA backend on an H100 */
@@ -182,6 +183,39 @@ enum wl_status wl_plan_make(const struct wl_scenario *s, struct wl_plan *plan,
 
 /* Print the plan: derived initial conditions with their sources, and cost. */
 void wl_plan_write(const struct wl_plan *plan, FILE *out);
+
+/* What a run (or a convergence ladder: the sum of its levels' times, the
+ * largest level's memory) will take. */
+struct wl_plan_cost {
+  int dims;
+  double host_bytes, device_bytes; /* the largest case or level */
+  double cpu_seconds;              /* at the reference rate, WL_PLAN_CPU_THREADS threads */
+  double gpu_seconds;              /* on an H100 */
+};
+
+/* The machine a run is planned for and the budget it is held to. */
+struct wl_plan_machine {
+  double host_bytes;     /* physical memory [bytes]; 0: unknown, not checked */
+  double device_bytes;   /* > 0: the run goes to this GPU, of this much memory */
+  char device_name[128];
+  int threads;           /* CPU threads of a CPU run */
+  double budget_seconds; /* estimated runtime allowed; <= 0: no budget */
+  int force_large;       /* 1: past the runtime budget anyway (never past memory) */
+};
+
+/* The CPU thread count WL_PLAN_CPU_RATE was measured with. */
+#define WL_PLAN_CPU_THREADS 2
+/* A run may plan at most this fraction of the host's physical memory. */
+#define WL_PLAN_MEMORY_FRACTION 0.8
+/* The default runtime budget of `check` and `assess` [s] (--budget). */
+#define WL_PLAN_BUDGET_DEFAULT_S (24.0 * 3600.0)
+
+/* WL_OK when `cost` fits machine `m`: memory (host, and the GPU's when the
+ * run goes to one) always, the estimated runtime unless m->force_large.
+ * WL_EINPUT otherwise, naming the resolution key, what the run would take
+ * and how to reduce it. */
+enum wl_status wl_plan_fits(const struct wl_scenario *s, const struct wl_plan_cost *cost,
+                            const struct wl_plan_machine *m, struct wl_error *err);
 
 /* WL_OK when the plan's solitary case can run; WL_EINPUT, naming
  * loads.solitary and the wall, when its automatic initial crest falls at

@@ -307,6 +307,32 @@ static enum wl_status pick_backend(const struct wl_scenario *s, const struct wl_
   return WL_OK;
 }
 
+enum wl_status wl_assess_machine(const struct wl_scenario *s, const struct wl_assess_opts *opts,
+                                 struct wl_plan_machine *m, struct wl_error *err) {
+  memset(m, 0, sizeof *m);
+  const struct wl_backend_ops *ops;
+  struct wl_error perr;
+  wl_error_clear(&perr);
+  (void)err;
+  if (pick_backend(s, opts, &ops, &perr) != WL_OK) ops = &wl_backend_cpu_ops; /* the run says why */
+  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+  if (pages > 0 && page > 0) m->host_bytes = (double)pages * (double)page;
+  if (ops == &wl_backend_cuda_ops) {
+    struct wl_cuda_device dev;
+    struct wl_error qerr;
+    wl_error_clear(&qerr);
+    if (wl_cuda_device_query(&dev, &qerr) == WL_OK) {
+      m->device_bytes = (double)dev.memory_total;
+      snprintf(m->device_name, sizeof m->device_name, "%s", dev.name);
+    }
+  }
+  m->threads = opts->threads > 0                 ? opts->threads
+               : s->run.threads.is_auto          ? omp_get_max_threads()
+                                                 : (int)s->run.threads.q.si;
+  m->budget_seconds = WL_PLAN_BUDGET_DEFAULT_S;
+  return WL_OK;
+}
+
 /* Run one case into c (its flume already built). Returns the run's status;
  * the record holds what was sampled before any stop. */
 static enum wl_status run_case(const struct wl_assess_opts *opts,

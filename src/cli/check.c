@@ -34,19 +34,31 @@ static enum wl_status load_and_plan(const char *path, struct wl_scenario *s, str
   return st;
 }
 
+/* What one plan costs (one resolution). */
+static struct wl_plan_cost plan_cost(const struct wl_plan *p) {
+  struct wl_plan_cost c = {p->dims, p->memory_bytes, p->gpu_memory_bytes, p->cpu_seconds,
+                           p->gpu_seconds};
+  return c;
+}
+
 /* The cost of the convergence ladder: each level re-planned at dp x factor
  * (as assess runs it). Prints one line per level and the total to out (or
- * only the total line when `brief`); returns the total estimated CPU seconds
- * (NAN without a ladder or when a level cannot be planned). */
-static double ladder_cost(const struct wl_scenario *s, const struct wl_plan *plan, int brief,
-                          FILE *out) {
+ * only the total line when `brief`; out may be NULL); *cost gets the sum of
+ * the levels' times and the largest level's memory. Returns 1 with a
+ * ladder, 0 without one or when a level cannot be planned (*cost is then
+ * the plan's own). */
+static int ladder_cost(const struct wl_scenario *s, const struct wl_plan *plan, int brief,
+                       FILE *out, struct wl_plan_cost *cost) {
+  *cost = plan_cost(plan);
   int n = s->resolution.n_levels;
-  if (n == 0) return NAN;
+  if (n == 0) return 0;
   struct wl_scenario *sl = malloc(sizeof *sl);
   struct wl_plan *pl = malloc(sizeof *pl);
-  double total = 0.0, steps = 0.0;
-  if (!brief) fprintf(out, "\nConvergence ladder (resolution.convergence), coarse to fine\n");
-  for (int k = 0; sl && pl && k < n; k++) {
+  struct wl_plan_cost sum = {plan->dims, 0, 0, 0, 0};
+  double steps = 0.0;
+  int ok = sl && pl;
+  if (!brief && out) fprintf(out, "\nConvergence ladder (resolution.convergence), coarse to fine\n");
+  for (int k = 0; ok && k < n; k++) {
     *sl = *s; /* shallow copy: only read by the plan */
     sl->resolution.dp.is_auto = 0;
     sl->resolution.dp.given = 1;
@@ -54,13 +66,16 @@ static double ladder_cost(const struct wl_scenario *s, const struct wl_plan *pla
     struct wl_error e;
     wl_error_clear(&e);
     if (wl_plan_make(sl, pl, &e) != WL_OK) {
-      if (!brief) fprintf(out, "  level %d: cannot be planned: %s\n", k + 1, e.msg);
-      total = NAN;
+      if (!brief && out) fprintf(out, "  level %d: cannot be planned: %s\n", k + 1, e.msg);
+      ok = 0;
       break;
     }
-    total += pl->cpu_seconds;
+    sum.cpu_seconds += pl->cpu_seconds;
+    sum.gpu_seconds += pl->gpu_seconds;
+    sum.host_bytes = fmax(sum.host_bytes, pl->memory_bytes);
+    sum.device_bytes = fmax(sum.device_bytes, pl->gpu_memory_bytes);
     steps += pl->particle_steps;
-    if (!brief) {
+    if (!brief && out) {
       char dps[32];
       snprintf(dps, sizeof dps, "%.4g m", pl->dp);
       fprintf(out, "  level %d  dp x %-5s = %-10s %8ld particles  %10.3e particle-steps  %6.0f s\n",
@@ -68,30 +83,108 @@ static double ladder_cost(const struct wl_scenario *s, const struct wl_plan *pla
               pl->particle_steps, pl->cpu_seconds);
     }
   }
-  if (!sl || !pl) total = NAN;
-  if (!brief && isfinite(total))
-    fprintf(out, "  all levels: %.3e particle-steps, about %.0f s on the CPU%s\n", steps, total,
-            s->resolution.target_error.given ? " (less when target_error stops the ladder early)"
-                                             : "");
   free(sl);
   free(pl);
-  return total;
+  if (!ok) return 0;
+  if (!brief && out)
+    fprintf(out, "  all levels: %.3e particle-steps, about %.0f s on the CPU%s\n", steps,
+            sum.cpu_seconds,
+            s->resolution.target_error.given ? " (less when target_error stops the ladder early)"
+                                             : "");
+  *cost = sum;
+  return 1;
+}
+
+/* --budget HOURS and --force-large, shared by check and assess: 1 when
+ * argv[*i] is one of them (consumed, *i advanced past a value), 0 when it
+ * is not, -1 on a bad value (err set). */
+static int budget_option(const char *cmd, int argc, char **argv, int *i, double *budget_s,
+                         int *force_large, struct wl_error *err) {
+  const char *a = argv[*i];
+  if (!strcmp(a, "--force-large")) {
+    *force_large = 1;
+    return 1;
+  }
+  if (strcmp(a, "--budget")) return 0;
+  if (*i + 1 >= argc) {
+    wl_error_set(err, WL_EUSAGE, "%s: --budget needs a value (hours)", cmd);
+    return -1;
+  }
+  const char *v = argv[++*i];
+  char *end;
+  const double hours = strtod(v, &end);
+  if (*end || !(hours > 0) || hours > 1e6) {
+    wl_error_set(err, WL_EUSAGE, "%s: --budget: found '%s'; expected hours above 0 and at most 1e6",
+                 cmd, v);
+    return -1;
+  }
+  *budget_s = hours * 3600.0;
+  return 1;
+}
+
+/* Weigh the plan (or its ladder) against the machine the run would take,
+ * and print the verdict to `out` (may be NULL). */
+static enum wl_status check_fits(const struct wl_scenario *s, const struct wl_plan *plan,
+                                 const struct wl_assess_opts *opts, double budget_s,
+                                 int force_large, FILE *out, struct wl_error *err) {
+  struct wl_plan_machine m;
+  enum wl_status st = wl_assess_machine(s, opts, &m, err);
+  if (st) return st;
+  if (budget_s > 0) m.budget_seconds = budget_s;
+  m.force_large = force_large;
+  struct wl_plan_cost cost;
+  ladder_cost(s, plan, 1, NULL, &cost);
+  st = wl_plan_fits(s, &cost, &m, err);
+  if (out && st == WL_OK) {
+    fprintf(out, "\nMachine: %s%s, %.3g GiB of memory; runtime budget %.3g h%s: fits\n",
+            m.device_bytes > 0 ? "GPU " : "CPU", m.device_bytes > 0 ? m.device_name : "",
+            (m.device_bytes > 0 ? m.device_bytes : m.host_bytes) / 1073741824.0,
+            m.budget_seconds / 3600.0, force_large ? " (lifted by --force-large)" : "");
+  }
+  return st;
 }
 
 enum wl_status wl_cli_check(int argc, char **argv, struct wl_error *err) {
-  if (argc != 2 || argv[1][0] == '-')
-    return wl_error_set(err, WL_EUSAGE, "usage: wallload check FILE.yaml");
+  const char *path = NULL;
+  struct wl_assess_opts opts = {0};
+  double budget_s = 0;
+  int force_large = 0;
+  for (int i = 1; i < argc; i++) {
+    const int used = budget_option("check", argc, argv, &i, &budget_s, &force_large, err);
+    if (used < 0) return WL_EUSAGE;
+    if (used) continue;
+    if (!strcmp(argv[i], "--backend")) {
+      const char *v = i + 1 < argc ? argv[++i] : "";
+      if (strcmp(v, "cpu") && strcmp(v, "cuda") && strcmp(v, "auto"))
+        return wl_error_set(err, WL_EUSAGE, "check: --backend: found '%s'; valid: cpu, cuda, auto", v);
+      opts.backend = v;
+    } else if (argv[i][0] == '-' || path) {
+      return wl_error_set(err, WL_EUSAGE,
+                          "usage: wallload check FILE.yaml [--backend cpu|cuda|auto] [--budget "
+                          "HOURS] [--force-large] ('%s' not understood)",
+                          argv[i]);
+    } else {
+      path = argv[i];
+    }
+  }
+  if (!path)
+    return wl_error_set(err, WL_EUSAGE,
+                        "usage: wallload check FILE.yaml [--backend cpu|cuda|auto] [--budget "
+                        "HOURS] [--force-large]");
   struct wl_scenario s;
   struct wl_plan plan;
-  enum wl_status st = load_and_plan(argv[1], &s, &plan, err);
+  enum wl_status st = load_and_plan(path, &s, &plan, err);
   if (st) return st;
   printf("Scenario %s (%s): valid\n\nResolved scenario (SI; the value as written beside it)\n",
          s.name.text, s.path);
   wl_scenario_write_resolved(&s, stdout);
   wl_plan_write(&plan, stdout);
-  ladder_cost(&s, &plan, 0, stdout);
-  /* printed in full above; a case that cannot run makes the scenario invalid */
+  struct wl_plan_cost cost;
+  ladder_cost(&s, &plan, 0, stdout, &cost);
+  /* printed in full above; a case that cannot run, or a run beyond the
+   * machine or the budget, makes the scenario invalid */
   if (plan.solitary.present) st = wl_plan_solitary_runnable(&s, &plan, err);
+  if (st == WL_OK) st = check_fits(&s, &plan, &opts, budget_s, force_large, stdout, err);
   wl_scenario_clear(&s);
   return st;
 }
@@ -195,7 +288,8 @@ static void print_convergence(const struct wl_case_result *c,
 enum wl_status wl_cli_assess(int argc, char **argv, struct wl_error *err) {
   const char *path = NULL;
   struct wl_assess_opts opts = {0};
-  int quiet = 0;
+  int quiet = 0, force_large = 0, used;
+  double budget_s = 0;
   for (int i = 1; i < argc; i++) {
     const char *a = argv[i];
     if (!strcmp(a, "-o") || !strcmp(a, "--backend") || !strcmp(a, "--threads") ||
@@ -221,6 +315,8 @@ enum wl_status wl_cli_assess(int argc, char **argv, struct wl_error *err) {
       } else {
         opts.backend = v;
       }
+    } else if ((used = budget_option("assess", argc, argv, &i, &budget_s, &force_large, err))) {
+      if (used < 0) return WL_EUSAGE;
     } else if (!strcmp(a, "--quiet")) {
       quiet = 1;
     } else if (!strcmp(a, "--force")) {
@@ -228,7 +324,8 @@ enum wl_status wl_cli_assess(int argc, char **argv, struct wl_error *err) {
     } else if (a[0] == '-') {
       return wl_error_set(err, WL_EUSAGE,
                           "assess: unknown option '%s'; valid: -o DIR, --backend cpu|cuda|auto, "
-                          "--threads N, --quiet, --force, --end-time SECONDS",
+                          "--threads N, --quiet, --force, --end-time SECONDS, --budget HOURS, "
+                          "--force-large",
                           a);
     } else if (!path) {
       path = a;
@@ -241,6 +338,10 @@ enum wl_status wl_cli_assess(int argc, char **argv, struct wl_error *err) {
   struct wl_plan plan;
   enum wl_status st = load_and_plan(path, &s, &plan, err);
   if (st) return st;
+  if ((st = check_fits(&s, &plan, &opts, budget_s, force_large, NULL, err))) {
+    wl_scenario_clear(&s);
+    return st;
+  }
   struct progress_state ps = {isatty(2), 0.0};
   if (!quiet) {
     opts.progress = show_progress;
@@ -251,7 +352,9 @@ enum wl_status wl_cli_assess(int argc, char **argv, struct wl_error *err) {
       fprintf(stderr, "wallload: convergence ladder of %d levels, dp x", s.resolution.n_levels);
       for (int k = 0; k < s.resolution.n_levels; k++)
         fprintf(stderr, "%s %s", k ? "," : "", s.resolution.levels[k].text);
-      fprintf(stderr, "; est. %.0f s on the CPU in all", ladder_cost(&s, &plan, 1, stderr));
+      struct wl_plan_cost cost;
+      ladder_cost(&s, &plan, 1, NULL, &cost);
+      fprintf(stderr, "; est. %.0f s on the CPU in all", cost.cpu_seconds);
       if (s.resolution.target_error.given)
         fprintf(stderr, "; stops once the estimated error is below %s",
                 s.resolution.target_error.text);

@@ -33,8 +33,19 @@
 /* Boundary layers of dynamic boundary particles (enough for the support 2h
  * of a Wendland kernel at h/dp up to 1.5). */
 #define BOUNDARY_LAYERS 3
-/* Bytes per particle of the CPU solver (state, predictor copies, cell keys). */
-#define BYTES_PER_PARTICLE 160.0
+/* Memory of a run: a fixed part (libraries, the result record) and bytes
+ * per particle. Host: the peak resident size of `assess` on the CPU backend
+ * (state, the sort's second copy, cell index, snapshot buffers), measured
+ * at 22k-317k particles in 2D (307 B) and 98k in 3D (430 B) and rounded
+ * up. GPU: the CUDA backend's arrays (bytes_per_particle in cuda.cu with
+ * the Verlet copies, 112 B in 2D and 148 B in 3D) plus its sort scratch and
+ * cell index. */
+#define HOST_BYTES_FIXED (32.0 * 1048576.0)
+#define HOST_BYTES_PER_PARTICLE_2D 320.0
+#define HOST_BYTES_PER_PARTICLE_3D 440.0
+#define GPU_BYTES_FIXED (320.0 * 1048576.0) /* CUDA context and the backend's margin */
+#define GPU_BYTES_PER_PARTICLE_2D 140.0
+#define GPU_BYTES_PER_PARTICLE_3D 180.0
 
 static void note(struct wl_plan *p, const char *fmt, ...) {
   if (p->n_notes >= WL_PLAN_MAX_NOTES) return;
@@ -539,7 +550,10 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
     if (px->n_fluid + px->n_boundary > n_max)
       n_max = px->n_fluid + px->n_boundary, p->n_fluid = px->n_fluid, p->n_boundary = px->n_boundary;
   }
-  p->memory_bytes = BYTES_PER_PARTICLE * (double)n_max;
+  p->memory_bytes = HOST_BYTES_FIXED + (double)n_max * (p->dims == 3 ? HOST_BYTES_PER_PARTICLE_3D
+                                                                      : HOST_BYTES_PER_PARTICLE_2D);
+  p->gpu_memory_bytes = GPU_BYTES_FIXED + (double)n_max * (p->dims == 3 ? GPU_BYTES_PER_PARTICLE_3D
+                                                                        : GPU_BYTES_PER_PARTICLE_2D);
   {
     /* each output samples gauges, probes and the wall force and may write
      * a snapshot: a million of them is a run that never ends, whatever
@@ -706,7 +720,8 @@ void wl_plan_write(const struct wl_plan *p, FILE *out) {
   fprintf(out, "  %-36s %12.5g s\n", "time step (CFL estimate)", p->dt);
   fprintf(out, "  %-36s %12ld        (+ %ld boundary; the largest case)\n", "fluid particles",
           p->n_fluid, p->n_boundary);
-  fprintf(out, "  %-36s %12.4g MiB\n", "memory (estimate)", p->memory_bytes / 1048576.0);
+  fprintf(out, "  %-36s %12.4g MiB    (%.4g MiB on a GPU)\n", "memory (estimate)",
+          p->memory_bytes / 1048576.0, p->gpu_memory_bytes / 1048576.0);
   fprintf(out, "  %-36s %12.4g\n", "particle-steps, all cases", p->particle_steps);
   fprintf(out, "  %-36s %12.4g s      (at %.2g force evaluations/s, %d a step: %s)\n",
           "CPU runtime (estimate)", p->cpu_seconds,
@@ -729,4 +744,59 @@ enum wl_status wl_plan_solitary_runnable(const struct wl_scenario *s, const stru
                       "(initial crest at %.3g m); expected a longer flume (wall.x, "
                       "domain.length) or a smaller wave",
                       s->path, s->wall.x.q.si, ps->crest_x0);
+}
+
+static void fmt_duration(double s, char *buf, size_t size) {
+  if (s < 120)
+    snprintf(buf, size, "%.0f s", s);
+  else if (s < 7200)
+    snprintf(buf, size, "%.0f min", s / 60);
+  else if (s < 3 * 86400)
+    snprintf(buf, size, "%.1f h", s / 3600);
+  else
+    snprintf(buf, size, "%.0f days", s / 86400);
+}
+
+enum wl_status wl_plan_fits(const struct wl_scenario *s, const struct wl_plan_cost *cost,
+                            const struct wl_plan_machine *m, struct wl_error *err) {
+  const int gpu = m->device_bytes > 0;
+  const struct wl_scenario_value *r =
+      s->resolution.dp.is_auto ? &s->resolution.particles_per_height : &s->resolution.dp;
+  char where_buf[32];
+  const char *key = s->resolution.dp.is_auto ? "particles_per_height" : "dp";
+  const char *at = where(r, where_buf);
+  if (m->host_bytes > 0 && cost->host_bytes > WL_PLAN_MEMORY_FRACTION * m->host_bytes)
+    return wl_error_set(err, WL_EINPUT,
+                        "%s:%s: resolution.%s: the run needs about %.3g GiB of memory, more than "
+                        "%.0f %% of this machine's %.3g GiB; expected a larger dp (memory grows "
+                        "with 1/dp^%d), fewer particles per wave height, or a shorter flume",
+                        s->path, at, key, cost->host_bytes / 1073741824.0,
+                        100 * WL_PLAN_MEMORY_FRACTION, m->host_bytes / 1073741824.0,
+                        cost->dims);
+  if (gpu && cost->device_bytes > m->device_bytes)
+    return wl_error_set(err, WL_EINPUT,
+                        "%s:%s: resolution.%s: the run needs about %.3g GiB of GPU memory, more "
+                        "than the %.3g GiB of %s; expected a larger dp, or the CPU backend "
+                        "(--backend cpu, %.3g GiB of host memory)",
+                        s->path, at, key, cost->device_bytes / 1073741824.0,
+                        m->device_bytes / 1073741824.0, m->device_name, cost->host_bytes / 1073741824.0);
+  const double seconds = gpu ? cost->gpu_seconds : cost->cpu_seconds * WL_PLAN_CPU_THREADS /
+                                                       (m->threads > 0 ? m->threads : 1);
+  if (m->budget_seconds > 0 && seconds > m->budget_seconds && !m->force_large) {
+    char need[32], budget[32], where_run[160];
+    if (gpu)
+      snprintf(where_run, sizeof where_run, "%s", m->device_name);
+    else
+      snprintf(where_run, sizeof where_run, "%d CPU thread%s", m->threads > 0 ? m->threads : 1,
+               m->threads > 1 ? "s" : "");
+    fmt_duration(seconds, need, sizeof need);
+    fmt_duration(m->budget_seconds, budget, sizeof budget);
+    return wl_error_set(err, WL_EINPUT,
+                        "%s:%s: resolution.%s: the run would take about %s on %s, beyond the "
+                        "budget of %s; expected a larger dp, a shorter run.end_time%s, or "
+                        "--budget HOURS / --force-large to run it anyway",
+                        s->path, at, key, need, where_run, budget,
+                        gpu ? "" : ", a GPU (--backend cuda)");
+  }
+  return WL_OK;
 }

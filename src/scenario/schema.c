@@ -4,6 +4,7 @@
  * defaults and `wallload check`'s listing all read it, so a new key is one
  * row here and one member in struct wl_scenario. */
 #include "schema.h"
+#include "wallload/sph/params.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -144,20 +145,24 @@ static const struct wl_key run_keys[] = {
     {0}};
 
 static const struct wl_key numerics_keys[] = {
-    {"coefh", KT_QTY_OR_AUTO, WL_DIM_NONE, OFF(numerics.coefh), NULL, 0.5, 2.0, 0, 0, "auto",
+    {"coefh", KT_QTY_OR_AUTO, WL_DIM_NONE, OFF(numerics.coefh), NULL, WL_SPH_COEFH_MIN,
+     WL_SPH_COEFH_MAX, 0, 0, "auto",
      NULL, NO_FLAG, 0,
      "h = coefh*sqrt(dim)*dp (DualSPHysics convention), or auto: 1.2 in 2D, 1.0 in 3D (h = 1.7 dp)"},
-    {"coefsound", KT_QTY, WL_DIM_NONE, OFF(numerics.coefsound), NULL, 5, 100, 0, 0, "10", NULL,
+    {"coefsound", KT_QTY, WL_DIM_NONE, OFF(numerics.coefsound), NULL,
+     WL_SPH_COEFSOUND_MIN, WL_SPH_COEFSOUND_MAX, 0, 0, "10", NULL,
      NO_FLAG, 0, "c0 = coefsound*sqrt(g*h_max)"},
-    {"cfl", KT_QTY, WL_DIM_NONE, OFF(numerics.cfl), NULL, 0, 1, 1, 0, "0.2", NULL, NO_FLAG, 0,
+    {"cfl", KT_QTY, WL_DIM_NONE, OFF(numerics.cfl), NULL, WL_SPH_CFL_MIN_OPEN,
+     WL_SPH_CFL_MAX, 1, 0, "0.2", NULL, NO_FLAG, 0,
      "Courant number of the variable time step"},
-    {"alpha", KT_QTY, WL_DIM_NONE, OFF(numerics.alpha), NULL, 0, 1, 0, 0, "0.01", NULL, NO_FLAG, 0,
+    {"alpha", KT_QTY, WL_DIM_NONE, OFF(numerics.alpha), NULL, 0, WL_SPH_ALPHA_MAX, 0, 0, "0.01", NULL, NO_FLAG, 0,
      "artificial viscosity coefficient"},
     {"viscosity", KT_ENUM, WL_DIM_NONE, OFF(numerics.viscosity), viscosity_choices, NONE, NONE, 0,
      0, "laminar", NULL, NO_FLAG, 0, "viscosity model"},
-    {"nu", KT_QTY, WL_DIM_NONE, OFF(numerics.nu), NULL, 0, 1, 0, 0, "1e-6", NULL, NO_FLAG, 0,
+    {"nu", KT_QTY, WL_DIM_NONE, OFF(numerics.nu), NULL, 0, WL_SPH_NU_MAX, 0, 0, "1e-6", NULL, NO_FLAG, 0,
      "kinematic viscosity for the laminar model [m^2/s]"},
-    {"density_diffusion", KT_QTY, WL_DIM_NONE, OFF(numerics.density_diffusion), NULL, 0, 1, 0, 0,
+    {"density_diffusion", KT_QTY, WL_DIM_NONE, OFF(numerics.density_diffusion), NULL, 0,
+     WL_SPH_DELTA_MAX, 0, 0,
      "0.1", NULL, NO_FLAG, 0, "delta-SPH coefficient (0 switches it off; wall pressure is noise then)"},
     {"shifting", KT_ENUM, WL_DIM_NONE, OFF(numerics.shifting), onoff_choices, NONE, NONE, 0, 0,
      "off", NULL, NO_FLAG, 0, "particle shifting"},
@@ -165,7 +170,8 @@ static const struct wl_key numerics_keys[] = {
      0, 0, "symplectic", NULL, NO_FLAG, 0,
      "time integrator: symplectic (two force evaluations a step) or verlet (one; about twice as "
      "fast)"},
-    {"verlet_steps", KT_INT, WL_DIM_NONE, OFF(numerics.verlet_steps), NULL, 1, 1000, 0, 0, "40",
+    {"verlet_steps", KT_INT, WL_DIM_NONE, OFF(numerics.verlet_steps), NULL, 1,
+     WL_SPH_VERLET_STEPS_MAX, 0, 0, "40",
      NULL, NO_FLAG, 0, "verlet: an Euler step every this many steps (DualSPHysics VerletSteps)"},
     {"boundary", KT_ENUM, WL_DIM_NONE, OFF(numerics.boundary), boundary_choices, NONE, NONE, 0, 0,
      "adami", NULL, NO_FLAG, 0,

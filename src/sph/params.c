@@ -1,6 +1,7 @@
 /* params.c: SPH parameter defaults, validation and the derived constants
  * (sph/params.h), and the run configuration helpers. */
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "wallload/sph.h"
@@ -41,33 +42,53 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
                                  struct wl_error *err) {
   if (prm->dim != 2 && prm->dim != 3) return bad(err, "dim", prm->dim, "must be 2 or 3");
   if (!(prm->dp > 0) || !isfinite(prm->dp)) return bad(err, "dp", prm->dp, "must be > 0 m");
-  if (!(prm->coefh >= 0.5 && prm->coefh <= 4))
-    return bad(err, "coefh", prm->coefh, "must be in [0.5, 4]");
-  if (!(prm->coefsound >= 1 && prm->coefsound <= 1000))
-    return bad(err, "coefsound", prm->coefsound, "must be in [1, 1000]");
+  char range[64];
+  if (!(prm->coefh >= WL_SPH_COEFH_MIN && prm->coefh <= WL_SPH_COEFH_MAX)) {
+    snprintf(range, sizeof range, "must be in [%g, %g]", WL_SPH_COEFH_MIN, WL_SPH_COEFH_MAX);
+    return bad(err, "coefh", prm->coefh, range);
+  }
+  if (!(prm->coefsound >= WL_SPH_COEFSOUND_MIN && prm->coefsound <= WL_SPH_COEFSOUND_MAX)) {
+    snprintf(range, sizeof range, "must be in [%g, %g]", WL_SPH_COEFSOUND_MIN,
+             WL_SPH_COEFSOUND_MAX);
+    return bad(err, "coefsound", prm->coefsound, range);
+  }
   if (!(prm->h_max > 0) || !isfinite(prm->h_max))
     return bad(err, "h_max", prm->h_max, "must be > 0 m (the largest water depth)");
   if (!(prm->rho0 > 0)) return bad(err, "rho0", prm->rho0, "must be > 0 kg/m^3");
   if (!(prm->g > 0)) return bad(err, "g", prm->g, "must be > 0 m/s^2");
   if (prm->visc != WL_SPH_VISC_ARTIFICIAL && prm->visc != WL_SPH_VISC_LAMINAR)
     return bad(err, "visc", prm->visc, "must be 0 (artificial) or 1 (laminar)");
-  if (!(prm->alpha >= 0 && prm->alpha <= 10)) return bad(err, "alpha", prm->alpha, "must be in [0, 10]");
+  if (!(prm->alpha >= 0 && prm->alpha <= WL_SPH_ALPHA_MAX)) {
+    snprintf(range, sizeof range, "must be in [0, %g]", WL_SPH_ALPHA_MAX);
+    return bad(err, "alpha", prm->alpha, range);
+  }
   if (!(prm->visc_bound_factor >= 0))
     return bad(err, "visc_bound_factor", prm->visc_bound_factor, "must be >= 0");
-  if (!(prm->nu >= 0)) return bad(err, "nu", prm->nu, "must be >= 0 m^2/s");
+  if (!(prm->nu >= 0 && prm->nu <= WL_SPH_NU_MAX)) {
+    snprintf(range, sizeof range, "must be in [0, %g] m^2/s", WL_SPH_NU_MAX);
+    return bad(err, "nu", prm->nu, range);
+  }
   if (prm->ddt != WL_SPH_DDT_NONE && prm->ddt != WL_SPH_DDT_FOURTAKAS &&
       prm->ddt != WL_SPH_DDT_FOURTAKAS_FULL)
     return bad(err, "ddt", prm->ddt, "must be 0 (none), 1 (Fourtakas) or 2 (Fourtakas, full)");
-  if (!(prm->delta >= 0 && prm->delta <= 1)) return bad(err, "delta", prm->delta, "must be in [0, 1]");
-  if (!(prm->cfl > 0 && prm->cfl <= 1)) return bad(err, "cfl", prm->cfl, "must be in (0, 1]");
+  if (!(prm->delta >= 0 && prm->delta <= WL_SPH_DELTA_MAX)) {
+    snprintf(range, sizeof range, "must be in [0, %g]", WL_SPH_DELTA_MAX);
+    return bad(err, "delta", prm->delta, range);
+  }
+  if (!(prm->cfl > WL_SPH_CFL_MIN_OPEN && prm->cfl <= WL_SPH_CFL_MAX)) {
+    snprintf(range, sizeof range, "must be in (%g, %g]", WL_SPH_CFL_MIN_OPEN, WL_SPH_CFL_MAX);
+    return bad(err, "cfl", prm->cfl, range);
+  }
   if (!(prm->wall_alpha >= 0 && prm->wall_alpha <= 1))
     return bad(err, "wall_alpha", prm->wall_alpha, "must be in [0, 1]");
   if (prm->boundary != WL_SPH_BOUND_DBC && prm->boundary != WL_SPH_BOUND_ADAMI)
     return bad(err, "boundary", prm->boundary, "must be 0 (dbc) or 1 (adami)");
   if (prm->integrator != WL_SPH_SYMPLECTIC && prm->integrator != WL_SPH_VERLET)
     return bad(err, "integrator", prm->integrator, "must be 0 (symplectic) or 1 (Verlet)");
-  if (!(prm->verlet_steps >= 1 && prm->verlet_steps <= 1000))
-    return bad(err, "verlet_steps", prm->verlet_steps, "must be in [1, 1000]");
+  if (!(prm->verlet_steps >= 1 && prm->verlet_steps <= WL_SPH_VERLET_STEPS_MAX)) {
+    snprintf(range, sizeof range, "must be in [1, %d]", WL_SPH_VERLET_STEPS_MAX);
+    return bad(err, "verlet_steps", prm->verlet_steps, range);
+  }
   if (!(prm->dt_collapse >= 0 && prm->dt_collapse < 1))
     return bad(err, "dt_collapse", prm->dt_collapse, "must be in [0, 1)");
   if (!(prm->rho_min_factor >= 0 && prm->rho_min_factor < 1))

@@ -53,6 +53,21 @@ enum wl_sph_integrator {
   WL_SPH_VERLET = 1,     /* Verlet with an Euler step every verlet_steps: one evaluation a step */
 };
 
+/* The accepted range of each tunable numerics parameter, closed at both
+ * ends unless named _OPEN: one table, read by the solver's validation
+ * (wl_sph_const_make) and by the scenario schema's numerics keys, so that a
+ * value `check` accepts is one the solver runs. */
+#define WL_SPH_COEFH_MIN 0.5
+#define WL_SPH_COEFH_MAX 2.0
+#define WL_SPH_COEFSOUND_MIN 5.0
+#define WL_SPH_COEFSOUND_MAX 100.0
+#define WL_SPH_CFL_MIN_OPEN 0.0
+#define WL_SPH_CFL_MAX 1.0
+#define WL_SPH_ALPHA_MAX 1.0
+#define WL_SPH_NU_MAX 1.0      /* [m^2/s] */
+#define WL_SPH_DELTA_MAX 1.0
+#define WL_SPH_VERLET_STEPS_MAX 1000
+
 /* Run parameters; wl_sph_params_default fills DualSPHysics' defaults. */
 struct wl_sph_params {
   int dim;                  /* 2 (x, z) or 3 (x, y, z); gravity along the last axis */
