@@ -482,7 +482,10 @@ static enum wl_status prepare_dir(const char *dir, int force, struct wl_error *e
     return WL_OK;
   }
   if (mkdir(dir, 0777) != 0)
-    return wl_error_set(err, WL_EIO, "%s: cannot create the output directory (%s)", dir,
+    /* a path the user chose that cannot be one (missing parent, a file in
+     * the way, no permission) is bad input; a full or failing disk is not */
+    return wl_error_set(err, errno == ENOSPC || errno == EIO || errno == EDQUOT ? WL_EIO : WL_EINPUT,
+                        "%s: cannot create the output directory (%s)", dir,
                         strerror(errno));
   return WL_OK;
 }

@@ -451,9 +451,11 @@ static void case_cost(const struct wl_scenario *s, struct wl_plan *p, double x_l
 }
 
 /* "line" of a value for an error message, or "default". */
+/* ":LINE" of a value written in the file, "" for a default (the message
+ * then names the key alone). */
 static const char *where(const struct wl_scenario_value *v, char buf[32]) {
-  if (!v->line) return "default";
-  snprintf(buf, 32, "%d", v->line);
+  if (!v->line) return "";
+  snprintf(buf, 32, ":%d", v->line);
   return buf;
 }
 
@@ -487,7 +489,7 @@ static enum wl_status plan_sides(const struct wl_scenario *s, struct wl_plan *p,
   char wbuf[32];
   if (p->slip_walls && !planes_apart(p, modelled_rows(s, p, 0)))
     return wl_error_set(err, WL_EINPUT,
-                        "%s:%s: domain.width: free-slip side walls %g m apart; they must be more "
+                        "%s%s: domain.width: free-slip side walls %g m apart; they must be more "
                         "than 2h = %.3g m (one cell of the neighbour search) apart; expected a "
                         "wider flume, a smaller dp, or domain.side_walls: particles",
                         s->path, where(w, wbuf), w->q.si, 2.0 * p->h_sml);
@@ -495,7 +497,7 @@ static enum wl_status plan_sides(const struct wl_scenario *s, struct wl_plan *p,
     p->symmetry = 1;
     if (p->slip_walls && !planes_apart(p, modelled_rows(s, p, 1)))
       return wl_error_set(err, WL_EINPUT,
-                          "%s:%s: domain.symmetry: centreline: the half width, %g m, between the "
+                          "%s%s: domain.symmetry: centreline: the half width, %g m, between the "
                           "symmetry plane and a free-slip side wall is not more than 2h = %.3g m; "
                           "expected domain.symmetry: none or auto, a wider flume or a smaller dp",
                           s->path, where(&s->domain.symmetry, wbuf), modelled_rows(s, p, 1) * p->dp,
@@ -564,7 +566,7 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
     if (outputs > WL_PLAN_OUTPUTS_MAX) {
       char obuf[32];
       return wl_error_set(err, WL_EINPUT,
-                          "%s:%s: run.output_interval: %g s over %g s of simulated time is %.3g "
+                          "%s%s: run.output_interval: %g s over %g s of simulated time is %.3g "
                           "outputs, more than %.0f; expected an interval of at least %.3g s",
                           s->path, where(&s->run.output_interval, obuf),
                           s->run.output_interval.q.si, t_last, outputs, WL_PLAN_OUTPUTS_MAX,
@@ -576,7 +578,7 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
         s->resolution.dp.is_auto ? &s->resolution.particles_per_height : &s->resolution.dp;
     char rbuf[32];
     return wl_error_set(err, WL_EINPUT,
-                        "%s:%s: resolution.%s: dp = %g m needs about %.3g particles (%.3g GiB), "
+                        "%s%s: resolution.%s: dp = %g m needs about %.3g particles (%.3g GiB), "
                         "more than the %.3g a run can hold; expected a larger dp or fewer "
                         "particles per wave height",
                         s->path, where(r, rbuf), s->resolution.dp.is_auto ? "particles_per_height" : "dp",
@@ -767,7 +769,7 @@ enum wl_status wl_plan_fits(const struct wl_scenario *s, const struct wl_plan_co
   const char *at = where(r, where_buf);
   if (m->host_bytes > 0 && cost->host_bytes > WL_PLAN_MEMORY_FRACTION * m->host_bytes)
     return wl_error_set(err, WL_EINPUT,
-                        "%s:%s: resolution.%s: the run needs about %.3g GiB of memory, more than "
+                        "%s%s: resolution.%s: the run needs about %.3g GiB of memory, more than "
                         "%.0f %% of this machine's %.3g GiB; expected a larger dp (memory grows "
                         "with 1/dp^%d), fewer particles per wave height, or a shorter flume",
                         s->path, at, key, cost->host_bytes / 1073741824.0,
@@ -775,7 +777,7 @@ enum wl_status wl_plan_fits(const struct wl_scenario *s, const struct wl_plan_co
                         cost->dims);
   if (gpu && cost->device_bytes > m->device_bytes)
     return wl_error_set(err, WL_EINPUT,
-                        "%s:%s: resolution.%s: the run needs about %.3g GiB of GPU memory, more "
+                        "%s%s: resolution.%s: the run needs about %.3g GiB of GPU memory, more "
                         "than the %.3g GiB of %s; expected a larger dp, or the CPU backend "
                         "(--backend cpu, %.3g GiB of host memory)",
                         s->path, at, key, cost->device_bytes / 1073741824.0,
@@ -792,7 +794,7 @@ enum wl_status wl_plan_fits(const struct wl_scenario *s, const struct wl_plan_co
     fmt_duration(seconds, need, sizeof need);
     fmt_duration(m->budget_seconds, budget, sizeof budget);
     return wl_error_set(err, WL_EINPUT,
-                        "%s:%s: resolution.%s: the run would take about %s on %s, beyond the "
+                        "%s%s: resolution.%s: the run would take about %s on %s, beyond the "
                         "budget of %s; expected a larger dp, a shorter run.end_time%s, or "
                         "--budget HOURS / --force-large to run it anyway",
                         s->path, at, key, need, where_run, budget,

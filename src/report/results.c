@@ -7,7 +7,10 @@
 
 #include "results.h"
 
+#include <errno.h>
 #include <hdf5.h>
+#include <stdio.h>
+#include <sys/stat.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -573,9 +576,15 @@ enum wl_status wl_report_results_load(const char *path, struct wl_report_results
     *slash = '\0';
   else
     snprintf(r->dir, sizeof r->dir, ".");
+  struct stat sb;
+  if (stat(path, &sb) == 0 && S_ISDIR(sb.st_mode))
+    return wl_error_set(err, WL_EINPUT,
+                        "%s: is a directory; expected the results.h5 that `wallload assess` writes",
+                        path);
   FILE *probe = fopen(path, "rb");
-  if (!probe)
-    return wl_error_set(err, WL_EIO, "%s: cannot open the results file", path);
+  if (!probe) /* a path the user gave: missing or unreadable is their input */
+    return wl_error_set(err, WL_EINPUT, "%s: cannot open the results file: %s", path,
+                        strerror(errno));
   fclose(probe);
   if (H5Fis_hdf5(path) <= 0)
     return wl_error_set(err, WL_EINPUT,
@@ -584,7 +593,10 @@ enum wl_status wl_report_results_load(const char *path, struct wl_report_results
                         path);
   hid_t file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
   if (file < 0)
-    return wl_error_set(err, WL_EIO, "%s: cannot open the results file (HDF5)", path);
+    return wl_error_set(err, WL_EINPUT,
+                        "%s: an HDF5 file that cannot be opened (truncated or damaged); expected "
+                        "the results.h5 that `wallload assess` writes",
+                        path);
   enum wl_status st = WL_OK;
   hid_t root = H5Gopen2(file, "/", H5P_DEFAULT);
   int has_name = root >= 0 && H5Aexists(root, "scenario_name") > 0;

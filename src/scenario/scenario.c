@@ -85,13 +85,19 @@ static enum wl_status set_scalar(struct ctx *c, const struct wl_key *k, const ch
                                  const yaml_node_t *n, const char *text,
                                  struct wl_scenario_value *v) {
   memset(v, 0, sizeof *v);
+  char valid[256], msg[512];
+  if (strlen(text) >= sizeof v->text) {
+    /* kept whole or refused: a cut name or number would be another one */
+    snprintf(msg, sizeof msg, "found a value of %zu characters; expected at most %zu (%s)",
+             strlen(text), sizeof v->text - 1, k->help);
+    if (n) return fail_at(c, n, path, msg, NULL);
+  }
   snprintf(v->text, sizeof v->text, "%s", text);
   if (n) {
     v->given = 1;
     v->line = line_of(n);
     v->col = col_of(n);
   }
-  char valid[256], msg[512];
   switch (k->type) {
   case KT_STR:
     return WL_OK;
