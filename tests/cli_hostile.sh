@@ -233,6 +233,7 @@ row "output under a regular file" 2 "afile/x: cannot create the output directory
 row "output under a missing directory" 2 "no/such/dir: cannot create the output directory \(No such file or directory\)" "$bin" assess base.yaml -o no/such/dir --quiet
 mkdir exists
 row "output directory exists" 2 "exists: the output directory exists; use --force" "$bin" assess base.yaml -o exists --quiet
+row "validate: output under a regular file" 2 "validate: afile/v: cannot create the output directory \(Not a directory\)" "$bin" validate hydrostatic -o afile/v --quick
 
 echo "$rows rows, $fail failed"
 [ "$rows" -ge 60 ] || { echo "FAIL the table has $rows rows; the issue asks for at least 60"; fail=$((fail + 1)); }

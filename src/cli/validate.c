@@ -139,7 +139,8 @@ enum wl_status wl_cli_validate(int argc, char **argv, struct wl_error *err) {
   if (!any)
     for (int i = 0; i < n_cases; i++) sel[i] = 1;
   if (mkdir(out_dir, 0777) != 0 && errno != EEXIST) {
-    st = wl_error_set(err, WL_EIO, "validate: %s: cannot create the output directory (%s)", out_dir,
+    st = wl_error_set(err, errno == ENOSPC || errno == EIO || errno == EDQUOT ? WL_EIO : WL_EINPUT,
+                      "validate: %s: cannot create the output directory (%s)", out_dir,
                       strerror(errno));
     free(sel);
     return st;

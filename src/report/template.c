@@ -6,6 +6,7 @@
 #include "wallload/report.h"
 
 #include <ctype.h>
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -680,7 +681,9 @@ enum wl_status wl_report_template_load(const char *path, struct wl_report_templa
                                        struct wl_error *err) {
   wl_report_template_clear(t);
   FILE *f = fopen(path, "rb");
-  if (!f) return wl_error_set(err, WL_EIO, "%s: cannot open the report template", path);
+  if (!f) /* a file the user named */
+    return wl_error_set(err, WL_EINPUT, "%s: cannot open the report template: %s", path,
+                        strerror(errno));
   char *buf = malloc(TEMPLATE_MAX_BYTES + 1);
   if (!buf) {
     fclose(f);
