@@ -122,14 +122,18 @@ static int budget_option(const char *cmd, int argc, char **argv, int *i, double 
   return 1;
 }
 
-/* Weigh the plan (or its ladder) against the machine the run would take,
- * and print the verdict to `out` (may be NULL). */
-static enum wl_status check_fits(const struct wl_scenario *s, const struct wl_plan *plan,
-                                 const struct wl_assess_opts *opts, double budget_s,
-                                 int force_large, FILE *out, struct wl_error *err) {
+/* What check and assess both judge once the plan is made (the one
+ * function, so that a scenario check passes is one assess starts): every
+ * case can run, and the plan (or its ladder) fits the machine the run
+ * would take and the budget. The machine's verdict goes to `out` (may be
+ * NULL). */
+static enum wl_status judge_run(const struct wl_scenario *s, const struct wl_plan *plan,
+                                const struct wl_assess_opts *opts, double budget_s,
+                                int force_large, FILE *out, struct wl_error *err) {
+  enum wl_status st = WL_OK;
+  if (plan->solitary.present && (st = wl_plan_solitary_runnable(s, plan, err))) return st;
   struct wl_plan_machine m;
-  enum wl_status st = wl_assess_machine(s, opts, &m, err);
-  if (st) return st;
+  if ((st = wl_assess_machine(s, opts, &m, err))) return st;
   if (budget_s > 0) m.budget_seconds = budget_s;
   m.force_large = force_large;
   struct wl_plan_cost cost;
@@ -183,8 +187,7 @@ enum wl_status wl_cli_check(int argc, char **argv, struct wl_error *err) {
   ladder_cost(&s, &plan, 0, stdout, &cost);
   /* printed in full above; a case that cannot run, or a run beyond the
    * machine or the budget, makes the scenario invalid */
-  if (plan.solitary.present) st = wl_plan_solitary_runnable(&s, &plan, err);
-  if (st == WL_OK) st = check_fits(&s, &plan, &opts, budget_s, force_large, stdout, err);
+  st = judge_run(&s, &plan, &opts, budget_s, force_large, stdout, err);
   wl_scenario_clear(&s);
   return st;
 }
@@ -338,7 +341,7 @@ enum wl_status wl_cli_assess(int argc, char **argv, struct wl_error *err) {
   struct wl_plan plan;
   enum wl_status st = load_and_plan(path, &s, &plan, err);
   if (st) return st;
-  if ((st = check_fits(&s, &plan, &opts, budget_s, force_large, NULL, err))) {
+  if ((st = judge_run(&s, &plan, &opts, budget_s, force_large, NULL, err))) {
     wl_scenario_clear(&s);
     return st;
   }
