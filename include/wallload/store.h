@@ -4,7 +4,13 @@
  * Every file is written to "<path>.tmp" and renamed over <path> only when it
  * is complete (rename is atomic on POSIX file systems), so a crash, an
  * interruption or an unstable run leaves either the previous file or the new
- * complete one. HDF5 files hold datasets with a "unit" and a "description"
+ * complete one. Each file is synced to disk before the rename (and the
+ * directory after it). A write the system refuses (a full disk, a file-size
+ * limit, an I/O error) is WL_EIO with the final file's name and the
+ * system's reason ("No space left on device"); the temporary file is then
+ * removed and the previous file under the final name, if any, is kept.
+ * Closing a file after a failed write cannot fail or crash (store.c says
+ * how). HDF5 files hold datasets with a "unit" and a "description"
  * attribute each; particle snapshots come with an XDMF index that ParaView
  * opens (2D runs are written as (x, 0, z)). */
 #ifndef WALLLOAD_STORE_H
@@ -16,14 +22,50 @@
 
 struct wl_store; /* an HDF5 file being written; opaque */
 
+/* HDF5 as wallload uses it: the library's own error printing off (every
+ * status is checked and reported with the file), and no exit handler (a
+ * file the library failed to close can then never crash the exit). Called
+ * by wl_store_open; readers of HDF5 files call it before their first
+ * HDF5 call. Idempotent. */
+void wl_store_hdf5_init(void);
+
+/* Files written to their temporary names and moved into place together,
+ * only when all of them were written: a failure on any one leaves every
+ * previous file as it was. */
+enum { WL_STORE_BATCH_MAX = 16 };
+struct wl_store_batch {
+  int n;
+  char path[WL_STORE_BATCH_MAX][1024]; /* final names; each written as path.tmp */
+};
+void wl_store_batch_init(struct wl_store_batch *b);
+/* Rename every file of the batch into place (in the order added) and sync
+ * the directory. WL_EIO when a rename fails (the files after it are
+ * dropped). The batch is empty afterwards. */
+enum wl_status wl_store_batch_commit(struct wl_store_batch *b, struct wl_error *err);
+/* Remove every temporary file of the batch. */
+void wl_store_batch_abort(struct wl_store_batch *b);
+
 /* Create "<path>.tmp" for writing. Returns WL_OK and *out; WL_EIO (message
  * names the file and HDF5's reason). */
 enum wl_status wl_store_open(const char *path, struct wl_store **out, struct wl_error *err);
 
-/* Finish: close the file and, when `commit` is 1, rename it to its final
- * name; with commit 0 the temporary file is removed. Safe on NULL. Returns
- * WL_OK or WL_EIO. Always frees *store. */
+/* Finish: close the file and, when `commit` is 1 and every write to it
+ * succeeded, sync it and rename it to its final name; otherwise the
+ * temporary file is removed (commit 0 returns WL_OK). Safe on NULL.
+ * Returns WL_OK or WL_EIO. Always frees *store. */
 enum wl_status wl_store_close(struct wl_store *store, int commit, struct wl_error *err);
+
+/* Close a complete file into a batch (moved into place by
+ * wl_store_batch_commit). On a failure (this close, or an earlier write)
+ * the temporary file is removed and WL_EIO returned. Frees *store. */
+enum wl_status wl_store_close_batch(struct wl_store *store, struct wl_store_batch *b,
+                                    struct wl_error *err);
+
+/* Push what is written so far to the file, so that a full disk is found
+ * now rather than at the close (snapshots are flushed one by one). WL_EIO
+ * names the file and the reason; the store is then failed (closing it
+ * discards it). */
+enum wl_status wl_store_flush(struct wl_store *store, struct wl_error *err);
 
 /* Write a 1D double dataset `path` (groups created as needed, e.g.
  * "cases/solitary/gauges/G1/eta") with attributes unit and description. */
@@ -72,8 +114,13 @@ enum wl_status wl_store_write_xdmf(const char *xmf_path, const char *h5_name,
                                    const struct wl_snapshot_ref *snaps, size_t n_snaps,
                                    struct wl_error *err);
 
-/* Write `text` to `path` atomically (temp file + rename); for JSON and CSV. */
+/* Write `text` to `path` atomically (temp file + fsync + rename); for JSON
+ * and CSV. */
 enum wl_status wl_store_write_text(const char *path, const char *text, size_t len,
                                    struct wl_error *err);
+
+/* Write `text` to path.tmp (synced) and add it to batch b. */
+enum wl_status wl_store_write_text_batch(const char *path, const char *text, size_t len,
+                                         struct wl_store_batch *b, struct wl_error *err);
 
 #endif

@@ -262,7 +262,7 @@ static enum wl_status write_convergence_h5(struct wl_store *h5, const struct wl_
 
 /* convergence.csv: one row per case and level. */
 static enum wl_status write_convergence_csv(const struct wl_assess_result *res,
-                                            struct wl_error *err) {
+                                            struct wl_store_batch *b, struct wl_error *err) {
   struct text t = {0};
   put(&t, "case,level");
   for (int k = 0; k < N_LEVEL_FIELDS; k++) {
@@ -302,13 +302,14 @@ static enum wl_status write_convergence_csv(const struct wl_assess_result *res,
   char path[600];
   snprintf(path, sizeof path, "%s/convergence.csv", res->out_dir);
   enum wl_status st = t.failed ? wl_error_set(err, WL_ENOMEM, "%s: no memory", path)
-                               : wl_store_write_text(path, t.s, t.len, err);
+                               : wl_store_write_text_batch(path, t.s, t.len, b, err);
   free(t.s);
   return st;
 }
 
 static enum wl_status write_summary(const struct wl_scenario *s, const struct wl_plan *plan,
-                                    const struct wl_assess_result *res, struct wl_error *err) {
+                                    const struct wl_assess_result *res,
+                                    struct wl_store_batch *batch, struct wl_error *err) {
   struct text t = {0};
   put(&t, "{\n  \"scenario\": ");
   jstr(&t, s->name.text);
@@ -436,13 +437,13 @@ static enum wl_status write_summary(const struct wl_scenario *s, const struct wl
   }
   char path[600];
   snprintf(path, sizeof path, "%s/summary.json", res->out_dir);
-  enum wl_status st = wl_store_write_text(path, t.s, t.len, err);
+  enum wl_status st = wl_store_write_text_batch(path, t.s, t.len, batch, err);
   free(t.s);
   return st;
 }
 
 static enum wl_status write_csv(const struct wl_assess_result *res, const struct wl_case_result *c,
-                                struct wl_error *err) {
+                                struct wl_store_batch *b, struct wl_error *err) {
   const struct wl_record *r = &c->rec;
   const struct wl_case_loads *l = &c->loads;
   struct text t = {0};
@@ -455,7 +456,7 @@ static enum wl_status write_csv(const struct wl_assess_result *res, const struct
   snprintf(path, sizeof path, "%s/%s_wall.csv", res->out_dir, c->name);
   enum wl_status st =
       t.failed ? wl_error_set(err, WL_ENOMEM, "%s: no memory", path)
-               : wl_store_write_text(path, t.s, t.len, err);
+               : wl_store_write_text_batch(path, t.s, t.len, b, err);
   t.len = 0;
   if (!st) {
     put(&t, "time_s");
@@ -468,7 +469,7 @@ static enum wl_status write_csv(const struct wl_assess_result *res, const struct
     }
     snprintf(path, sizeof path, "%s/%s_gauges.csv", res->out_dir, c->name);
     st = t.failed ? wl_error_set(err, WL_ENOMEM, "%s: no memory", path)
-                  : wl_store_write_text(path, t.s, t.len, err);
+                  : wl_store_write_text_batch(path, t.s, t.len, b, err);
   }
   free(t.s);
   return st;
@@ -588,17 +589,25 @@ enum wl_status write_results(const struct wl_scenario *s, const struct wl_plan *
   for (int i = 0; !st && i < res->n_cases; i++) st = write_case_h5(h5, &res->cases[i], err);
   for (int i = 0; !st && i < res->n_cases; i++)
     if (res->conv[i].n_levels) st = write_convergence_h5(h5, &res->cases[i], &res->conv[i], err);
-  struct wl_error cerr;
-  wl_error_clear(&cerr);
-  enum wl_status st2 = wl_store_close(h5, st == WL_OK, &cerr);
-  if (!st && st2) {
-    *err = cerr;
-    st = st2;
+  /* Every file is written to its temporary name first; they move into
+   * place together once all are complete, so a failure on any of them (a
+   * full disk) leaves the previous results.h5, CSV files and summary.json
+   * as they were. summary.json moves last. */
+  struct wl_store_batch batch;
+  wl_store_batch_init(&batch);
+  if (st) {
+    wl_store_close(h5, 0, NULL);
+  } else {
+    st = wl_store_close_batch(h5, &batch, err);
   }
-  for (int i = 0; !st && i < res->n_cases; i++) st = write_csv(res, &res->cases[i], err);
+  for (int i = 0; !st && i < res->n_cases; i++) st = write_csv(res, &res->cases[i], &batch, err);
   int ladder = 0;
   for (int i = 0; i < res->n_cases; i++) ladder |= res->conv[i].n_levels > 0;
-  if (!st && ladder) st = write_convergence_csv(res, err);
-  if (!st) st = write_summary(s, plan, res, err);
-  return st;
+  if (!st && ladder) st = write_convergence_csv(res, &batch, err);
+  if (!st) st = write_summary(s, plan, res, &batch, err);
+  if (st) {
+    wl_store_batch_abort(&batch);
+    return st;
+  }
+  return wl_store_batch_commit(&batch, err);
 }

@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "wallload/loads.h"
+#include "wallload/store.h"
 
 const char *wl_report_case_name(int i) {
   return i == WL_REPORT_CASE_SOLITARY    ? "solitary"
@@ -562,7 +563,7 @@ static void replan(struct wl_report_results *r) {
 enum wl_status wl_report_results_load(const char *path, struct wl_report_results *r,
                                       struct wl_error *err) {
   wl_report_results_init(r);
-  H5Eset_auto2(H5E_DEFAULT, NULL, NULL); /* wallload reports its own errors */
+  wl_store_hdf5_init(); /* wallload reports its own errors (store.h) */
   if (!path || !*path)
     return wl_error_set(err, WL_EINPUT, "report: no results file given");
   if (strlen(path) >= sizeof r->path)
@@ -652,7 +653,7 @@ static int by_time(const void *a, const void *b) {
 enum wl_status wl_report_snapshot_list(const char *path, struct wl_report_snapshot_ref **refs,
                                        size_t *n, struct wl_error *err) {
   *refs = NULL, *n = 0;
-  H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+  wl_store_hdf5_init();
   FILE *probe = fopen(path, "rb");
   if (!probe)
     return wl_error_set(err, WL_EIO, "%s: cannot open the particle snapshots", path);
@@ -699,7 +700,7 @@ enum wl_status wl_report_snapshot_read(const char *path, const char *group,
                                        double **value, int **kind, size_t *n,
                                        struct wl_error *err) {
   *x = *z = *value = NULL, *kind = NULL, *n = 0;
-  H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+  wl_store_hdf5_init();
   hid_t file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
   if (file < 0)
     return wl_error_set(err, WL_EIO, "%s: cannot open the particle snapshots", path);
