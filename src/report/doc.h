@@ -82,6 +82,8 @@ struct wl_report_doc {
 #endif
   char path[1024];    /* final file */
   char tmp[1040];     /* path.part while writing */
+  int fd;             /* tmp, open for writing (cairo writes through write_out); -1 when closed */
+  int io_errno;       /* the system's reason for the first failed write, 0 while none */
   char title[256], scenario[256], company[256], version[64];
   int page;           /* pages started (current page number) */
   int page_open;      /* 1: header and footer of page `page` are drawn */

@@ -2,13 +2,20 @@
  * running header and footer, and the vertical cursor that flowing blocks
  * (title, headings, paragraphs, preformatted text, reserved areas, figures)
  * move down. Cairo's status is checked at every page end and at finish; the
- * file is written as PATH.part and renamed only when complete. */
+ * file is written as PATH.part and renamed only when complete. Cairo writes
+ * through write_out to a descriptor of ours, so that a refused write is
+ * reported with the system's reason (a full disk), and the file is synced
+ * and its close checked before the rename. */
+#define _POSIX_C_SOURCE 200809L /* fsync */
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include <unistd.h>
 
 #include <cairo-pdf.h>
 
@@ -48,15 +55,80 @@ enum wl_status wl_report_doc_usable(struct wl_report_doc *d, struct wl_error *er
   return WL_OK;
 }
 
-/* Cairo keeps the first error in the context or surface; turn it into ours. */
+/* Cairo keeps the first error in the context or surface; turn it into ours.
+ * A write the system refused is named with its reason. */
 static enum wl_status check_cairo(struct wl_report_doc *d, struct wl_error *err,
                                   const char *what) {
   cairo_status_t cs = d->cr ? cairo_status(d->cr) : CAIRO_STATUS_SUCCESS;
   if (cs == CAIRO_STATUS_SUCCESS) cs = cairo_surface_status(d->surface);
   if (cs == CAIRO_STATUS_SUCCESS) return WL_OK;
+  if (d->io_errno)
+    return wl_report_doc_fail(d, err, WL_EIO, "%s: cannot write %s (page %d, %s): %s", d->path,
+                              d->tmp, d->page, what, strerror(d->io_errno));
   return wl_report_doc_fail(d, err, cs == CAIRO_STATUS_NO_MEMORY ? WL_ENOMEM : WL_EIO,
                             "%s: page %d: %s: cairo: %s", d->path, d->page, what,
                             cairo_status_to_string(cs));
+}
+
+/* ---- the file --------------------------------------------------------------- */
+
+/* Cairo's output: every byte to the .part file, the first failure kept. */
+static cairo_status_t write_out(void *closure, const unsigned char *data, unsigned int length) {
+  struct wl_report_doc *d = closure;
+  if (d->io_errno) return CAIRO_STATUS_WRITE_ERROR;
+  if (d->fd < 0) {
+    d->io_errno = EBADF;
+    return CAIRO_STATUS_WRITE_ERROR;
+  }
+  size_t done = 0;
+  while (done < length) {
+    ssize_t w = write(d->fd, data + done, length - done);
+    if (w > 0) {
+      done += (size_t)w;
+    } else if (w < 0 && errno == EINTR) {
+      continue;
+    } else {
+      d->io_errno = w < 0 ? errno : EIO;
+      return CAIRO_STATUS_WRITE_ERROR;
+    }
+  }
+  return CAIRO_STATUS_SUCCESS;
+}
+
+/* Sync and close the .part file; the first failure goes to io_errno.
+ * Returns 0 when the whole file is on disk. */
+static int close_out(struct wl_report_doc *d) {
+  if (d->fd < 0) return d->io_errno ? -1 : 0;
+  if (!d->io_errno && fsync(d->fd) != 0 && errno != EINVAL && errno != EROFS)
+    d->io_errno = errno;
+  if (close(d->fd) != 0 && !d->io_errno && errno != EINTR) d->io_errno = errno;
+  d->fd = -1;
+  return d->io_errno ? -1 : 0;
+}
+
+/* fsync the directory of path, so that the rename reaches the disk (best
+ * effort: the file itself is synced). */
+static void sync_dir_of(const char *path) {
+  char dir[1040];
+  snprintf(dir, sizeof dir, "%s", path);
+  char *slash = strrchr(dir, '/');
+  if (slash == dir)
+    dir[1] = '\0';
+  else if (slash)
+    *slash = '\0';
+  else
+    snprintf(dir, sizeof dir, ".");
+  const int fd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return;
+  fsync(fd);
+  close(fd);
+}
+
+/* Remove the .part file (closing it first where it is open). */
+static void discard_out(struct wl_report_doc *d) {
+  if (d->fd >= 0) close(d->fd);
+  d->fd = -1;
+  remove(d->tmp);
 }
 
 /* ---- open, finish, free --------------------------------------------------- */
@@ -76,7 +148,8 @@ static void set_metadata(struct wl_report_doc *d) {
 #endif
 }
 
-/* Tear down cairo and pango; the partial file stays (callers remove it). */
+/* Tear down cairo and pango; the partial file stays (callers remove it:
+ * discard_out). */
 static void destroy_drawing(struct wl_report_doc *d) {
   wl_report_text_free(d);
   if (d->cr) cairo_destroy(d->cr);
@@ -108,11 +181,17 @@ enum wl_status wl_report_doc_open(const char *path, const struct wl_report_doc_i
   }
   copy_text(d->version, sizeof d->version, info && info->version ? info->version : WL_VERSION);
 
-  d->surface = cairo_pdf_surface_create(d->tmp, PAGE_W, PAGE_H);
+  d->fd = open(d->tmp, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (d->fd < 0) {
+    const int e = errno;
+    free(d);
+    return wl_error_set(err, WL_EIO, "%s: cannot create %s.part: %s", path, path, strerror(e));
+  }
+  d->surface = cairo_pdf_surface_create_for_stream(write_out, d, PAGE_W, PAGE_H);
   cairo_status_t cs = cairo_surface_status(d->surface);
   if (cs != CAIRO_STATUS_SUCCESS) {
     cairo_surface_destroy(d->surface);
-    remove(d->tmp);
+    discard_out(d);
     free(d);
     return wl_error_set(err, cs == CAIRO_STATUS_NO_MEMORY ? WL_ENOMEM : WL_EIO,
                         "%s: cannot create the PDF (cairo: %s)", path,
@@ -124,7 +203,7 @@ enum wl_status wl_report_doc_open(const char *path, const struct wl_report_doc_i
   if (st == WL_OK) st = wl_report_text_init(d, err);
   if (st != WL_OK) {
     destroy_drawing(d);
-    remove(d->tmp);
+    discard_out(d);
     free(d);
     return st;
   }
@@ -156,15 +235,25 @@ enum wl_status wl_report_doc_finish(struct wl_report_doc *d, struct wl_error *er
   cairo_surface_destroy(d->surface);
   d->surface = NULL;
   d->finished = 1;
-  if (st == WL_OK && cs != CAIRO_STATUS_SUCCESS)
-    st = wl_report_doc_fail(d, err, cs == CAIRO_STATUS_NO_MEMORY ? WL_ENOMEM : WL_EIO,
-                            "%s: cannot write the PDF (cairo: %s)", d->path,
-                            cairo_status_to_string(cs));
+  if (st == WL_OK && cs != CAIRO_STATUS_SUCCESS) {
+    if (d->io_errno)
+      st = wl_report_doc_fail(d, err, WL_EIO, "%s: cannot write %s: %s", d->path, d->tmp,
+                              strerror(d->io_errno));
+    else
+      st = wl_report_doc_fail(d, err, cs == CAIRO_STATUS_NO_MEMORY ? WL_ENOMEM : WL_EIO,
+                              "%s: cannot write the PDF (cairo: %s)", d->path,
+                              cairo_status_to_string(cs));
+  }
+  /* the whole file on disk (synced, closed without error) before the rename */
+  if (st == WL_OK && close_out(d) != 0)
+    st = wl_report_doc_fail(d, err, WL_EIO, "%s: cannot write %s: %s", d->path, d->tmp,
+                            strerror(d->io_errno));
   if (st == WL_OK && rename(d->tmp, d->path) != 0)
     st = wl_report_doc_fail(d, err, WL_EIO, "%s: cannot move %s into place: %s", d->path, d->tmp,
                             strerror(errno));
+  if (st == WL_OK) sync_dir_of(d->path);
   if (st != WL_OK) {
-    remove(d->tmp);
+    discard_out(d);
     if (d->failed == WL_OK) d->failed = st;
   }
   return st;
@@ -174,7 +263,7 @@ void wl_report_doc_free(struct wl_report_doc *d) {
   if (!d) return;
   if (!d->finished) {
     destroy_drawing(d);
-    remove(d->tmp);
+    discard_out(d);
   }
   free(d);
 }
