@@ -24,6 +24,16 @@
 #include "wallload/store.h"
 
 
+/* The stop signal, as messages name it. */
+static const char *stop_signal_name(int sig) {
+  return sig == SIGTERM ? "SIGTERM" : sig == SIGHUP ? "SIGHUP" : "the user (SIGINT)";
+}
+
+/* The stop signal's number once one came (opts->interrupted), else 0. */
+static int stop_signal(const struct wl_assess_opts *opts) {
+  return opts->interrupted ? (int)*opts->interrupted : 0;
+}
+
 /* State of one running case, seen by the output callback. */
 struct run_ctx {
   struct wl_case_result *c;
@@ -182,6 +192,8 @@ static enum wl_status write_snapshot(struct run_ctx *rc, const struct wl_particl
       snprintf(path, sizeof path, "%s", r->group);
       st = wl_store_attr_double(rc->snaps, path, "time", t, "s", err);
     }
+    /* to the disk now: a full disk stops the run here, not at its end */
+    if (!st) st = wl_store_flush(rc->snaps, err);
   }
   free(pos), free(vel), free(rho), free(prs), free(kind);
   if (!st) rc->n_refs++;
@@ -192,11 +204,9 @@ static enum wl_status on_output(void *user, struct wl_sph_sim *sim, double t,
                                 struct wl_error *err) {
   struct run_ctx *rc = user;
   struct wl_case_result *c = rc->c;
-  if (rc->opts->interrupted && *rc->opts->interrupted) {
-    const int sig = (int)*rc->opts->interrupted;
-    return wl_error_set(err, WL_EINTERRUPTED, "interrupted by %s at t = %.4f s",
-                        sig == SIGTERM ? "SIGTERM" : sig == SIGHUP ? "SIGHUP" : "the user (SIGINT)", t);
-  }
+  if (rc->opts->interrupted && *rc->opts->interrupted)
+    return wl_error_set(err, WL_EINTERRUPTED, "interrupted by %s while stepping, at t = %.4f s",
+                        stop_signal_name((int)*rc->opts->interrupted), t);
   const struct wl_particles *p = wl_sph_sim_particles(sim, err);
   if (!p) return err->status ? err->status : WL_EIO;
   enum wl_status st = wl_sph_probe_index(rc->probe, p, err);
@@ -571,6 +581,24 @@ enum wl_status wl_assess_run(const struct wl_scenario *s, const struct wl_plan *
   return st;
 }
 
+/* Add a second failure to a reported one ("...; then ..."), so that a
+ * write failure after a stopped case (or a report failure after either)
+ * hides neither. */
+static void add_failure(struct wl_error *err, const char *what, const char *msg) {
+  char buf[WL_ERROR_MSG_MAX];
+  snprintf(buf, sizeof buf, "%s; %s: %s", err->msg, what, msg);
+  snprintf(err->msg, sizeof err->msg, "%s", buf);
+}
+
+/* A stop signal (SIGINT, SIGTERM, SIGHUP: opts->interrupted) stops the
+ * stepping at the next output time (on_output); what was computed is then
+ * written, and the report rendered, as after any stop. One that comes after
+ * a case's last step (while its results are written) lets that writing and
+ * the report finish, and no further case starts; one that comes while the
+ * report is rendered lets it finish. Every file written is complete; the
+ * run returns WL_EINTERRUPTED, its message naming the signal and the phase
+ * ("while stepping", "while writing the results", "while rendering the
+ * report"). */
 static enum wl_status assess_locked(const struct wl_scenario *s, const struct wl_plan *plan,
                                     const struct wl_assess_opts *opts,
                                     struct wl_assess_result *res, struct wl_error *err) {
@@ -602,21 +630,46 @@ static enum wl_status assess_locked(const struct wl_scenario *s, const struct wl
                    c->t_reached, c->t_end, cerr.msg);
     }
     /* Write after every case, so a later failure keeps this one. */
-    if ((st = write_results(s, plan, res, err))) return st;
+    if ((st = write_results(s, plan, res, err))) {
+      if (overall != WL_OK) add_failure(err, "before that", first.msg);
+      return st;
+    }
     if (c->status == WL_EINTERRUPTED) break;
     if (c->status != WL_OK && c->status != WL_EUNSTABLE) break;
+    const int sig = stop_signal(opts);
+    if (sig) { /* came after the case's last step */
+      if (overall == WL_OK) {
+        overall = WL_EINTERRUPTED;
+        wl_error_set(&first, WL_EINTERRUPTED,
+                     "interrupted by %s while writing the results of case %s (they are "
+                     "complete)%s%s%s",
+                     stop_signal_name(sig), c->name, i + 1 < n ? "; case " : "",
+                     i + 1 < n ? wl_flume_case_name(todo[i + 1]) : "", i + 1 < n ? " not run" : "");
+      }
+      break;
+    }
   }
   /* The design report, from the stored results alone (as `wallload
    * report` would); a report failure never hides a run failure. */
   char res_h5[600], pdf[600];
   snprintf(res_h5, sizeof res_h5, "%s/results.h5", res->out_dir);
   snprintf(pdf, sizeof pdf, "%s/report.pdf", res->out_dir);
+  const int sig_before = stop_signal(opts);
   struct wl_error rerr;
   wl_error_clear(&rerr);
   enum wl_status rst = wl_report_render(res_h5, NULL, pdf, &rerr);
   if (rst && overall == WL_OK) {
     *err = rerr;
     return rst;
+  }
+  if (rst) add_failure(&first, "the report was not written either", rerr.msg);
+  const int sig = stop_signal(opts);
+  if (overall == WL_OK && sig) {
+    overall = WL_EINTERRUPTED;
+    wl_error_set(&first, WL_EINTERRUPTED,
+                 "interrupted by %s %s (the results and %s are complete)", stop_signal_name(sig),
+                 sig_before ? "after the results were written" : "while rendering the report",
+                 pdf);
   }
   if (overall != WL_OK) {
     *err = first;
