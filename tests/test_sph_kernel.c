@@ -138,6 +138,22 @@ int main(void) {
                "a particle meeting itself adds nothing and nothing non-finite");
   }
 
+  /* the speed of sound: coefsound sqrt(g h_max), raised to 10 times a
+   * known largest flow speed (Ma <= 0.1): closed forms */
+  {
+    struct wl_sph_params prm;
+    wl_sph_params_default(&prm, 2, 0.01, 0.3);
+    struct wl_sph_const kc;
+    CHECK_TRUE(wl_sph_const_make(&prm, &kc, NULL) == WL_OK, "default parameters accepted");
+    CHECK_REL(kc.c0_d, 10 * sqrt(9.81 * 0.3), 1e-12, "c0 = coefsound sqrt(g h_max)");
+    prm.expected_speed = 2 * sqrt(9.81 * 0.3); /* a dam break's front (Ritter) */
+    CHECK_TRUE(wl_sph_const_make(&prm, &kc, NULL) == WL_OK, "expected speed accepted");
+    CHECK_REL(kc.c0_d, 20 * sqrt(9.81 * 0.3), 1e-12, "c0 = 10 x the front speed 2 sqrt(g H)");
+    prm.expected_speed = 0.1; /* slower than coefsound's: no change */
+    CHECK_TRUE(wl_sph_const_make(&prm, &kc, NULL) == WL_OK, "slow expected speed accepted");
+    CHECK_REL(kc.c0_d, 10 * sqrt(9.81 * 0.3), 1e-12, "a slow flow keeps coefsound's c0");
+  }
+
   /* parameter checks (every error path of wl_sph_const_make) */
   struct {
     const char *what;
@@ -148,7 +164,8 @@ int main(void) {
              {"g", 6, -9.81},        {"visc", 7, 5},         {"alpha", 8, -1},
              {"visc_bound_factor", 9, -1}, {"nu", 10, -1},   {"ddt", 11, 7},
              {"delta", 12, 2},       {"cfl", 13, 0},         {"dt_collapse", 14, 1},
-             {"rho_min_factor", 15, 1}, {"rho_max_factor", 16, 1}, {"penetration", 17, 0}};
+             {"rho_min_factor", 15, 1}, {"rho_max_factor", 16, 1}, {"penetration", 17, 0},
+             {"expected_speed", 18, -1}};
   for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
     struct wl_sph_params prm;
     wl_sph_params_default(&prm, 2, dp, 1);
@@ -172,6 +189,7 @@ int main(void) {
     case 15: prm.rho_min_factor = v; break;
     case 16: prm.rho_max_factor = v; break;
     case 17: prm.penetration = v; break;
+    case 18: prm.expected_speed = v; break;
     }
     struct wl_sph_const kk;
     struct wl_error err;

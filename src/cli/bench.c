@@ -15,7 +15,8 @@
  * term, artificial viscosity 0.01, Fourtakas density diffusion (full) 0.1,
  * coefsound 10, CFL 0.2, symplectic steps (two force evaluations each);
  * --numerics assess: what `assess` runs (wl_plan_default_numerics: coefh
- * 1.2 in 2D, laminar viscosity). Walls: --boundary adami (the default, the
+ * 1.2 in 2D, laminar viscosity) and c0 by its Mach rule (sph/params.h:
+ * at least 10 times the front speed 2 sqrt(g H), so 20 sqrt(g H)). Walls: --boundary adami (the default, the
  * wall condition of sph/wall.h) or dbc (dynamic boundary particles), in
  * --layers layers (default: ceil(2h/dp), the kernel's full support, as the
  * flume builds them; DualSPHysics' examples use 2). Timing covers the
@@ -74,7 +75,10 @@ static enum wl_status build_case(const struct bench_opts *o, int dim, double dp,
                                  struct wl_error *err) {
   const double H = dim == 2 ? 2.0 : 0.3; /* water column height [m] */
   wl_sph_config_default(cfg, dim, dp, H);
-  if (o->assess_numerics) wl_plan_default_numerics(&cfg->prm);
+  if (o->assess_numerics) {
+    wl_plan_default_numerics(&cfg->prm);
+    cfg->prm.expected_speed = 2.0 * sqrt(cfg->prm.g * H); /* Ritter's front: c0 by the Mach rule */
+  }
   if (o->coefh > 0) cfg->prm.coefh = o->coefh;
   cfg->prm.shift_coef = o->shift;
   cfg->prm.boundary = (enum wl_sph_boundary)o->boundary;

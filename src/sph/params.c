@@ -52,6 +52,8 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
              WL_SPH_COEFSOUND_MAX);
     return bad(err, "coefsound", prm->coefsound, range);
   }
+  if (!(prm->expected_speed >= 0) || !isfinite(prm->expected_speed))
+    return bad(err, "expected_speed", prm->expected_speed, "must be >= 0 m/s (0: none known)");
   if (!(prm->h_max > 0) || !isfinite(prm->h_max))
     return bad(err, "h_max", prm->h_max, "must be > 0 m (the largest water depth)");
   if (!(prm->rho0 > 0)) return bad(err, "rho0", prm->rho0, "must be > 0 kg/m^3");
@@ -113,7 +115,8 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
   const int dim = prm->dim;
   const double gamma = 7.0;
   const double h = prm->coefh * sqrt((double)dim) * prm->dp;
-  const double c0 = prm->coefsound * sqrt(prm->g * prm->h_max);
+  const double c0 = fmax(prm->coefsound * sqrt(prm->g * prm->h_max),
+                         WL_SPH_MACH_FACTOR * prm->expected_speed);
   const double B = c0 * c0 * prm->rho0 / gamma;
   const double aD = wl_sph_kernel_norm(dim, h);
   k->dim = dim;

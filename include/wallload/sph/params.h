@@ -68,6 +68,15 @@ enum wl_sph_integrator {
 #define WL_SPH_DELTA_MAX 1.0
 #define WL_SPH_VERLET_STEPS_MAX 1000
 
+/* Weak compressibility holds density variations to about Ma^2: c0 is kept
+ * at least this many times the largest expected flow speed (Ma <= 0.1,
+ * Monaghan 1994). For a dam break of height H, whose front runs at
+ * 2 sqrt(g H) (Ritter), it gives c0 = 20 sqrt(g H): DualSPHysics'
+ * dam-break setting. At coefsound 10 (Ma 0.2 at the front) the 3D dam
+ * break of `wallload bench` left the density range at the end-wall impact
+ * (t = 1.15 s, H100, 2026-11-25) and the 2D one at its splash-down. */
+#define WL_SPH_MACH_FACTOR 10.0
+
 /* Run parameters; wl_sph_params_default fills DualSPHysics' defaults. */
 struct wl_sph_params {
   int dim;                  /* 2 (x, z) or 3 (x, y, z); gravity along the last axis */
@@ -75,6 +84,10 @@ struct wl_sph_params {
   double coefh;             /* h = coefh sqrt(dim) dp [-]; default 1 */
   double coefsound;         /* c0 = coefsound sqrt(g h_max) [-]; default 10 */
   double h_max;             /* largest water depth, for c0 [m] */
+  double expected_speed;    /* the largest flow speed the scene is known to reach [m/s]
+                               (a dam break's front, 2 sqrt(g H)); c0 is raised to
+                               WL_SPH_MACH_FACTOR times it where coefsound's is lower.
+                               0: none known */
   double rho0;              /* reference density [kg/m^3]; default 1000 */
   double g;                 /* gravity magnitude [m/s^2]; default 9.81 */
   enum wl_sph_visc visc;    /* default artificial */
