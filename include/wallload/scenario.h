@@ -23,6 +23,13 @@ enum {
   WL_SCENARIO_MAX_BED = 16,
   WL_SCENARIO_MAX_GAUGES = 32,
   WL_SCENARIO_MAX_LEVELS = 8,
+  /* Reader limits (wl_scenario_parse): a scenario is a few kilobytes and
+   * nests its collections 3 deep (loads.solitary; a list of maps under
+   * bathymetry or gauges; resolution.convergence). libyaml has no nesting
+   * limit of its own, and its scanner's cost grows with the square of the
+   * flow nesting ('[' '{'): 7 s for 50000 levels. */
+  WL_SCENARIO_MAX_BYTES = 1 << 20,
+  WL_SCENARIO_MAX_DEPTH = 64,
 };
 
 /* One scalar of the scenario: number with unit, enumeration choice or text. */
@@ -135,9 +142,22 @@ void wl_scenario_clear(struct wl_scenario *s);
  * On failure *s may be half-filled; call wl_scenario_clear. */
 enum wl_status wl_scenario_load(const char *path, struct wl_scenario *s, struct wl_error *err);
 
-/* Same, from text in memory (`path` is used in messages only). */
+/* Same, from text in memory (`path` is used in messages only). Text of
+ * more than WL_SCENARIO_MAX_BYTES, or YAML nested deeper than
+ * WL_SCENARIO_MAX_DEPTH collections, is refused with WL_EINPUT at its
+ * line and column before the document is built. */
 enum wl_status wl_scenario_parse(const char *path, const char *text, size_t len,
                                  struct wl_scenario *s, struct wl_error *err);
+
+/* WL_OK unless the YAML text nests collections (flow or block, in any of
+ * its documents) deeper than max_depth: then WL_EINPUT, "PATH:LINE:COL:
+ * YAML nested deeper than N levels; HINT" at the collection that goes one
+ * level too deep. Malformed YAML is not judged here (WL_OK: the loader
+ * reports it). One pass of libyaml's event parser, stopped at the first
+ * level too deep, so its cost stays linear in the text; for any YAML read
+ * with yaml_parser_load (report templates too). */
+enum wl_status wl_yaml_check_depth(const char *path, const char *text, size_t len,
+                                   int max_depth, const char *hint, struct wl_error *err);
 
 /* Write the resolved scenario, every key with its SI value, the user's value
  * and unit beside it, and "default" where it was not given. */

@@ -592,10 +592,67 @@ void wl_scenario_clear(struct wl_scenario *s) {
   memset(s, 0, sizeof *s);
 }
 
+/* Line and column (1-based; the column in characters, not bytes) of byte
+ * `offset` of text. */
+static void text_position(const char *text, size_t len, size_t offset, int *line, int *col) {
+  *line = 1, *col = 1;
+  for (size_t b = 0; b < offset && b < len; b++) {
+    if (text[b] == '\n') (*line)++, *col = 1;
+    else if (((unsigned char)text[b] & 0xC0) != 0x80) (*col)++; /* not a continuation byte */
+  }
+}
+
+enum wl_status wl_yaml_check_depth(const char *path, const char *text, size_t len,
+                                   int max_depth, const char *hint, struct wl_error *err) {
+  /* Events, not a document: the scanner reads ahead of the parser only
+   * while a simple key is possible (one line, 1024 characters), so
+   * stopping at the first level too deep bounds the work however deep the
+   * text goes on. */
+  yaml_parser_t parser;
+  if (!yaml_parser_initialize(&parser))
+    return wl_error_set(err, WL_ENOMEM, "%s: cannot initialise the YAML parser", path);
+  yaml_parser_set_input_string(&parser, (const unsigned char *)text, len);
+  enum wl_status st = WL_OK;
+  int depth = 0, done = 0;
+  while (!done && st == WL_OK) {
+    yaml_event_t ev;
+    if (!yaml_parser_parse(&parser, &ev)) break; /* malformed: the loader says where */
+    switch (ev.type) {
+    case YAML_SEQUENCE_START_EVENT:
+    case YAML_MAPPING_START_EVENT:
+      if (++depth > max_depth)
+        st = wl_error_set(err, WL_EINPUT, "%s:%d:%d: YAML nested deeper than %d levels%s%s", path,
+                          (int)ev.start_mark.line + 1, (int)ev.start_mark.column + 1, max_depth,
+                          hint && hint[0] ? "; " : "", hint ? hint : "");
+      break;
+    case YAML_SEQUENCE_END_EVENT:
+    case YAML_MAPPING_END_EVENT: depth--; break;
+    case YAML_STREAM_END_EVENT: done = 1; break;
+    default: break;
+    }
+    yaml_event_delete(&ev);
+  }
+  yaml_parser_delete(&parser);
+  return st;
+}
+
 enum wl_status wl_scenario_parse(const char *path, const char *text, size_t len,
                                  struct wl_scenario *s, struct wl_error *err) {
   wl_scenario_clear(s);
   snprintf(s->path, sizeof s->path, "%s", path);
+  /* Reader limits, before libyaml builds anything (scenario.h). */
+  if (len > WL_SCENARIO_MAX_BYTES) {
+    int line, col;
+    text_position(text, len, WL_SCENARIO_MAX_BYTES, &line, &col);
+    return wl_error_set(err, WL_EINPUT,
+                        "%s:%d:%d: YAML document larger than 1 MiB (it goes on past byte %d "
+                        "here); a scenario needs a few kilobytes",
+                        path, line, col, WL_SCENARIO_MAX_BYTES);
+  }
+  enum wl_status depth_st =
+      wl_yaml_check_depth(path, text, len, WL_SCENARIO_MAX_DEPTH,
+                          "a scenario needs at most 3 (a list of maps under bathymetry or gauges)", err);
+  if (depth_st != WL_OK) return depth_st;
   s->text = malloc(len + 1);
   if (!s->text) return wl_error_set(err, WL_ENOMEM, "%s: no memory for the file's text", path);
   memcpy(s->text, text, len);
@@ -616,11 +673,7 @@ enum wl_status wl_scenario_parse(const char *path, const char *text, size_t len,
     if (parser.error == YAML_READER_ERROR) {
       /* the reader (bad UTF-8, a NUL or control byte) gives a byte offset,
        * not a mark: its line and column from the text */
-      line = 1, col = 1;
-      for (size_t b = 0; b < parser.problem_offset && b < len; b++) {
-        if (s->text[b] == '\n') line++, col = 1;
-        else if (((unsigned char)s->text[b] & 0xC0) != 0x80) col++; /* not a continuation byte */
-      }
+      text_position(s->text, len, parser.problem_offset, &line, &col);
     }
     enum wl_status st = wl_error_set(
         err, WL_EINPUT, "%s:%d:%d: malformed YAML: %s%s", path, line, col,
@@ -668,15 +721,15 @@ enum wl_status wl_scenario_load(const char *path, struct wl_scenario *s, struct 
     fclose(f);
     return wl_error_set(err, WL_ENOMEM, "%s: no memory to read the file", path);
   }
+  /* At most one byte past WL_SCENARIO_MAX_BYTES is read (a device such as
+   * /dev/zero never ends): wl_scenario_parse refuses the excess with its
+   * position. */
+  const size_t most = (size_t)WL_SCENARIO_MAX_BYTES + 1;
   size_t got;
-  while ((got = fread(buf + len, 1, cap - len, f)) > 0) {
+  while (len < most && (got = fread(buf + len, 1, cap - len < most - len ? cap - len : most - len,
+                                    f)) > 0) {
     len += got;
-    if (len == cap) {
-      if (cap > ((size_t)64 << 20)) {
-        free(buf);
-        fclose(f);
-        return wl_error_set(err, WL_EINPUT, "%s: larger than 64 MiB; not a scenario file", path);
-      }
+    if (len == cap && len < most) {
       char *bigger = realloc(buf, cap * 2);
       if (!bigger) {
         free(buf);
