@@ -8,12 +8,15 @@
 #          comes with gcc).
 # Tests:   poppler-utils (pdfinfo, pdftotext, pdftoppm check the PDF report), python3
 #          (the command-line tests read summary.json and the CSV files with it).
+# Fuzzing: clang (clang-14), libclang-rt-14-dev (libFuzzer and the sanitizer runtimes
+#          for clang: libclang_rt.fuzzer-x86_64.a; clang only recommends it) and
+#          libomp-14-dev (OpenMP for clang: omp.h, libomp) for scripts/fuzz.sh.
 # CUDA is optional: where nvcc is on the PATH or in /usr/local/cuda, the CUDA backend
 # is compiled; it is never installed from here.
 set -eu
 
 packages="build-essential cmake pkg-config libgsl-dev libyaml-dev libcairo2-dev
-libpango1.0-dev libhdf5-dev poppler-utils python3"
+libpango1.0-dev libhdf5-dev poppler-utils python3 clang libclang-rt-14-dev libomp-14-dev"
 
 missing=""
 for p in $packages; do

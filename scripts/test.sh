@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # test.sh: build and run the whole test suite twice: a Release build, then a
-# build with AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/).
+# build with AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/), then a
+# minute of fuzzing of the scenario reader (scripts/fuzz.sh 60, build-fuzz/).
 # GPU tests report "skipped" where no GPU is present.
 #   scripts/test.sh --accuracy   runs only the accuracy tests (label "accuracy"),
 #                                the validation cases the solver does not meet yet.
@@ -26,3 +27,5 @@ cmake --build build-asan -j "$jobs"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   LSAN_OPTIONS=suppressions="$PWD/tests/lsan.supp" \
   WL_TEST_QUICK=1 ctest --test-dir build-asan --output-on-failure -j "$jobs" -LE "accuracy|extended|long"
+echo "== Fuzzing the parse-validate-plan path (libFuzzer, ASan+UBSan), 60 s"
+scripts/fuzz.sh 60
