@@ -25,11 +25,13 @@ enum {
   WL_SCENARIO_MAX_LEVELS = 8,
   /* Reader limits (wl_scenario_parse): a scenario is a few kilobytes and
    * nests its collections 3 deep (loads.solitary; a list of maps under
-   * bathymetry or gauges; resolution.convergence). libyaml has no nesting
-   * limit of its own, and its scanner's cost grows with the square of the
-   * flow nesting ('[' '{'): 7 s for 50000 levels. */
+   * bathymetry or gauges; resolution.convergence). libyaml has no limits of
+   * its own, and its cost grows with the square of the flow nesting ('['
+   * '{': 7 s for 50000 levels) and of the anchors of a document (&name:
+   * 22 s for 95000 in 0.9 MiB). */
   WL_SCENARIO_MAX_BYTES = 1 << 20,
   WL_SCENARIO_MAX_DEPTH = 64,
+  WL_SCENARIO_MAX_ANCHORS = 256,
 };
 
 /* One scalar of the scenario: number with unit, enumeration choice or text. */
@@ -143,21 +145,25 @@ void wl_scenario_clear(struct wl_scenario *s);
 enum wl_status wl_scenario_load(const char *path, struct wl_scenario *s, struct wl_error *err);
 
 /* Same, from text in memory (`path` is used in messages only). Text of
- * more than WL_SCENARIO_MAX_BYTES, or YAML nested deeper than
- * WL_SCENARIO_MAX_DEPTH collections, is refused with WL_EINPUT at its
- * line and column before the document is built. */
+ * more than WL_SCENARIO_MAX_BYTES, YAML nested deeper than
+ * WL_SCENARIO_MAX_DEPTH collections or with more than
+ * WL_SCENARIO_MAX_ANCHORS anchors in a document is refused with WL_EINPUT
+ * at its line and column, before the document is built. */
 enum wl_status wl_scenario_parse(const char *path, const char *text, size_t len,
                                  struct wl_scenario *s, struct wl_error *err);
 
 /* WL_OK unless the YAML text nests collections (flow or block, in any of
- * its documents) deeper than max_depth: then WL_EINPUT, "PATH:LINE:COL:
- * YAML nested deeper than N levels; HINT" at the collection that goes one
- * level too deep. Malformed YAML is not judged here (WL_OK: the loader
- * reports it). One pass of libyaml's event parser, stopped at the first
- * level too deep, so its cost stays linear in the text; for any YAML read
+ * its documents) deeper than max_depth, or one of its documents has more
+ * than max_anchors anchors (&name): then WL_EINPUT, "PATH:LINE:COL: YAML
+ * nested deeper than N levels; HINT" at the collection that goes one level
+ * too deep, or "PATH:LINE:COL: YAML with more than N anchors ..." at the
+ * anchor one too many. Malformed YAML is not judged here (WL_OK: the
+ * loader reports it). One pass of libyaml's event parser, stopped at the
+ * first excess, so its cost stays linear in the text; for any YAML read
  * with yaml_parser_load (report templates too). */
-enum wl_status wl_yaml_check_depth(const char *path, const char *text, size_t len,
-                                   int max_depth, const char *hint, struct wl_error *err);
+enum wl_status wl_yaml_check_limits(const char *path, const char *text, size_t len,
+                                    int max_depth, int max_anchors, const char *hint,
+                                    struct wl_error *err);
 
 /* Write the resolved scenario, every key with its SI value, the user's value
  * and unit beside it, and "default" where it was not given. */
