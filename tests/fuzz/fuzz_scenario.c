@@ -23,11 +23,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
  * here), and once again for every level of a convergence ladder: a check
  * of 37 s (tests/fuzz/findings/01_exact_solitary_ladder.yaml). The target
  * links with -Wl,--wrap=wl_waves_exact_solitary: the real solver runs, on
- * 1024 modes (the same code; the note's digits change a little), and its
- * last result is kept for the same H/h, as the ladder's levels share it.
- * It is a pure function of (eps, n_modes), so nothing else changes; its
- * accuracy is test_waves' business. WL_FUZZ_EXACT_MODES=N sets the modes
- * (16384: what check computes). */
+ * 1024 modes (the same code; the note's digits change a little), and the
+ * results of the last 64 values of H/h are kept (the ladder's levels share
+ * one; the fuzzer's mutations come back to a few). It is a pure function
+ * of (eps, n_modes), so nothing else changes; its accuracy is test_waves'
+ * business. WL_FUZZ_EXACT_MODES=N sets the modes (16384: what check
+ * computes). */
 enum wl_status __real_wl_waves_exact_solitary(double eps, int n_modes,
                                               struct wl_solitary_exact *out,
                                               struct wl_error *err);
@@ -35,31 +36,37 @@ enum wl_status __wrap_wl_waves_exact_solitary(double eps, int n_modes,
                                               struct wl_solitary_exact *out,
                                               struct wl_error *err);
 
+enum { EXACT_CACHE = 64 };
+
 enum wl_status __wrap_wl_waves_exact_solitary(double eps, int n_modes,
                                               struct wl_solitary_exact *out,
                                               struct wl_error *err) {
-  static int modes;
+  static int modes, n_kept, next;
   static struct {
-    int valid;
     double eps;
     enum wl_status st;
     struct wl_solitary_exact ex;
-    struct wl_error err;
-  } last;
+    char msg[WL_ERROR_MSG_MAX];
+  } kept[EXACT_CACHE];
   if (!modes) {
     const char *env = getenv("WL_FUZZ_EXACT_MODES");
     modes = env && atoi(env) > 0 ? atoi(env) : 1024;
   }
   (void)n_modes;
-  if (!last.valid || memcmp(&last.eps, &eps, sizeof eps) != 0) {
-    wl_error_clear(&last.err);
-    last.st = __real_wl_waves_exact_solitary(eps, modes, &last.ex, &last.err);
-    last.eps = eps;
-    last.valid = 1;
+  int i = 0;
+  while (i < n_kept && memcmp(&kept[i].eps, &eps, sizeof eps) != 0) i++;
+  if (i == n_kept) {
+    i = n_kept < EXACT_CACHE ? n_kept++ : next;
+    next = (i + 1) % EXACT_CACHE;
+    struct wl_error e;
+    wl_error_clear(&e);
+    kept[i].st = __real_wl_waves_exact_solitary(eps, modes, &kept[i].ex, &e);
+    kept[i].eps = eps;
+    snprintf(kept[i].msg, sizeof kept[i].msg, "%s", e.msg);
   }
-  *out = last.ex;
-  if (last.st != WL_OK) wl_error_set(err, last.st, "%s", last.err.msg);
-  return last.st;
+  *out = kept[i].ex;
+  if (kept[i].st != WL_OK) wl_error_set(err, kept[i].st, "%s", kept[i].msg);
+  return kept[i].st;
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
