@@ -12,7 +12,15 @@
  *
  * Every file is written atomically. An unstable or interrupted case keeps
  * its results up to the stop, and its status says where and why it stopped;
- * the other cases still run (after an interruption, none does).
+ * the other cases still run (after an interruption, none does). After each
+ * case the files above move into place together (the snapshots with the
+ * results that describe them), and result files of the directory that the
+ * new set lacks (a previous run's report.pdf, a case's CSV and snapshot
+ * files) are removed, so the directory holds one run's files, never two
+ * runs' mixed; report.pdf is then rendered again. A write the disk refuses
+ * (WL_EIO: a full disk, a file-size limit) leaves the previous set as it
+ * was (or, after an earlier case of the run moved its files into place,
+ * that case's files and their report), and no temporary file.
  *
  * Convergence ladder. When the scenario has resolution.convergence (dp
  * factors, decreasing, e.g. [1, 0.71, 0.5]), every load case runs at each
@@ -114,6 +122,11 @@ struct wl_case_result {
   struct wl_flume flume;    /* geometry, probes, gauges */
   struct wl_record rec;
   struct wl_case_loads loads;
+  /* wl_assess_run's particle snapshots move into place with the results
+   * that describe them: bit 0 (1) particles_<case>.h5.tmp and bit 1 (2)
+   * particles_<case>.xmf.tmp are written complete and waiting; bits 2 and 3
+   * (4, 8) say the same files were moved into place by this run. */
+  int snapshot_files;
 };
 
 enum { WL_ASSESS_MAX_LEVELS = WL_SCENARIO_MAX_LEVELS };

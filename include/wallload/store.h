@@ -38,6 +38,10 @@ struct wl_store_batch {
   char path[WL_STORE_BATCH_MAX][1024]; /* final names; each written as path.tmp */
 };
 void wl_store_batch_init(struct wl_store_batch *b);
+/* Add path (its path.tmp written complete earlier, e.g. by a batch that
+ * was not committed) to b. WL_EIO (and path.tmp removed) when b is full. */
+enum wl_status wl_store_batch_add(struct wl_store_batch *b, const char *path,
+                                  struct wl_error *err);
 /* Rename every file of the batch into place (in the order added) and sync
  * the directory. WL_EIO when a rename fails (the files after it are
  * dropped). The batch is empty afterwards. */
@@ -113,6 +117,12 @@ struct wl_snapshot_ref {
 enum wl_status wl_store_write_xdmf(const char *xmf_path, const char *h5_name,
                                    const struct wl_snapshot_ref *snaps, size_t n_snaps,
                                    struct wl_error *err);
+
+/* wl_store_write_xdmf into batch b (written to xmf_path.tmp, moved at the
+ * batch's commit). */
+enum wl_status wl_store_write_xdmf_batch(const char *xmf_path, const char *h5_name,
+                                         const struct wl_snapshot_ref *snaps, size_t n_snaps,
+                                         struct wl_store_batch *b, struct wl_error *err);
 
 /* Write `text` to `path` atomically (temp file + fsync + rename); for JSON
  * and CSV. */

@@ -346,7 +346,7 @@ enum wl_status wl_assess_machine(const struct wl_scenario *s, const struct wl_as
 /* Run one case into c (its flume already built). Returns the run's status;
  * the record holds what was sampled before any stop. */
 static enum wl_status run_case(const struct wl_assess_opts *opts,
-                               const struct wl_backend_ops *ops, const char *snap_path,
+                               const struct wl_backend_ops *ops, const char *snap_path, int defer,
                                struct wl_case_result *c, struct wl_error *err) {
   struct run_ctx rc;
   memset(&rc, 0, sizeof rc);
@@ -364,6 +364,15 @@ static enum wl_status run_case(const struct wl_assess_opts *opts,
     st = wl_sph_sim_set_motion(sim, WL_FLUME_BODY_PADDLE, &m, err);
   }
   if (!st) st = wl_sph_probe_alloc(&rc.probe, &c->flume.cfg, err);
+  char xmf[1100] = "";
+  if (snap_path) {
+    snprintf(xmf, sizeof xmf, "%.*s.xmf", (int)(strlen(snap_path) - 3), snap_path);
+    if (defer) { /* an earlier level's index, never to be moved into place */
+      char old[1110];
+      snprintf(old, sizeof old, "%s.tmp", xmf);
+      remove(old);
+    }
+  }
   if (!st && snap_path) st = wl_store_open(snap_path, &rc.snaps, err);
   if (!st) {
     const struct wl_sph_const *k = wl_sph_sim_const(sim);
@@ -388,14 +397,23 @@ static enum wl_status run_case(const struct wl_assess_opts *opts,
   }
   c->runtime_s = now_s() - start;
   if (rc.snaps) {
+    /* the snapshots so far (a stopped run's too), unless writing them failed */
     struct wl_error serr;
     wl_error_clear(&serr);
-    enum wl_status s2 = wl_store_close(rc.snaps, 1, &serr);
-    if (!s2 && rc.n_refs) {
-      char xmf[1100];
-      snprintf(xmf, sizeof xmf, "%.*s.xmf", (int)(strlen(snap_path) - 3), snap_path);
-      const char *base = strrchr(snap_path, '/');
-      s2 = wl_store_write_xdmf(xmf, base ? base + 1 : snap_path, rc.refs, rc.n_refs, &serr);
+    const char *base = strrchr(snap_path, '/');
+    base = base ? base + 1 : snap_path;
+    enum wl_status s2;
+    if (defer) {
+      struct wl_store_batch b;
+      wl_store_batch_init(&b);
+      s2 = wl_store_close_batch(rc.snaps, &b, &serr);
+      if (!s2) c->snapshot_files |= 1;
+      if (!s2 && rc.n_refs) s2 = wl_store_write_xdmf_batch(xmf, base, rc.refs, rc.n_refs, &b, &serr);
+      if (!s2 && rc.n_refs) c->snapshot_files |= 2;
+      /* not committed here: write_results moves them with the results */
+    } else {
+      s2 = wl_store_close(rc.snaps, 1, &serr);
+      if (!s2 && rc.n_refs) s2 = wl_store_write_xdmf(xmf, base, rc.refs, rc.n_refs, &serr);
     }
     if (s2 && !st) {
       *err = serr;
@@ -444,6 +462,13 @@ enum wl_status wl_assess_case(const struct wl_scenario *s, const struct wl_plan 
                               enum wl_load_case load, const struct wl_assess_opts *opts,
                               const char *snapshots, struct wl_case_result *c,
                               struct wl_error *err) {
+  return assess_case(s, plan, load, opts, snapshots, 0, c, err);
+}
+
+enum wl_status assess_case(const struct wl_scenario *s, const struct wl_plan *plan,
+                           enum wl_load_case load, const struct wl_assess_opts *opts,
+                           const char *snapshots, int defer, struct wl_case_result *c,
+                           struct wl_error *err) {
   memset(c, 0, sizeof *c);
   c->load = load;
   snprintf(c->name, sizeof c->name, "%s", wl_flume_case_name(load));
@@ -466,7 +491,7 @@ enum wl_status wl_assess_case(const struct wl_scenario *s, const struct wl_plan 
   c->rec.n_probes = c->flume.n_probes;
   const struct wl_backend_ops *ops;
   if ((st = pick_backend(s, opts, &ops, err))) return st;
-  c->status = run_case(opts, ops, snapshots, c, err);
+  c->status = run_case(opts, ops, snapshots, defer, c, err);
   if (c->status != WL_OK) snprintf(c->message, sizeof c->message, "%s", err->msg);
   struct wl_error lerr;
   wl_error_clear(&lerr);
@@ -513,11 +538,12 @@ static enum wl_status lock_dir(const char *dir, char *lock, size_t size, struct 
     if (fd >= 0) {
       char pid[32];
       const int len = snprintf(pid, sizeof pid, "%ld\n", (long)getpid());
-      const int ok = write(fd, pid, (size_t)len) == len;
-      close(fd);
-      if (!ok) {
+      const ssize_t w = write(fd, pid, (size_t)len);
+      int e = w == len ? 0 : w < 0 ? errno : ENOSPC; /* a short write: the disk is full */
+      if (close(fd) != 0 && !e) e = errno;
+      if (e) {
         unlink(lock);
-        return wl_error_set(err, WL_EIO, "%s: cannot write the lock file", lock);
+        return wl_error_set(err, WL_EIO, "%s: cannot write the lock file: %s", lock, strerror(e));
       }
       break;
     }
@@ -590,6 +616,19 @@ static void add_failure(struct wl_error *err, const char *what, const char *msg)
   snprintf(err->msg, sizeof err->msg, "%s", buf);
 }
 
+/* Remove a case's snapshot files still waiting under their temporary
+ * names (snapshot_files bits 0-1). */
+static void discard_snapshots(const char *dir, struct wl_case_result *c) {
+  static const char *const ext[2] = {"h5", "xmf"};
+  for (int k = 0; k < 2; k++)
+    if (c->snapshot_files & (1 << k)) {
+      char tmp[1200];
+      snprintf(tmp, sizeof tmp, "%s/particles_%s.%s.tmp", dir, c->name, ext[k]);
+      remove(tmp);
+    }
+  c->snapshot_files &= ~3;
+}
+
 /* A stop signal (SIGINT, SIGTERM, SIGHUP: opts->interrupted) stops the
  * stepping at the next output time (on_output); what was computed is then
  * written, and the report rendered, as after any stop. One that comes after
@@ -598,7 +637,12 @@ static void add_failure(struct wl_error *err, const char *what, const char *msg)
  * report is rendered lets it finish. Every file written is complete; the
  * run returns WL_EINTERRUPTED, its message naming the signal and the phase
  * ("while stepping", "while writing the results", "while rendering the
- * report"). */
+ * report").
+ *
+ * A write the disk refuses (WL_EIO: a full disk) is not followed by more
+ * writing of that case: the files of the previous run (or of this run's
+ * earlier cases) stay as they were, and the report is rendered only when
+ * this run moved results into place. */
 static enum wl_status assess_locked(const struct wl_scenario *s, const struct wl_plan *plan,
                                     const struct wl_assess_opts *opts,
                                     struct wl_assess_result *res, struct wl_error *err) {
@@ -610,6 +654,7 @@ static enum wl_status assess_locked(const struct wl_scenario *s, const struct wl
   enum wl_status overall = WL_OK;
   struct wl_error first;
   wl_error_clear(&first);
+  int committed = 0; /* results moved into place by this run */
   for (int i = 0; i < n; i++) {
     struct wl_case_result *c = &res->cases[res->n_cases++];
     char snap[1100];
@@ -618,10 +663,21 @@ static enum wl_status assess_locked(const struct wl_scenario *s, const struct wl
     wl_error_clear(&cerr);
     enum wl_status cst = s->resolution.n_levels > 0
                              ? ladder_run(s, plan, todo[i], opts, snap, c, &res->conv[i], &cerr)
-                             : wl_assess_case(s, plan, todo[i], opts, snap, c, &cerr);
+                             : assess_case(s, plan, todo[i], opts, snap, 1, c, &cerr);
     res->threads = c->flume.cfg.n_threads > 0 ? c->flume.cfg.n_threads : omp_get_max_threads();
-    if (cst != WL_OK && cst != WL_EUNSTABLE && cst != WL_EINTERRUPTED && c->rec.n == 0) {
-      *err = cerr; /* the case could not even start */
+    if (cst != WL_OK && cst != WL_EUNSTABLE && cst != WL_EINTERRUPTED &&
+        (c->rec.n == 0 || cst == WL_EIO)) {
+      discard_snapshots(res->out_dir, c);
+      if (cst == WL_EIO && committed) { /* this run's earlier cases stay, with their report */
+        if (overall == WL_OK) overall = cst;
+        wl_error_set(&first, cst, "case %s stopped at t = %.4g s of %.4g s: %s", c->name,
+                     c->t_reached, c->t_end, cerr.msg);
+        break;
+      }
+      *err = cerr; /* the case could not even start, or the disk refused its files */
+      if (cst == WL_EIO && c->rec.n)
+        wl_error_prefix(err, "case %s stopped at t = %.4g s of %.4g s: ", c->name, c->t_reached,
+                        c->t_end);
       return cst;
     }
     if (cst != WL_OK && overall == WL_OK) {
@@ -630,10 +686,17 @@ static enum wl_status assess_locked(const struct wl_scenario *s, const struct wl
                    c->t_reached, c->t_end, cerr.msg);
     }
     /* Write after every case, so a later failure keeps this one. */
-    if ((st = write_results(s, plan, res, err))) {
+    st = write_results(s, plan, res, err);
+    for (int k = 0; k < res->n_cases; k++) { /* moved into place, or removed */
+      struct wl_case_result *ck = &res->cases[k];
+      ck->snapshot_files = st ? ck->snapshot_files & ~3
+                              : (ck->snapshot_files & ~3) | (ck->snapshot_files & 3) << 2;
+    }
+    if (st) {
       if (overall != WL_OK) add_failure(err, "before that", first.msg);
       return st;
     }
+    committed = 1;
     if (c->status == WL_EINTERRUPTED) break;
     if (c->status != WL_OK && c->status != WL_EUNSTABLE) break;
     const int sig = stop_signal(opts);

@@ -12,6 +12,15 @@ void case_loads_clear(struct wl_case_loads *l);
 /* Filtered series, impulse, peaks and run-up of a case's record. */
 enum wl_status case_loads_compute(struct wl_case_result *c, struct wl_error *err);
 
+/* assess.c */
+/* wl_assess_case; with `defer` the snapshot files are left complete under
+ * their temporary names (c->snapshot_files), for write_results to move
+ * into place with the results. */
+enum wl_status assess_case(const struct wl_scenario *s, const struct wl_plan *plan,
+                           enum wl_load_case load, const struct wl_assess_opts *opts,
+                           const char *snapshots, int defer, struct wl_case_result *c,
+                           struct wl_error *err);
+
 /* ladder.c */
 /* Run load case `load` on the scenario's convergence ladder into c (the last
  * level run, as wl_assess_case fills it) and cv (every level, the estimate
@@ -26,7 +35,13 @@ enum wl_status ladder_run(const struct wl_scenario *s, const struct wl_plan *pla
 void ladder_estimate(struct wl_assess_convergence *cv);
 
 /* output.c */
-/* Write results.h5, summary.json and the CSV files of all cases. */
+/* Write results.h5, summary.json and the CSV files of all cases, and move
+ * them into place together with the cases' waiting snapshot files
+ * (snapshot_files bits 0-1); nothing moves when any of them fails (the
+ * waiting files are then removed). After the move, the directory's result
+ * files that the new set does not have are removed (report.pdf, which is
+ * rendered again; a case's files the run did not write), so that the
+ * directory never mixes two runs. */
 enum wl_status write_results(const struct wl_scenario *s, const struct wl_plan *plan,
                              const struct wl_assess_result *res, struct wl_error *err);
 

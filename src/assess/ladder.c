@@ -160,7 +160,7 @@ enum wl_status ladder_run(const struct wl_scenario *s, const struct wl_plan *pla
     }
     if (k > 0) wl_assess_case_clear(c); /* the finer level replaces the coarser one */
     /* every level writes the snapshots file; the last level run keeps it */
-    st = wl_assess_case(sl, pl, load, &lo, snapshots, c, err);
+    st = assess_case(sl, pl, load, &lo, snapshots, 1, c, err);
     level_from_case(lv, c);
     cv->n_levels = k + 1;
     ladder_estimate(cv);

@@ -568,6 +568,44 @@ static enum wl_status write_case_h5(struct wl_store *h5, const struct wl_case_re
   return st;
 }
 
+/* After new results moved into place: remove the result files of the
+ * directory that they do not include (a previous run's), so that no file
+ * describes another run: report.pdf (rendered again next), the CSV and
+ * snapshot files of a case not in res, the snapshot files of a case whose
+ * snapshots this run did not write, convergence.csv without a ladder. */
+static void remove_stale(const struct wl_assess_result *res, int ladder) {
+  char path[700];
+  snprintf(path, sizeof path, "%s/report.pdf", res->out_dir);
+  remove(path);
+  if (!ladder) {
+    snprintf(path, sizeof path, "%s/convergence.csv", res->out_dir);
+    remove(path);
+  }
+  static const enum wl_load_case loads[] = {WL_CASE_SOLITARY, WL_CASE_EXPLOSION, WL_CASE_STILL};
+  for (size_t l = 0; l < sizeof loads / sizeof loads[0]; l++) {
+    const char *name = wl_flume_case_name(loads[l]);
+    const struct wl_case_result *c = NULL;
+    for (int i = 0; i < res->n_cases; i++)
+      if (res->cases[i].load == loads[l]) c = &res->cases[i];
+    /* this run's snapshot files: waiting (moved just now) or moved before */
+    const int mine = c ? (c->snapshot_files | c->snapshot_files >> 2) & 3 : 0;
+    if (!c) {
+      snprintf(path, sizeof path, "%s/%s_wall.csv", res->out_dir, name);
+      remove(path);
+      snprintf(path, sizeof path, "%s/%s_gauges.csv", res->out_dir, name);
+      remove(path);
+    }
+    if (!(mine & 1)) {
+      snprintf(path, sizeof path, "%s/particles_%s.h5", res->out_dir, name);
+      remove(path);
+    }
+    if (!(mine & 2)) {
+      snprintf(path, sizeof path, "%s/particles_%s.xmf", res->out_dir, name);
+      remove(path);
+    }
+  }
+}
+
 enum wl_status write_results(const struct wl_scenario *s, const struct wl_plan *plan,
                              const struct wl_assess_result *res, struct wl_error *err) {
   char path[600];
@@ -590,11 +628,20 @@ enum wl_status write_results(const struct wl_scenario *s, const struct wl_plan *
   for (int i = 0; !st && i < res->n_cases; i++)
     if (res->conv[i].n_levels) st = write_convergence_h5(h5, &res->cases[i], &res->conv[i], err);
   /* Every file is written to its temporary name first; they move into
-   * place together once all are complete, so a failure on any of them (a
-   * full disk) leaves the previous results.h5, CSV files and summary.json
-   * as they were. summary.json moves last. */
+   * place together once all are complete (the cases' waiting snapshot
+   * files first, summary.json last), so a failure on any of them (a full
+   * disk) leaves the previous files as they were. */
   struct wl_store_batch batch;
   wl_store_batch_init(&batch);
+  for (int i = 0; i < res->n_cases; i++) {
+    static const char *const ext[2] = {"h5", "xmf"};
+    for (int k = 0; k < 2; k++) {
+      if (!(res->cases[i].snapshot_files & (1 << k))) continue;
+      snprintf(path, sizeof path, "%s/particles_%s.%s", res->out_dir, res->cases[i].name, ext[k]);
+      enum wl_status sa = wl_store_batch_add(&batch, path, err);
+      if (!st) st = sa;
+    }
+  }
   if (st) {
     wl_store_close(h5, 0, NULL);
   } else {
@@ -609,5 +656,7 @@ enum wl_status write_results(const struct wl_scenario *s, const struct wl_plan *
     wl_store_batch_abort(&batch);
     return st;
   }
-  return wl_store_batch_commit(&batch, err);
+  if ((st = wl_store_batch_commit(&batch, err))) return st;
+  remove_stale(res, ladder);
+  return WL_OK;
 }

@@ -186,6 +186,13 @@ static enum wl_status batch_add(struct wl_store_batch *b, const char *path, cons
   return WL_OK;
 }
 
+enum wl_status wl_store_batch_add(struct wl_store_batch *b, const char *path,
+                                  struct wl_error *err) {
+  char tmp[1040];
+  snprintf(tmp, sizeof tmp, "%s.tmp", path);
+  return batch_add(b, path, tmp, err);
+}
+
 enum wl_status wl_store_batch_commit(struct wl_store_batch *b, struct wl_error *err) {
   enum wl_status st = WL_OK;
   int i = 0;
@@ -557,6 +564,12 @@ enum wl_status wl_store_write_text(const char *path, const char *text, size_t le
 enum wl_status wl_store_write_xdmf(const char *xmf_path, const char *h5_name,
                                    const struct wl_snapshot_ref *snaps, size_t n_snaps,
                                    struct wl_error *err) {
+  return wl_store_write_xdmf_batch(xmf_path, h5_name, snaps, n_snaps, NULL, err);
+}
+
+enum wl_status wl_store_write_xdmf_batch(const char *xmf_path, const char *h5_name,
+                                         const struct wl_snapshot_ref *snaps, size_t n_snaps,
+                                         struct wl_store_batch *b, struct wl_error *err) {
   size_t cap = 1024 + n_snaps * (2048 + 6 * strlen(h5_name)), len = 0;
   char *buf = malloc(cap);
   if (!buf) return wl_error_set(err, WL_ENOMEM, "%s: no memory for the XDMF index", xmf_path);
@@ -587,7 +600,7 @@ enum wl_status wl_store_write_xdmf(const char *xmf_path, const char *h5_name,
   }
   PUT("  </Grid>\n </Domain>\n</Xdmf>\n");
 #undef PUT
-  enum wl_status st = wl_store_write_text(xmf_path, buf, len, err);
+  enum wl_status st = write_text(xmf_path, buf, len, b, err);
   free(buf);
   return st;
 }
