@@ -57,76 +57,13 @@ sed '/explosion:/d; s/scenario: tiny/scenario: many/; s/dp: 0.02 m/dp: 0.05 m/;
      s/output_interval: 0.02 s/output_interval: 0.00005 s/' tiny.yaml > many.yaml
 T_END=0.05 # seconds of flume time: a few snapshots, a fraction of a second in Release
 
-# valid.py DIR: every final file in DIR complete, no temporary file or lock
-# left, and the files one run's (no CSV or snapshot file of a case that
-# summary.json does not list). Prints the problems; exit 1 when there are any.
-cat > valid.py <<'PY'
-import csv, json, os, struct, subprocess, sys
-import xml.etree.ElementTree as ET
-d = sys.argv[1]
-probs = []
-names = sorted(os.listdir(d)) if os.path.isdir(d) else []
-for n in names:
-    p = os.path.join(d, n)
-    try:
-        if n.endswith('.tmp') or n.endswith('.part'):
-            probs.append('temporary file left: ' + n)
-        elif n == '.wallload.lock':
-            probs.append('lock file left')
-        elif n.endswith('.json'):
-            json.load(open(p))
-        elif n.endswith('.csv'):
-            text = open(p).read()
-            if not text.endswith('\n'):
-                raise ValueError('last line not ended')
-            rows = list(csv.reader(text.splitlines()))
-            if not rows or any(len(r) != len(rows[0]) for r in rows):
-                raise ValueError('rows of unequal length')
-        elif n.endswith('.xmf'):
-            if ET.parse(p).getroot().tag != 'Xdmf':
-                raise ValueError('not XDMF')
-        elif n.endswith('.h5'):
-            # HDF5 superblock: signature, and the end-of-file address it
-            # records within the file's size (a cut file fails this)
-            b = open(p, 'rb').read(64)
-            if b[:8] != b'\x89HDF\r\n\x1a\n':
-                raise ValueError('no HDF5 signature')
-            so = b[13] if b[8] in (0, 1) else b[9]
-            off = 40 if b[8] in (0, 1) else 28
-            if b[8] == 1:
-                off += 4
-            eof = int.from_bytes(b[off:off + so], 'little')
-            if eof > os.path.getsize(p):
-                raise ValueError('superblock says %d bytes, the file has %d' % (eof, os.path.getsize(p)))
-        elif n.endswith('.pdf'):
-            r = subprocess.run(['pdfinfo', p], capture_output=True, text=True)
-            if r.returncode != 0 or 'Pages:' not in r.stdout:
-                raise ValueError('pdfinfo: ' + r.stderr.strip())
-    except Exception as e:
-        probs.append('%s: %s' % (n, e))
-if 'summary.json' in names:
-    try:
-        cases = set(json.load(open(os.path.join(d, 'summary.json')))['cases'])
-        for n in names:
-            for stem in ('_wall.csv', '_gauges.csv'):
-                if n.endswith(stem) and n[:-len(stem)] not in cases:
-                    probs.append('%s: a case summary.json does not list' % n)
-            if n.startswith('particles_') and n.split('_', 1)[1].rsplit('.', 1)[0] not in cases:
-                probs.append('%s: a case summary.json does not list' % n)
-    except Exception as e:
-        probs.append('summary.json: %s' % e)
-elif any(n.endswith('.csv') or n == 'results.h5' or n == 'report.pdf' for n in names):
-    probs.append('results without summary.json: ' + ' '.join(names))
-print('; '.join(probs))
-sys.exit(1 if probs else 0)
-PY
-
-# check_dir DIR LABEL: valid.py, and results.h5 read back by `wallload
+# check_dir DIR LABEL: tests/results_dir_check.py (every final file
+# complete, no temporary file or lock left, one run's files), and results.h5 read back by `wallload
 # report` (HDF5 opens it; a particle file that does not open shows in the
 # rendered text as "(HDF5)"); h5dump -H on every HDF5 file where installed.
 check_dir() {
   local d=$1 label=$2 p f
-  p=$(python3 "$work/valid.py" "$d" 2>&1) || { bad "$label: $p"; return 1; }
+  p=$(python3 "$src/tests/results_dir_check.py" "$d" 2>&1) || { bad "$label: $p"; return 1; }
   if [ -e "$d/results.h5" ]; then
     if ! "$bin" report "$d/results.h5" -o "$work/check.pdf" >/dev/null 2>"$work/check.err"; then
       bad "$label: results.h5 does not read back: $(cat "$work/check.err")"; return 1
