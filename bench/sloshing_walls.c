@@ -1,5 +1,5 @@
 /* sloshing_walls.c: which walls make the first sloshing mode fast
- * (README, "Known accuracy gaps"). A 3D tank L = 1 m long, h = 0.5 m deep,
+ * (docs/history/2026-11-25-walls.md). A 3D tank L = 1 m long, h = 0.5 m deep,
  * W wide, the linear mode eta = a cos(k s) sin(omega t), k = pi/L, started
  * from a flat surface with its potential-flow velocity (as `wallload
  * validate sloshing`), a = 0.01 m, assess's default numerics, CPU backend:

@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # sloshing_walls.sh: the first sloshing mode between mirror-plane end walls
 # with dynamic-boundary side walls W apart, and between dynamic-boundary
-# end walls (see sloshing_walls.c). Results go to stdout (README, "Known
-# accuracy gaps", quotes them). At h/dp = 10 (the default) about 2 minutes
-# on one core; the README's h/dp = 20 rows are NH=20 WIDTHS=2, about 6
-# minutes a run on 16 cores (THREADS=16).
+# end walls (see sloshing_walls.c). Results go to stdout
+# (docs/history/2026-11-25-walls.md says what they showed). At h/dp = 10
+# (the default) about 2 minutes on one core;
+# h/dp = 20 runs are NH=20 WIDTHS=2, about 6 minutes a run on 16 cores
+# (THREADS=16).
 #
 #   usage: [NH=h/dp] [WIDTHS="W ..."] [THREADS=N] bench/sloshing_walls.sh [BUILD_DIR]
 #          (defaults: NH=10, WIDTHS="0.25 0.5 1 2", THREADS=1, build)

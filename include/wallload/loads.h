@@ -1,6 +1,7 @@
 /* loads.h: wall pressure -> force, moment, impulse, filtered series, peaks.
  *
- * Definitions used everywhere in wallload (README, report, summary.json):
+ * Definitions used everywhere in wallload (docs/outputs.md, README, report,
+ * summary.json):
  *  - force F(t) [N/m]: horizontal force per metre of wall, the integral of
  *    the face pressure over the wall's height (2D), or the wall's total /
  *    its width (3D).

@@ -118,7 +118,7 @@ struct wl_plan {
  * dissipates: H/h = 0.4 on h = 0.2 m at dp = 0.01 m lost 22 % of its energy
  * in 2 s with coefh 1 and artificial viscosity, 12.5 % with coefh 1 and
  * laminar viscosity, 2.5 % with coefh 1.2 and laminar viscosity (measured
- * 2026-11-23, README "Numerical choices"). 3D's coefh 1 already gives
+ * 2026-11-23, docs/numerics.md). 3D's coefh 1 already gives
  * h = 1.73 dp. */
 /* Most particles (fluid and boundary) one case may have: the backends
  * index particles with int, and 2^30 particles need about 160 GiB on the

@@ -39,7 +39,7 @@
 
 /* Fill prm with DualSPHysics' defaults (what the benchmarks against it and
  * the engine's own tests use; a scenario's defaults differ, see
- * WL_PLAN_COEFH_2D and README "Numerical choices"): coefh 1,
+ * WL_PLAN_COEFH_2D and docs/numerics.md): coefh 1,
  * coefsound 10, rho0 1000, g 9.81, artificial viscosity alpha 0.01,
  * Fourtakas diffusion (full) delta 0.1, CFL 0.2, guard thresholds. dim: 2 or
  * 3; dp: spacing [m]; h_max: largest water depth [m] (for c0). */

@@ -454,7 +454,8 @@ enum { TILE = 64 };
  * very uneven (the particles at the top of a cell have the row above in
  * reach, those at the bottom hardly any of it), and the warp runs as long
  * as its busiest lane (ncu: 10.5 of 32 lanes busy in the evaluations,
- * 3.6e8 evaluations/s on the H100, BENCHMARKS.md). Here the batch's marked
+ * 3.6e8 evaluations/s on the H100, docs/history/BENCHMARKS-history.md).
+ * Here the batch's marked
  * pairs, listed particle by particle in lane order (particle l's pairs at
  * positions excl_l .. excl_l + count_l - 1, ascending candidate), are split
  * into 32 equal blocks of consecutive positions, one per lane. A lane
@@ -480,7 +481,7 @@ enum { TILE = 64 };
  * done with its particles waited for its slowest sibling: with blocks of
  * four warps ncu sampled 15 % of the warps of the loop waiting at the exit
  * barrier, slots no new block could use. WL_SPLIT_THREADS = 128 builds the
- * four-warp blocks for comparison (BENCHMARKS.md). */
+ * four-warp blocks for comparison (docs/history/BENCHMARKS-history.md). */
 #ifndef WL_SPLIT_THREADS
 #define WL_SPLIT_THREADS 32
 #endif
