@@ -149,7 +149,8 @@ static inline void wl_plan_default_numerics(struct wl_sph_params *prm) {
 
 /* Reference throughput used for runtime estimates [force evaluations/s per
  * particle; a symplectic step has two, a Verlet step one]; the measured
- * values are in BENCHMARKS.md: scenarios/seawall.yaml on the 2-core
+ * values are in BENCHMARKS.md ("The main job on this machine") and
+ * docs/history/BENCHMARKS-history.md: scenarios/seawall.yaml on the 2-core
  * development machine, 2 threads, 2026-11-24: 1.01e7 and 1.05e7 with the
  * symplectic integrator (solitary and explosion cases), 8.9e6 and 9.6e6
  * with Verlet (whose step is one evaluation plus the same sort); after the
@@ -160,7 +161,8 @@ static inline void wl_plan_default_numerics(struct wl_sph_params *prm) {
  * ran at about 3e5 symplectic particle-steps/s on the 2-core development
  * machine. */
 #define WL_PLAN_CPU_RATE_3D 6.0e5
-/* The CUDA backend on an H100 (BENCHMARKS.md): a symplectic step of a
+/* The CUDA backend on an H100 (docs/history/BENCHMARKS-history.md, "assess
+ * end to end"): a symplectic step of a
  * flume of 9k-38k particles took about 215 us whatever its size (launches
  * and the per-step synchronisation, not the force loop, set the time: the
  * seawall's cases ran 48k and 58k steps in 10.3 and 12.4 s, 2026-11-23); a
