@@ -62,8 +62,8 @@ static const struct wl_key domain_keys[] = {
      "symmetric about it)"},
     {"side_walls", KT_ENUM, WL_DIM_NONE, OFF(domain.side_walls), side_wall_choices, NONE, NONE, 0,
      0, "free-slip", NULL, NO_FLAG, 0,
-     "3D: free-slip (mirror planes: a smooth wall, no boundary particles) or particles (dynamic "
-     "boundary particles, which hold the fluid a gap away and disturb a narrow flume)"},
+     "3D: free-slip (mirror planes: a smooth wall, no boundary particles) or particles (boundary "
+     "particles under numerics.boundary, which drag on a narrow flume)"},
     {0}};
 
 static const struct wl_key wall_keys[] = {

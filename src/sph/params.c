@@ -11,7 +11,7 @@ void wl_sph_params_default(struct wl_sph_params *prm, int dim, double dp, double
   prm->dim = dim;
   prm->dp = dp;
   prm->coefh = 1.0;     /* DualSPHysics examples: h = sqrt(dim) dp */
-  prm->coefsound = 10;  /* DualSPHysics default; dam breaks may want 20 (see BENCHMARKS.md) */
+  prm->coefsound = 10;  /* DualSPHysics default; faster flows: expected_speed (the Mach rule) */
   prm->h_max = h_max;
   prm->rho0 = 1000;
   prm->g = 9.81;
