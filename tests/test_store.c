@@ -1,10 +1,16 @@
 #define _POSIX_C_SOURCE 200809L /* mkdtemp */
 /* test_store.c: results files are complete or absent (temp + rename), and
  * what is written reads back through the plain HDF5 API (an independent
- * reader) with its units. */
+ * reader) with its units. Writes the system refuses (a file-size limit,
+ * RLIMIT_FSIZE with SIGXFSZ ignored: EFBIG) are WL_EIO naming the file and
+ * the reason, leave no temporary file and the previous file, and closing
+ * such an HDF5 file cannot crash (issue 18: SIGSEGV in HDF5's exit handler
+ * after a failed close); batches move all their files or none. */
 #include <hdf5.h>
+#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -14,6 +20,126 @@
 static int exists(const char *p) {
   struct stat st;
   return stat(p, &st) == 0;
+}
+
+static long file_size(const char *p) {
+  struct stat st;
+  return stat(p, &st) == 0 ? (long)st.st_size : -1;
+}
+
+/* Files over `bytes` are refused with EFBIG ("File too large"); 0 lifts it. */
+static void limit_files(rlim_t bytes) {
+  static struct rlimit saved;
+  static int have = 0;
+  if (!have) {
+    getrlimit(RLIMIT_FSIZE, &saved);
+    have = 1;
+  }
+  struct rlimit r = saved;
+  if (bytes) r.rlim_cur = bytes;
+  setrlimit(RLIMIT_FSIZE, &r);
+}
+
+/* A results file over the limit: every way the refusal can surface (the
+ * write, the flush, the close) is WL_EIO with the reason, and the close
+ * removes the temporary file and keeps the previous final one. */
+static void refused(const char *dir, const char *path, const char *tmp) {
+  signal(SIGXFSZ, SIG_IGN);
+  const long before = file_size(path);
+  enum { N = 100000 }; /* 800 kB */
+  double *big = calloc(N, sizeof *big);
+  struct wl_error err;
+  struct wl_store *s;
+  for (int way = 0; big && way < 3; way++) {
+    wl_error_clear(&err);
+    limit_files(way == 2 ? 8 * 1024 : 64 * 1024);
+    CHECK_TRUE(wl_store_open(path, &s, &err) == WL_OK, "open under a file-size limit");
+    enum wl_status st = WL_OK;
+    /* ways: 0 many small datasets, 1 one large one (refused at a write), 2 metadata
+     * within the limit until written out (refused at the close) */
+    if (way == 0) {
+      char name[64];
+      for (int k = 0; k < 40 && !st; k++) {
+        snprintf(name, sizeof name, "cases/a/v%02d", k);
+        st = wl_store_write_vector(s, name, big, 4000, "1", "filler", &err);
+      }
+      if (!st) st = wl_store_flush(s, &err);
+    } else if (way == 1) { /* one large dataset */
+      st = wl_store_write_vector(s, "big", big, N, "1", "filler", &err);
+    }
+    if (way == 2) { /* metadata in HDF5's cache, over the limit only when written out */
+      char name[64], text[200];
+      memset(text, 'm', sizeof text - 1);
+      text[sizeof text - 1] = '\0';
+      st = wl_store_write_vector(s, "small", big, 100, "1", "filler", &err);
+      for (int k = 0; k < 300 && !st; k++) {
+        snprintf(name, sizeof name, "note%03d", k);
+        st = wl_store_attr_text(s, "/", name, text, &err);
+      }
+    }
+    enum wl_status cs = wl_store_close(s, 1, way == 2 ? &err : &(struct wl_error){0});
+    limit_files(0);
+    printf("  refused write, way %d: status %d, close %d: %s\n", way, st, cs, err.msg);
+    if (way == 2 && st == WL_OK) st = cs;
+    CHECK_TRUE(st == WL_EIO && cs == WL_EIO && strstr(err.msg, "File too large") &&
+                   strstr(err.msg, path),
+               "a refused write is WL_EIO naming the file and the system's reason");
+    CHECK_TRUE(!exists(tmp) && file_size(path) == before,
+               "no temporary file left; the previous file as it was");
+  }
+  free(big);
+  /* text files */
+  char txt[300], ttmp[310];
+  snprintf(txt, sizeof txt, "%s/summary.json", dir);
+  snprintf(ttmp, sizeof ttmp, "%s.tmp", txt);
+  wl_error_clear(&err);
+  CHECK_TRUE(wl_store_write_text(txt, "{}\n", 3, &err) == WL_OK, "a small text file");
+  size_t n = 200000;
+  char *text = malloc(n);
+  if (text) {
+    memset(text, 'x', n);
+    limit_files(64 * 1024);
+    enum wl_status st = wl_store_write_text(txt, text, n, &err);
+    limit_files(0);
+    CHECK_TRUE(st == WL_EIO && strstr(err.msg, "File too large") && strstr(err.msg, txt),
+               "a refused text write is WL_EIO naming the file and the reason");
+    CHECK_TRUE(!exists(ttmp) && file_size(txt) == 3, "the previous text file kept, no .tmp");
+  }
+  free(text);
+  remove(txt);
+  signal(SIGXFSZ, SIG_DFL);
+}
+
+/* Batches: every file moves, or none. */
+static void batches(const char *dir) {
+  char a[300], b[300], h[300], t[310];
+  snprintf(a, sizeof a, "%s/a.csv", dir);
+  snprintf(b, sizeof b, "%s/b.json", dir);
+  snprintf(h, sizeof h, "%s/r.h5", dir);
+  struct wl_error err;
+  wl_error_clear(&err);
+  struct wl_store_batch batch;
+  wl_store_batch_init(&batch);
+  struct wl_store *s;
+  double v[3] = {1, 2, 3};
+  int ok = wl_store_open(h, &s, &err) == WL_OK &&
+           wl_store_write_vector(s, "v", v, 3, "1", "v", &err) == WL_OK &&
+           wl_store_close_batch(s, &batch, &err) == WL_OK &&
+           wl_store_write_text_batch(a, "x\n1\n", 4, &batch, &err) == WL_OK &&
+           wl_store_write_text_batch(b, "{}\n", 3, &batch, &err) == WL_OK;
+  CHECK_TRUE(ok && !exists(a) && !exists(b) && !exists(h), "a batch: nothing in place before the commit");
+  CHECK_TRUE(wl_store_batch_commit(&batch, &err) == WL_OK && exists(a) && exists(b) && exists(h),
+             "a batch: all in place after it");
+  snprintf(t, sizeof t, "%s.tmp", a);
+  CHECK_TRUE(!exists(t), "a batch: no temporary file left");
+  /* a second batch that fails half-way: the first one's files stay */
+  wl_store_batch_init(&batch);
+  ok = wl_store_write_text_batch(a, "y\n2\n3\n", 6, &batch, &err) == WL_OK;
+  wl_store_batch_abort(&batch);
+  CHECK_TRUE(ok && file_size(a) == 4 && !exists(t), "an aborted batch: the previous files, no .tmp");
+  remove(a);
+  remove(b);
+  remove(h);
 }
 
 int main(void) {
@@ -81,7 +207,11 @@ int main(void) {
                  strstr(buf, "particles.h5:snapshots/0001/position") && strstr(buf, "</Xdmf>"),
              "xdmf names both snapshots and is closed");
   remove(xmf);
+
+  refused(dir, path, tmp);
+  batches(dir);
   remove(path);
   rmdir(dir);
+  /* the exit itself (HDF5's library state after refused writes) must not crash */
   return TEST_RESULT();
 }
