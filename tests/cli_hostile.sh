@@ -199,6 +199,9 @@ chk "report template missing" 2 "nosuch.yaml" tmissing.yaml
 printf 'title: [unclosed\n' > badtemplate.yaml
 mk tbad 'report: {template: badtemplate.yaml}'
 chk "report template malformed" 2 "badtemplate.yaml:[0-9]+:[0-9]+: " tbad.yaml
+python3 -c "print('title: ' + '['*50000 + ']'*50000)" > deeptemplate.yaml
+mk tdeep 'report: {template: deeptemplate.yaml}'
+chk "report template nested 50000 deep" 2 "deeptemplate.yaml:1:71: YAML nested deeper than 64 levels; a report template" tdeep.yaml
 
 # ---- the command line ----------------------------------------------------------
 row "no command" 2 "usage: wallload COMMAND" "$bin"

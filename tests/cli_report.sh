@@ -5,7 +5,7 @@
 # impulse, formatted as the peaks table formats them (3 significant digits,
 # kN/m and kN s/m), appear in the case's row. Also the exit codes: a
 # template with an unknown section -> 2 (and no PDF), a missing results file
-# -> 1, bad usage -> 2. Reads the PDF with poppler's pdftotext and pdfinfo.
+# (a path the user gave: bad input) -> 2 with the system's reason, bad usage -> 2. Reads the PDF with poppler's pdftotext and pdfinfo.
 set -u
 bin=$1; src=$2
 fail=0
@@ -152,7 +152,7 @@ grep -q "in the scenario's units (US customary" ft.txt && grep -q "\[lbf/ft\]" f
 grep -q "lbf/ft" x.txt && bad "a scenario in metres got a lbf/ft table" || ok "no lbf/ft table for a scenario in metres"
 
 out=$("$bin" report missing/results.h5 -o y.pdf 2>&1); rc=$?
-[ $rc = 1 ] && grep -q "cannot open" <<<"$out" && ok "missing results -> 1: $out" || bad "missing results -> $rc: $out"
+[ $rc = 2 ] && grep -q "cannot open the results file: No such file or directory" <<<"$out" && ok "missing results -> 2: $out" || bad "missing results -> $rc: $out"
 out=$("$bin" report 2>&1); rc=$?
 [ $rc = 2 ] && ok "no arguments -> 2" || bad "no arguments -> $rc: $out"
 out=$("$bin" report run/results.h5 --bogus 2>&1); rc=$?

@@ -754,9 +754,9 @@ static void test_errors(void) {
   wl_error_clear(&err);
   CHECK_TRUE(wl_report_render(NULL, NULL, pdf, &err) == WL_EUSAGE, "no results path: WL_EUSAGE");
   wl_error_clear(&err);
-  CHECK_TRUE(wl_report_render("/nonexistent/results.h5", NULL, pdf, &err) == WL_EIO &&
+  CHECK_TRUE(wl_report_render("/nonexistent/results.h5", NULL, pdf, &err) == WL_EINPUT &&
                  contains(err.msg, "/nonexistent/results.h5"),
-             "missing results: WL_EIO naming the file");
+             "missing results: bad input naming the file");
   snprintf(path, sizeof path, "%s/not.h5", tmpdir);
   FILE *f = fopen(path, "w");
   if (f)

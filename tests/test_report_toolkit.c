@@ -484,9 +484,10 @@ static void test_bad_templates(void) {
   struct wl_error err;
   wl_report_template_init(&t);
   wl_error_clear(&err);
-  CHECK_TRUE(wl_report_template_load("/nonexistent/dir/t.yaml", &t, &err) == WL_EIO &&
-                 contains(err.msg, "/nonexistent/dir/t.yaml"),
-             "missing template file: WL_EIO naming it");
+  CHECK_TRUE(wl_report_template_load("/nonexistent/dir/t.yaml", &t, &err) == WL_EINPUT &&
+                 contains(err.msg, "/nonexistent/dir/t.yaml") &&
+                 contains(err.msg, "No such file or directory"),
+             "missing template file: bad input naming it, with the system's reason");
   CHECK_TRUE(strcmp(wl_report_section_type_name(WL_REPORT_SECTION_DESIGN_FORMULAE),
                     "design_formulae") == 0 &&
                  strcmp(wl_report_section_type_name(WL_REPORT_SECTION_COUNT), "?") == 0,

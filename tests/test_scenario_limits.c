@@ -13,6 +13,7 @@
 
 #include "testutil.h"
 #include "wallload/scenario.h"
+#include "wallload/yaml_limits.h"
 
 static double now_s(void) {
   struct timespec t;

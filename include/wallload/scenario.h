@@ -152,19 +152,6 @@ enum wl_status wl_scenario_load(const char *path, struct wl_scenario *s, struct 
 enum wl_status wl_scenario_parse(const char *path, const char *text, size_t len,
                                  struct wl_scenario *s, struct wl_error *err);
 
-/* WL_OK unless the YAML text nests collections (flow or block, in any of
- * its documents) deeper than max_depth, or one of its documents has more
- * than max_anchors anchors (&name): then WL_EINPUT, "PATH:LINE:COL: YAML
- * nested deeper than N levels; HINT" at the collection that goes one level
- * too deep, or "PATH:LINE:COL: YAML with more than N anchors ..." at the
- * anchor one too many. Malformed YAML is not judged here (WL_OK: the
- * loader reports it). One pass of libyaml's event parser, stopped at the
- * first excess, so its cost stays linear in the text; for any YAML read
- * with yaml_parser_load (report templates too). */
-enum wl_status wl_yaml_check_limits(const char *path, const char *text, size_t len,
-                                    int max_depth, int max_anchors, const char *hint,
-                                    struct wl_error *err);
-
 /* Write the resolved scenario, every key with its SI value, the user's value
  * and unit beside it, and "default" where it was not given. */
 void wl_scenario_write_resolved(const struct wl_scenario *s, FILE *out);

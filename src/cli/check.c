@@ -128,6 +128,7 @@ static int budget_option(const char *cmd, int argc, char **argv, int *i, double 
  * would take and the budget. The machine's verdict goes to `out` (may be
  * NULL). */
 static enum wl_status judge_run(const struct wl_scenario *s, const struct wl_plan *plan,
+                                const struct wl_plan_cost *cost,
                                 const struct wl_assess_opts *opts, double budget_s,
                                 int force_large, FILE *out, struct wl_error *err) {
   enum wl_status st = WL_OK;
@@ -136,9 +137,7 @@ static enum wl_status judge_run(const struct wl_scenario *s, const struct wl_pla
   if ((st = wl_assess_machine(s, opts, &m, err))) return st;
   if (budget_s > 0) m.budget_seconds = budget_s;
   m.force_large = force_large;
-  struct wl_plan_cost cost;
-  ladder_cost(s, plan, 1, NULL, &cost);
-  st = wl_plan_fits(s, &cost, &m, err);
+  st = wl_plan_fits(s, cost, &m, err);
   if (out && st == WL_OK) {
     fprintf(out, "\nMachine: %s%s, %.3g GiB of memory; runtime budget %.3g h%s: fits\n",
             m.device_bytes > 0 ? "GPU " : "CPU", m.device_bytes > 0 ? m.device_name : "",
@@ -187,7 +186,7 @@ enum wl_status wl_cli_check(int argc, char **argv, struct wl_error *err) {
   ladder_cost(&s, &plan, 0, stdout, &cost);
   /* printed in full above; a case that cannot run, or a run beyond the
    * machine or the budget, makes the scenario invalid */
-  st = judge_run(&s, &plan, &opts, budget_s, force_large, stdout, err);
+  st = judge_run(&s, &plan, &cost, &opts, budget_s, force_large, stdout, err);
   wl_scenario_clear(&s);
   return st;
 }
@@ -341,7 +340,9 @@ enum wl_status wl_cli_assess(int argc, char **argv, struct wl_error *err) {
   struct wl_plan plan;
   enum wl_status st = load_and_plan(path, &s, &plan, err);
   if (st) return st;
-  if ((st = judge_run(&s, &plan, &opts, budget_s, force_large, NULL, err))) {
+  struct wl_plan_cost cost;
+  ladder_cost(&s, &plan, 1, NULL, &cost);
+  if ((st = judge_run(&s, &plan, &cost, &opts, budget_s, force_large, NULL, err))) {
     wl_scenario_clear(&s);
     return st;
   }
@@ -355,8 +356,6 @@ enum wl_status wl_cli_assess(int argc, char **argv, struct wl_error *err) {
       fprintf(stderr, "wallload: convergence ladder of %d levels, dp x", s.resolution.n_levels);
       for (int k = 0; k < s.resolution.n_levels; k++)
         fprintf(stderr, "%s %s", k ? "," : "", s.resolution.levels[k].text);
-      struct wl_plan_cost cost;
-      ladder_cost(&s, &plan, 1, NULL, &cost);
       fprintf(stderr, "; est. %.0f s on the CPU in all", cost.cpu_seconds);
       if (s.resolution.target_error.given)
         fprintf(stderr, "; stops once the estimated error is below %s",

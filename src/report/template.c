@@ -14,6 +14,7 @@
 #include <yaml.h>
 
 #include "wallload/units.h"
+#include "wallload/yaml_limits.h"
 
 #define EXAGGERATION_MAX 100.0 /* beyond this a sketch stops being one */
 #define DIGITS_MIN 2
@@ -628,6 +629,10 @@ enum wl_status wl_report_template_parse(const char *path, const char *text, size
   snprintf(t->path, sizeof t->path, "%s", path);
   snprintf(t->title, sizeof t->title, "Wave loads on a wall");
   snprintf(t->block.date, sizeof t->block.date, "auto");
+  /* depth 4: the root, its sections, a section, a section's list */
+  enum wl_status lst = wl_yaml_check_limits(path, text, len, WL_YAML_MAX_DEPTH, WL_YAML_MAX_ANCHORS,
+                                            "a report template needs at most 4", err);
+  if (lst) return lst;
   yaml_parser_t parser;
   yaml_document_t doc;
   if (!yaml_parser_initialize(&parser))

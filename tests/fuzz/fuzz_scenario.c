@@ -21,7 +21,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 /* The exact solitary wave: wl_plan_make computes it for a note whenever
  * H/h > 0.5, with 16384 Fourier modes (0.7 to 2 s in Release, twice that
  * here), and once again for every level of a convergence ladder: a check
- * of 37 s (tests/fuzz/findings/01_exact_solitary_ladder.yaml). The target
+ * of 37 s (tests/fuzz/regress/exact_solitary_ladder.yaml). The target
  * links with -Wl,--wrap=wl_waves_exact_solitary: the real solver runs, on
  * 1024 modes (the same code; the note's digits change a little), and the
  * results of the last 64 values of H/h are kept (the ladder's levels share
