@@ -17,6 +17,20 @@
 #include "testutil.h"
 #include "wallload/store.h"
 
+/* HDF5 1.10 loses its metadata accumulator's buffer (128 KiB, allocated in
+ * H5F__accum_write) when writing it out fails at a flush: a leak of the
+ * library's on that error path, once per refused file, not wallload's
+ * (store.c closes the file all the same). LeakSanitizer is told to ignore
+ * what is allocated around that refusal only. */
+#if defined(__SANITIZE_ADDRESS__)
+#include <sanitizer/lsan_interface.h>
+#define HDF5_ERROR_PATH_BEGIN() __lsan_disable()
+#define HDF5_ERROR_PATH_END() __lsan_enable()
+#else
+#define HDF5_ERROR_PATH_BEGIN() ((void)0)
+#define HDF5_ERROR_PATH_END() ((void)0)
+#endif
+
 static int exists(const char *p) {
   struct stat st;
   return stat(p, &st) == 0;
@@ -77,7 +91,9 @@ static void refused(const char *dir, const char *path, const char *tmp) {
         st = wl_store_attr_text(s, "/", name, text, &err);
       }
     }
+    if (way == 2) HDF5_ERROR_PATH_BEGIN();
     enum wl_status cs = wl_store_close(s, 1, way == 2 ? &err : &(struct wl_error){0});
+    if (way == 2) HDF5_ERROR_PATH_END();
     limit_files(0);
     printf("  refused write, way %d: status %d, close %d: %s\n", way, st, cs, err.msg);
     if (way == 2 && st == WL_OK) st = cs;
