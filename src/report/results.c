@@ -173,8 +173,9 @@ static double attr_double(hid_t obj, const char *name) {
 }
 
 /* Read dataset `path` (rank 1 or 2) as mem_type into a malloc'ed array.
- * Returns WL_OK with *data NULL when it does not exist; WL_EIO when it
- * cannot be read; WL_ENOMEM. */
+ * Returns WL_OK with *data NULL when it does not exist; WL_EINPUT when it
+ * is not what wallload writes (a damaged results file: the user's input);
+ * WL_EIO when it cannot be read; WL_ENOMEM. */
 static enum wl_status read_dataset(hid_t file, const char *file_name, const char *path,
                                    hid_t mem_type, size_t elem, void **data, size_t *rows,
                                    size_t *cols, struct wl_error *err) {
@@ -183,13 +184,14 @@ static enum wl_status read_dataset(hid_t file, const char *file_name, const char
     return WL_OK;
   hid_t d = H5Dopen2(file, path, H5P_DEFAULT);
   if (d < 0)
-    return wl_error_set(err, WL_EIO, "%s: %s: cannot open the dataset", file_name, path);
+    return wl_error_set(err, WL_EINPUT, "%s: %s: cannot open the dataset (a damaged results file)",
+                        file_name, path);
   hid_t sp = H5Dget_space(d);
   hsize_t dims[2] = {0, 1};
   int rank = sp >= 0 ? H5Sget_simple_extent_ndims(sp) : -1;
   enum wl_status st = WL_OK;
   if (rank < 1 || rank > 2 || H5Sget_simple_extent_dims(sp, dims, NULL) < 0) {
-    st = wl_error_set(err, WL_EIO, "%s: %s: found a dataset of rank %d; expected 1 or 2", file_name,
+    st = wl_error_set(err, WL_EINPUT, "%s: %s: found a dataset of rank %d; expected 1 or 2", file_name,
                       path, rank);
   } else {
     size_t count = (size_t)dims[0] * (size_t)(rank == 2 ? dims[1] : 1);
@@ -342,7 +344,8 @@ static enum wl_status read_case(hid_t file, const char *file_name, int index,
   c->present = 1;
   hid_t grp = H5Gopen2(file, g, H5P_DEFAULT);
   if (grp < 0)
-    return wl_error_set(err, WL_EIO, "%s: /%s: cannot open the group", file_name, g);
+    return wl_error_set(err, WL_EINPUT, "%s: /%s: cannot open the group (a damaged results file)",
+                        file_name, g);
   struct {
     const char *name;
     double *v;
@@ -455,7 +458,8 @@ static enum wl_status read_convergence(hid_t file, const char *file_name, int i,
     return WL_OK;
   hid_t grp = H5Gopen2(file, g, H5P_DEFAULT);
   if (grp < 0)
-    return wl_error_set(err, WL_EIO, "%s: /%s: cannot open the group", file_name, g);
+    return wl_error_set(err, WL_EINPUT, "%s: /%s: cannot open the group (a damaged results file)",
+                        file_name, g);
   cv->present = 1;
   struct {
     const char *name;
@@ -655,12 +659,14 @@ enum wl_status wl_report_snapshot_list(const char *path, struct wl_report_snapsh
   *refs = NULL, *n = 0;
   wl_store_hdf5_init();
   FILE *probe = fopen(path, "rb");
-  if (!probe)
-    return wl_error_set(err, WL_EIO, "%s: cannot open the particle snapshots", path);
+  if (!probe) /* named by the results file: a results set missing a file */
+    return wl_error_set(err, WL_EINPUT, "%s: cannot open the particle snapshots: %s", path,
+                        strerror(errno));
   fclose(probe);
   hid_t file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
   if (file < 0)
-    return wl_error_set(err, WL_EIO, "%s: cannot open the particle snapshots (HDF5)", path);
+    return wl_error_set(err, WL_EINPUT,
+                        "%s: cannot open the particle snapshots (HDF5: truncated or damaged)", path);
   enum wl_status st = WL_OK;
   hid_t g = exists(file, "snapshots") ? H5Gopen2(file, "snapshots", H5P_DEFAULT) : -1;
   H5G_info_t info;
@@ -703,7 +709,9 @@ enum wl_status wl_report_snapshot_read(const char *path, const char *group,
   wl_store_hdf5_init();
   hid_t file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
   if (file < 0)
-    return wl_error_set(err, WL_EIO, "%s: cannot open the particle snapshots", path);
+    return wl_error_set(err, WL_EINPUT,
+                        "%s: cannot open the particle snapshots (HDF5: missing, truncated or damaged)",
+                        path);
   char p[160];
   void *pos = NULL, *vq = NULL, *kd = NULL;
   size_t rows = 0, cols = 0, rq = 0, cq = 0, rk = 0, ck = 0;
@@ -721,7 +729,7 @@ enum wl_status wl_report_snapshot_read(const char *path, const char *group,
   }
   H5Fclose(file);
   if (!st && (!pos || cols < 2 || !vq || rq != rows || !kd || rk != rows))
-    st = wl_error_set(err, WL_EIO,
+    st = wl_error_set(err, WL_EINPUT,
                       "%s: %s: found incomplete particle data; expected position (n x 3), %s and "
                       "kind of equal length",
                       path, group, qname);
