@@ -209,6 +209,9 @@ enum wl_status wl_assess_run(const struct wl_scenario *s, const struct wl_plan *
 
 void wl_assess_result_clear(struct wl_assess_result *res);
 
+/* How messages name a stop signal: "SIGTERM", "SIGHUP", "the user (SIGINT)". */
+const char *wl_assess_stop_signal_name(int sig);
+
 /* The machine wl_assess_run would run s on with opts: the GPU and its
  * memory when it picks the CUDA backend, the host's physical memory, the
  * CPU threads, and the default runtime budget (WL_PLAN_BUDGET_DEFAULT_S).

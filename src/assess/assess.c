@@ -25,7 +25,7 @@
 
 
 /* The stop signal, as messages name it. */
-static const char *stop_signal_name(int sig) {
+const char *wl_assess_stop_signal_name(int sig) {
   return sig == SIGTERM ? "SIGTERM" : sig == SIGHUP ? "SIGHUP" : "the user (SIGINT)";
 }
 
@@ -206,7 +206,7 @@ static enum wl_status on_output(void *user, struct wl_sph_sim *sim, double t,
   struct wl_case_result *c = rc->c;
   if (rc->opts->interrupted && *rc->opts->interrupted)
     return wl_error_set(err, WL_EINTERRUPTED, "interrupted by %s while stepping, at t = %.4f s",
-                        stop_signal_name((int)*rc->opts->interrupted), t);
+                        wl_assess_stop_signal_name((int)*rc->opts->interrupted), t);
   const struct wl_particles *p = wl_sph_sim_particles(sim, err);
   if (!p) return err->status ? err->status : WL_EIO;
   enum wl_status st = wl_sph_probe_index(rc->probe, p, err);
@@ -706,7 +706,7 @@ static enum wl_status assess_locked(const struct wl_scenario *s, const struct wl
         wl_error_set(&first, WL_EINTERRUPTED,
                      "interrupted by %s while writing the results of case %s (they are "
                      "complete)%s%s%s",
-                     stop_signal_name(sig), c->name, i + 1 < n ? "; case " : "",
+                     wl_assess_stop_signal_name(sig), c->name, i + 1 < n ? "; case " : "",
                      i + 1 < n ? wl_flume_case_name(todo[i + 1]) : "", i + 1 < n ? " not run" : "");
       }
       break;
@@ -730,7 +730,7 @@ static enum wl_status assess_locked(const struct wl_scenario *s, const struct wl
   if (overall == WL_OK && sig) {
     overall = WL_EINTERRUPTED;
     wl_error_set(&first, WL_EINTERRUPTED,
-                 "interrupted by %s %s (the results and %s are complete)", stop_signal_name(sig),
+                 "interrupted by %s %s (the results and %s are complete)", wl_assess_stop_signal_name(sig),
                  sig_before ? "after the results were written" : "while rendering the report",
                  pdf);
   }

@@ -287,6 +287,9 @@ static void print_convergence(const struct wl_case_result *c,
   printf("    %s: %s\n", c->name, cv->note);
 }
 
+static enum wl_status assess_planned(const char *path, struct wl_assess_opts *opts_in, int quiet,
+                                     double budget_s, int force_large, struct wl_error *err);
+
 enum wl_status wl_cli_assess(int argc, char **argv, struct wl_error *err) {
   const char *path = NULL;
   struct wl_assess_opts opts = {0};
@@ -336,6 +339,24 @@ enum wl_status wl_cli_assess(int argc, char **argv, struct wl_error *err) {
     }
   }
   if (!path) return wl_error_set(err, WL_EUSAGE, "usage: wallload assess FILE.yaml [options]");
+  /* The stop signals are caught from here to the last line printed, so
+   * that no moment of a run is left to the default action (death with
+   * exit 143 and nothing said). */
+  static const int stop_signals[3] = {SIGINT, SIGTERM, SIGHUP};
+  struct sigaction sa, old[3];
+  memset(&sa, 0, sizeof sa);
+  sa.sa_handler = on_stop_signal;
+  for (int k = 0; k < 3; k++) sigaction(stop_signals[k], &sa, &old[k]);
+  opts.interrupted = &interrupted;
+  enum wl_status st = assess_planned(path, &opts, quiet, budget_s, force_large, err);
+  for (int k = 0; k < 3; k++) sigaction(stop_signals[k], &old[k], NULL);
+  return st;
+}
+
+/* wl_cli_assess after its options, with the stop signals caught. */
+static enum wl_status assess_planned(const char *path, struct wl_assess_opts *opts_in, int quiet,
+                                     double budget_s, int force_large, struct wl_error *err) {
+  struct wl_assess_opts opts = *opts_in;
   struct wl_scenario s;
   struct wl_plan plan;
   enum wl_status st = load_and_plan(path, &s, &plan, err);
@@ -345,6 +366,12 @@ enum wl_status wl_cli_assess(int argc, char **argv, struct wl_error *err) {
   if ((st = judge_run(&s, &plan, &cost, &opts, budget_s, force_large, NULL, err))) {
     wl_scenario_clear(&s);
     return st;
+  }
+  if (interrupted) {
+    wl_scenario_clear(&s);
+    return wl_error_set(err, WL_EINTERRUPTED,
+                        "interrupted by %s before the run started; nothing written",
+                        wl_assess_stop_signal_name(interrupted));
   }
   struct progress_state ps = {isatty(2), 0.0};
   if (!quiet) {
@@ -363,20 +390,17 @@ enum wl_status wl_cli_assess(int argc, char **argv, struct wl_error *err) {
       fputc('\n', stderr);
     }
   }
-  opts.interrupted = &interrupted;
-  static const int stop_signals[3] = {SIGINT, SIGTERM, SIGHUP};
-  struct sigaction sa, old[3];
-  memset(&sa, 0, sizeof sa);
-  sa.sa_handler = on_stop_signal;
-  for (int k = 0; k < 3; k++) sigaction(stop_signals[k], &sa, &old[k]);
   struct wl_assess_result res;
   st = wl_assess_run(&s, &plan, &opts, &res, err);
-  for (int k = 0; k < 3; k++) sigaction(stop_signals[k], &old[k], NULL);
   for (int i = 0; i < res.n_cases; i++) {
     print_case(&res.cases[i], &s);
     print_convergence(&res.cases[i], &res.conv[i]);
   }
   if (res.n_cases) printf("\nresults in %s/ (results.h5, summary.json, CSV, particle snapshots)\n", res.out_dir);
+  if (st == WL_OK && interrupted)
+    st = wl_error_set(err, WL_EINTERRUPTED,
+                      "interrupted by %s after the results were written (they are complete)",
+                      wl_assess_stop_signal_name(interrupted));
   wl_assess_result_clear(&res);
   wl_scenario_clear(&s);
   return st;

@@ -1,5 +1,7 @@
 /* main.c: the wallload command line. The only place that prints errors and
  * picks exit codes (0 ok, 1 run failure, 2 bad input or usage). */
+#include <errno.h>
+#include <signal.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -41,6 +43,9 @@ static void usage(FILE *out) {
 int main(int argc, char **argv) {
   /* GSL must report errors as status codes; the library checks every one. */
   gsl_set_error_handler_off();
+  /* a file-size limit is a refused write ("File too large", exit 1), not a
+   * death by SIGXFSZ */
+  signal(SIGXFSZ, SIG_IGN);
   struct wl_error err;
   wl_error_clear(&err);
   if (argc < 2) {
@@ -73,5 +78,11 @@ int main(int argc, char **argv) {
     return 2;
   }
   if (st != WL_OK) fprintf(stderr, "wallload: %s\n", err.msg);
-  return wl_error_exit_code(st);
+  int code = wl_error_exit_code(st);
+  /* what was printed (a case summary, check's listing) must have arrived */
+  if (fflush(stdout) != 0 || ferror(stdout)) {
+    fprintf(stderr, "wallload: standard output: %s\n", strerror(errno));
+    if (code == 0) code = 1;
+  }
+  return code;
 }
