@@ -185,7 +185,10 @@ enum wl_status wl_report_doc_open(const char *path, const struct wl_report_doc_i
   if (d->fd < 0) {
     const int e = errno;
     free(d);
-    return wl_error_set(err, WL_EIO, "%s: cannot create %s.part: %s", path, path, strerror(e));
+    /* a path the user chose that cannot hold a file is bad input; a full
+     * or failing disk is not */
+    return wl_error_set(err, e == ENOSPC || e == EIO || e == EDQUOT ? WL_EIO : WL_EINPUT,
+                        "%s: cannot create %s.part: %s", path, path, strerror(e));
   }
   d->surface = cairo_pdf_surface_create_for_stream(write_out, d, PAGE_W, PAGE_H);
   cairo_status_t cs = cairo_surface_status(d->surface);
