@@ -29,6 +29,10 @@ struct wl_store; /* an HDF5 file being written; opaque */
  * HDF5 call. Idempotent. */
 void wl_store_hdf5_init(void);
 
+/* fsync the directory holding path, so that a rename in it reaches the
+ * disk (best effort: the files themselves are synced before). */
+void wl_store_sync_dir_of(const char *path);
+
 /* Files written to their temporary names and moved into place together,
  * only when all of them were written: a failure on any one leaves every
  * previous file as it was. */

@@ -21,6 +21,7 @@
 
 #include "doc.h"
 #include "wallload/config.h"
+#include "wallload/store.h"
 
 #define CAPTION_ROOM (2.0 * LEADING * SIZE_SMALL + 6.0) /* room kept for a caption [pt] */
 #define RULE_GREY 0.55
@@ -104,24 +105,6 @@ static int close_out(struct wl_report_doc *d) {
   if (close(d->fd) != 0 && !d->io_errno && errno != EINTR) d->io_errno = errno;
   d->fd = -1;
   return d->io_errno ? -1 : 0;
-}
-
-/* fsync the directory of path, so that the rename reaches the disk (best
- * effort: the file itself is synced). */
-static void sync_dir_of(const char *path) {
-  char dir[1040];
-  snprintf(dir, sizeof dir, "%s", path);
-  char *slash = strrchr(dir, '/');
-  if (slash == dir)
-    dir[1] = '\0';
-  else if (slash)
-    *slash = '\0';
-  else
-    snprintf(dir, sizeof dir, ".");
-  const int fd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (fd < 0) return;
-  fsync(fd);
-  close(fd);
 }
 
 /* Remove the .part file (closing it first where it is open). */
@@ -254,7 +237,7 @@ enum wl_status wl_report_doc_finish(struct wl_report_doc *d, struct wl_error *er
   if (st == WL_OK && rename(d->tmp, d->path) != 0)
     st = wl_report_doc_fail(d, err, WL_EIO, "%s: cannot move %s into place: %s", d->path, d->tmp,
                             strerror(errno));
-  if (st == WL_OK) sync_dir_of(d->path);
+  if (st == WL_OK) wl_store_sync_dir_of(d->path);
   if (st != WL_OK) {
     discard_out(d);
     if (d->failed == WL_OK) d->failed = st;

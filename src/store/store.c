@@ -154,8 +154,7 @@ static int sync_path(const char *path) {
   return rc;
 }
 
-/* fsync the directory holding path (a rename in it reaches the disk). */
-static void sync_dir_of(const char *path) {
+void wl_store_sync_dir_of(const char *path) {
   char dir[1040];
   snprintf(dir, sizeof dir, "%s", path);
   char *slash = strrchr(dir, '/');
@@ -205,7 +204,7 @@ enum wl_status wl_store_batch_commit(struct wl_store_batch *b, struct wl_error *
       break;
     }
   }
-  if (i > 0) sync_dir_of(b->path[0]);
+  if (i > 0) wl_store_sync_dir_of(b->path[0]);
   for (; i < b->n; i++) { /* after a failed rename: the rest is dropped */
     char tmp[1040];
     snprintf(tmp, sizeof tmp, "%s.tmp", b->path[i]);
@@ -311,7 +310,7 @@ enum wl_status wl_store_close(struct wl_store *s, int commit, struct wl_error *e
                         strerror(errno));
       remove(s->tmp);
     } else {
-      sync_dir_of(s->path);
+      wl_store_sync_dir_of(s->path);
     }
   }
   free(s);
@@ -547,7 +546,7 @@ static enum wl_status write_text(const char *path, const char *text, size_t len,
     remove(tmp);
     return wl_error_set(err, WL_EIO, "%s: cannot move %s into place: %s", path, tmp, strerror(e));
   }
-  sync_dir_of(path);
+  wl_store_sync_dir_of(path);
   return WL_OK;
 }
 
