@@ -30,7 +30,7 @@
 
 enum {
   WL_VALIDATE_MAX_LEVELS = 6,
-  WL_VALIDATE_MAX_METRICS = 10,
+  WL_VALIDATE_MAX_METRICS = 20,
   WL_VALIDATE_NAME_MAX = 48,
 };
 
@@ -80,19 +80,29 @@ struct wl_validate_result {
   int pass;           /* every judged metric met at the finest level, every level ran */
   char verdict[512];  /* "pass", or which metric missed by how much */
   char integrator[16]; /* time integrator of the runs: "symplectic" or "verlet" */
+  char backend[16];    /* backend of the runs: "cpu" or "cuda" */
 };
 
 
 /* Progress after each level (the CLI prints it; the library never does). */
 typedef void (*wl_validate_level_fn)(void *user, const struct wl_validate_result *r, int level);
 
+/* Progress within a level's run (simulated time, steps/s, ETA; sph.h), about
+ * once a second of wall-clock time. */
+struct wl_sph_progress;
+typedef void (*wl_validate_progress_fn)(void *user, const char *case_name, int level,
+                                        const struct wl_sph_progress *pr);
+
 struct wl_validate_opts {
   int n_levels;              /* ladder length (default 3 when 0), 1..WL_VALIDATE_MAX_LEVELS */
   int quick;                 /* 1: each case's quick (coarse, short) ladder */
   int threads;               /* 0: OpenMP's default */
   int verlet;                /* 1: the Verlet integrator instead of the symplectic default */
+  const char *backend;       /* NULL or "cpu": the CPU; "cuda": the GPU (WL_EUNSUPPORTED
+                                without one); "auto": the GPU when there is one */
   const char *reference_dir; /* NULL: WL_VALIDATE_REFERENCE_DIR (the source tree's reference/) */
   wl_validate_level_fn on_level; /* may be NULL */
+  wl_validate_progress_fn progress; /* may be NULL */
   void *user;
 };
 
@@ -112,7 +122,8 @@ enum wl_status wl_validate_select(const char *name, int *sel, struct wl_error *e
 /* Run case i on its ladder. r is filled level by level (also on failure:
  * levels that ran stay). Returns WL_OK when every level ran (the case may
  * still miss its tolerance: see r->pass); WL_EINPUT for a bad option or a
- * missing/bad reference file; WL_EIO, WL_ENOMEM. A level whose simulation
+ * missing/bad reference file; WL_EUNSUPPORTED for backend "cuda" without a
+ * usable GPU; WL_EIO, WL_ENOMEM. A level whose simulation
  * goes unstable is recorded (status, message), the case fails, and the
  * status returned is still WL_OK so the suite continues. */
 enum wl_status wl_validate_run(int i, const struct wl_validate_opts *opts,

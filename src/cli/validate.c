@@ -1,5 +1,6 @@
 /* validate.c: `wallload validate [CASE...] [--ladder N] [--quick] [-o DIR]
- * [--threads N] [--integrator NAME] [--reference DIR]`: run the reference cases of reference/
+ * [--threads N] [--integrator NAME] [--backend cpu|cuda|auto] [--reference DIR]`: run the
+ * reference cases of reference/
  * on a resolution ladder, print per case and level the particles, steps,
  * runtime and metrics with pass/fail, the observed order and the
  * Richardson-extrapolated error, and write validation.{json,csv,pdf}. */
@@ -10,15 +11,17 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "cli.h"
 #include "wallload/error.h"
 #include "wallload/loads.h"
+#include "wallload/sph.h"
 #include "wallload/validate.h"
 
 #define VALIDATE_USAGE                                                                            \
   "usage: wallload validate [CASE...] [--ladder N] [--quick] [-o DIR] [--threads N] "            \
-  "[--integrator symplectic|verlet] [--reference DIR]"
+  "[--integrator symplectic|verlet] [--backend cpu|cuda|auto] [--reference DIR]"
 
 static void help(void) {
   printf("%s\n\n"
@@ -26,10 +29,12 @@ static void help(void) {
          "resolutions dp, dp/sqrt2, dp/2, ...; print error, runtime and the observed order.\n"
          "  CASE...          case names or the group 'solitary' (default: all)\n"
          "  --ladder N       levels per case, 1 to 6 (default 3; the order needs 3)\n"
-         "  --quick          each case's coarse, short ladder (seconds to a minute per case)\n"
+         "  --quick          each case's coarse, short ladder (seconds to a minute per case;\n"
+         "                   spheric2, 3D: one level, about 10 minutes on 2 cores)\n"
          "  -o DIR           output directory (default validation-results; created)\n"
          "  --threads N      OpenMP threads per run (default: OpenMP's)\n"
          "  --integrator NAME  symplectic (default) or verlet: the time integrator of every run\n"
+         "  --backend NAME   cpu (default), cuda, or auto (the GPU when there is one), as assess\n"
          "  --reference DIR  the reference/ directory (default: the source tree's)\n"
          "  --list           list the cases\n"
          "exit: 0 every case passes, 1 a case misses its tolerance or a run fails, 2 bad input\n\n"
@@ -59,6 +64,37 @@ static void print_metric(const struct wl_validate_metric *m) {
     printf("      %-34s r = %.4f%34s tol >= %.3f  %s\n", m->name, m->value, "", m->tol, mark);
     break;
   }
+}
+
+/* Progress of a level's run on stderr: a line redrawn on a terminal; in a
+ * log, a line a minute, so the short cases print none. */
+struct progress_state {
+  int tty;
+  double last_print;
+  const char *name; /* the run last seen */
+  int level;
+};
+
+static void on_progress(void *user, const char *name, int level,
+                        const struct wl_sph_progress *pr) {
+  struct progress_state *ps = user;
+  if (name != ps->name || level != ps->level) { /* a new run */
+    ps->name = name;
+    ps->level = level;
+    ps->last_print = 0;
+  }
+  const double frac = pr->t_end > 0 ? pr->t / pr->t_end : 0;
+  const double eta = frac > 0 ? pr->wall_s * (1 - frac) / frac : NAN;
+  if (ps->tty) {
+    fprintf(stderr, "\r  %s level %d: t = %.3f / %.3f s (%3.0f %%), %.0f steps/s, ETA %.0f s   ",
+            name, level + 1, pr->t, pr->t_end, 100 * frac, pr->steps_per_s, eta);
+    if (pr->t >= pr->t_end) fputc('\n', stderr);
+  } else if (pr->wall_s - ps->last_print >= 60.0) {
+    fprintf(stderr, "  %s level %d: t = %.3f / %.3f s (%.0f %%), %.0f steps/s, ETA %.0f s\n", name,
+            level + 1, pr->t, pr->t_end, 100 * frac, pr->steps_per_s, eta);
+    ps->last_print = pr->wall_s;
+  }
+  fflush(stderr);
 }
 
 static void on_level(void *user, const struct wl_validate_result *r, int l) {
@@ -93,7 +129,8 @@ enum wl_status wl_cli_validate(int argc, char **argv, struct wl_error *err) {
     } else if (!strcmp(a, "--quick")) {
       opts.quick = 1;
     } else if (!strcmp(a, "-o") || !strcmp(a, "--ladder") || !strcmp(a, "--threads") ||
-               !strcmp(a, "--reference") || !strcmp(a, "--integrator")) {
+               !strcmp(a, "--reference") || !strcmp(a, "--integrator") ||
+               !strcmp(a, "--backend")) {
       if (i + 1 >= argc) {
         st = wl_error_set(err, WL_EUSAGE, "validate: %s needs a value\n%s", a, VALIDATE_USAGE);
         break;
@@ -104,6 +141,12 @@ enum wl_status wl_cli_validate(int argc, char **argv, struct wl_error *err) {
         out_dir = v;
       } else if (!strcmp(a, "--reference")) {
         opts.reference_dir = v;
+      } else if (!strcmp(a, "--backend")) {
+        if (!strcmp(v, "cpu") || !strcmp(v, "cuda") || !strcmp(v, "auto"))
+          opts.backend = v;
+        else
+          st = wl_error_set(err, WL_EUSAGE,
+                            "validate: --backend: found '%s'; valid: cpu, cuda, auto", v);
       } else if (!strcmp(a, "--integrator")) {
         if (!strcmp(v, "verlet") || !strcmp(v, "symplectic"))
           opts.verlet = !strcmp(v, "verlet");
@@ -125,7 +168,8 @@ enum wl_status wl_cli_validate(int argc, char **argv, struct wl_error *err) {
     } else if (a[0] == '-') {
       st = wl_error_set(err, WL_EUSAGE,
                         "validate: unknown option '%s'; valid: --ladder N, --quick, -o DIR, "
-                        "--threads N, --integrator NAME, --reference DIR, --list\n%s",
+                        "--threads N, --integrator NAME, --backend NAME, --reference DIR, "
+                        "--list\n%s",
                         a, VALIDATE_USAGE);
     } else {
       st = wl_validate_select(a, sel, err);
@@ -151,6 +195,9 @@ enum wl_status wl_cli_validate(int argc, char **argv, struct wl_error *err) {
     return wl_error_set(err, WL_ENOMEM, "validate: no memory");
   }
   opts.on_level = on_level;
+  struct progress_state ps = {isatty(2), 0.0, NULL, -1};
+  opts.progress = on_progress;
+  opts.user = &ps;
   int n_done = 0;
   for (int i = 0; i < n_cases && !st; i++) {
     if (!sel[i]) continue;

@@ -106,6 +106,8 @@ static enum wl_status write_json(const char *path, const struct wl_validate_resu
     jstr(&b, c->verdict);
     bprintf(&b, ",\n     \"integrator\": ");
     jstr(&b, c->integrator);
+    bprintf(&b, ", \"backend\": ");
+    jstr(&b, c->backend[0] ? c->backend : "cpu");
     bprintf(&b, ", \"ratio\": ");
     jnum(&b, c->ratio);
     bprintf(&b, ", \"order\": ");

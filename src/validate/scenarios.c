@@ -48,12 +48,23 @@ static enum wl_status load_scenario(const char *path, double dp, const struct wl
   return wl_plan_make(s, plan, err);
 }
 
+static void case_progress(void *user, const char *case_name, const struct wl_sph_progress *pr) {
+  (void)case_name;
+  const struct wl_val_ctx *ctx = user;
+  ctx->progress(ctx->user, ctx->name, ctx->level, pr);
+}
+
 static enum wl_status run_case(const struct wl_scenario *s, const struct wl_plan *plan,
                                enum wl_load_case load, const struct wl_val_ctx *ctx, double t_end,
                                struct wl_case_result *c, struct wl_validate_level *lv,
                                struct wl_error *err) {
   struct wl_assess_opts opts = {0};
   opts.threads = ctx->threads;
+  opts.backend = ctx->backend; /* validate --backend */
+  if (ctx->progress) {
+    opts.progress = case_progress;
+    opts.user = (void *)ctx;
+  }
   opts.end_time = t_end;
   struct wl_error run_err;
   wl_error_clear(&run_err);

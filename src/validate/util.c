@@ -9,6 +9,7 @@
 #include <time.h>
 
 #include "internal.h"
+#include "wallload/sph.h"
 
 void wl_val_table_clear(struct wl_val_table *t) {
   free(t->x);
@@ -16,20 +17,39 @@ void wl_val_table_clear(struct wl_val_table *t) {
   memset(t, 0, sizeof *t);
 }
 
-enum wl_status wl_val_table_read(const char *path, struct wl_val_table *t, struct wl_error *err) {
+/* The numbers of one line (separators: commas, semicolons, spaces, tabs),
+ * at most max; parsing stops at the first token that is not a number. */
+static int parse_numbers(char *line, double *v, int max) {
+  int n = 0;
+  char *c = line;
+  while (n < max) {
+    while (*c == ' ' || *c == '\t' || *c == ',' || *c == ';' || *c == '\r' || *c == '\n') c++;
+    if (!*c) break;
+    char *end;
+    const double x = strtod(c, &end);
+    if (end == c) break;
+    v[n++] = x;
+    c = end;
+  }
+  return n;
+}
+
+enum wl_status wl_val_table_read_col(const char *path, int col, struct wl_val_table *t,
+                                     struct wl_error *err) {
   memset(t, 0, sizeof *t);
+  if (col < 1 || col >= WL_VAL_TABLE_COLS)
+    return wl_error_set(err, WL_EINPUT, "%s: column %d out of range 1..%d", path, col,
+                        WL_VAL_TABLE_COLS - 1);
   FILE *f = fopen(path, "r");
   if (!f)
     return wl_error_set(err, WL_EINPUT, "%s: cannot open the reference table (is --reference "
                         "pointing at wallload's reference/ directory?)", path);
-  char line[512];
+  char line[2048];
+  double v[WL_VAL_TABLE_COLS];
   int cap = 0;
   while (fgets(line, sizeof line, f)) {
     if (line[0] == '#') continue;
-    for (char *c = line; *c; c++)
-      if (*c == ',' || *c == ';' || *c == '\t' || *c == '\r') *c = ' ';
-    double a, b;
-    if (sscanf(line, "%lf %lf", &a, &b) != 2) continue;
+    if (parse_numbers(line, v, col + 1) != col + 1) continue; /* a header or a short row */
     if (t->n == cap) {
       cap = cap ? 2 * cap : 64;
       double *x = realloc(t->x, sizeof(double) * (size_t)cap);
@@ -42,16 +62,21 @@ enum wl_status wl_val_table_read(const char *path, struct wl_val_table *t, struc
         return wl_error_set(err, WL_ENOMEM, "%s: no memory for the table", path);
       }
     }
-    t->x[t->n] = a;
-    t->y[t->n] = b;
+    t->x[t->n] = v[0];
+    t->y[t->n] = v[col];
     t->n++;
   }
   fclose(f);
   if (t->n < 2) {
     wl_val_table_clear(t);
-    return wl_error_set(err, WL_EINPUT, "%s: fewer than two data rows", path);
+    return wl_error_set(err, WL_EINPUT, "%s: fewer than two data rows with %d columns", path,
+                        col + 1);
   }
   return WL_OK;
+}
+
+enum wl_status wl_val_table_read(const char *path, struct wl_val_table *t, struct wl_error *err) {
+  return wl_val_table_read_col(path, 1, t, err);
 }
 
 double wl_val_interp(const double *x, const double *y, int n, double xq) {
@@ -163,4 +188,113 @@ double wl_val_now(void) {
   struct timespec ts;
   clock_gettime(CLOCK_MONOTONIC, &ts);
   return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* ---- time-series helpers ------------------------------------------------------ */
+
+double wl_val_first_above(const double *t, const double *y, int n, int stride, double level) {
+  for (int i = 0; i < n; i++)
+    if (y[(size_t)i * (size_t)stride] > level) return t[i];
+  return NAN;
+}
+
+void wl_val_running_mean(const double *t, const double *y, int n, int stride, double width,
+                         double *out) {
+  double s = 0;
+  int lo = 0, hi = 0; /* the window is samples lo .. hi-1 */
+  const double half = 0.5 * width, eps = 1e-9 * (width > 0 ? width : 1);
+  for (int i = 0; i < n; i++) {
+    while (hi < n && t[hi] <= t[i] + half + eps) s += y[(size_t)hi++ * (size_t)stride];
+    while (t[lo] < t[i] - half - eps) s -= y[(size_t)lo++ * (size_t)stride];
+    out[i] = s / (hi - lo);
+  }
+}
+
+double wl_val_window_mean(const double *t, const double *y, int n, int stride, double t0,
+                          double t1) {
+  double s = 0;
+  int m = 0;
+  for (int i = 0; i < n; i++)
+    if (t[i] >= t0 && t[i] <= t1) s += y[(size_t)i * (size_t)stride], m++;
+  return m ? s / m : NAN;
+}
+
+double wl_val_window_max(const double *t, const double *y, int n, int stride, double t0,
+                         double t1) {
+  double mx = NAN;
+  for (int i = 0; i < n; i++) {
+    const double v = y[(size_t)i * (size_t)stride];
+    if (t[i] >= t0 && t[i] <= t1 && !(v <= mx)) mx = v;
+  }
+  return mx;
+}
+
+/* ---- simulation helpers ------------------------------------------------------- */
+
+double wl_val_wetted_length(const struct wl_sph_probe *pr, int dim, double x, double y,
+                            double z_hi, double dp) {
+  /* sph/probe.h: coefmasslimit 0.4 in 2D, 0.5 in 3D (REFERENCES.md 6) */
+  const double lim = dim == 3 ? 0.5 : 0.4, dz = 0.1 * dp;
+  double q[3] = {x, dim == 3 ? y : 0.0, 0.0};
+  const int iz = dim - 1;
+  double len = 0, z = 0.0;
+  for (; z <= 3 * dp; z += dz) {
+    q[iz] = z;
+    if (wl_sph_probe_shepard(pr, q) >= lim) break;
+  }
+  if (z <= 3 * dp) len = z;
+  for (; z <= z_hi; z += dz) {
+    q[iz] = z;
+    if (wl_sph_probe_shepard(pr, q) >= lim) len += dz;
+  }
+  return len;
+}
+
+/* The solver's callbacks share one user pointer: the output callback and
+ * the level's context travel together. */
+struct run_wrap {
+  wl_sph_output_fn out;
+  void *user;
+  const struct wl_val_ctx *ctx;
+};
+
+static enum wl_status wrap_out(void *u, struct wl_sph_sim *sim, double t, struct wl_error *err) {
+  const struct run_wrap *w = u;
+  return w->out ? w->out(w->user, sim, t, err) : WL_OK;
+}
+
+static void wrap_progress(void *u, const struct wl_sph_progress *pr) {
+  const struct run_wrap *w = u;
+  w->ctx->progress(w->ctx->user, w->ctx->name, w->ctx->level, pr);
+}
+
+enum wl_status wl_val_run_sim(const struct wl_val_ctx *ctx, const struct wl_sph_config *cfg,
+                              const struct wl_particles *init, double t_end, double output_dt,
+                              wl_sph_output_fn out, void *user, struct wl_validate_level *lv,
+                              struct wl_error *err) {
+  struct wl_sph_sim *sim = NULL;
+  lv->n_particles = init->n;
+  const struct wl_backend_ops *ops = ctx->ops ? ctx->ops : &wl_backend_cpu_ops;
+  enum wl_status st = wl_sph_sim_alloc(&sim, ops, cfg, init, err);
+  if (st) return st;
+  struct wl_sph_run_opts o = {0};
+  o.t_end = t_end;
+  o.output_dt = output_dt;
+  struct run_wrap w = {out, user, ctx};
+  o.output = wrap_out;
+  o.user = &w;
+  if (ctx->progress) o.progress = wrap_progress;
+  const double w0 = wl_val_now();
+  struct wl_error run_err;
+  wl_error_clear(&run_err);
+  st = wl_sph_sim_run(sim, &o, &run_err);
+  lv->runtime_s = wl_val_now() - w0;
+  lv->steps = wl_sph_sim_steps(sim);
+  lv->t_reached = wl_sph_sim_time(sim);
+  lv->status = st;
+  if (st) snprintf(lv->message, sizeof lv->message, "%s", run_err.msg);
+  wl_sph_sim_free(sim);
+  if (st == WL_EUNSTABLE) return WL_OK;
+  if (st) return wl_error_set(err, st, "%s", run_err.msg);
+  return WL_OK;
 }

@@ -18,6 +18,7 @@
 
 #include "internal.h"
 #include "wallload/config.h"
+#include "wallload/cuda_device.h"
 #include "wallload/loads.h"
 
 #ifndef WL_VALIDATE_REFERENCE_DIR
@@ -132,18 +133,40 @@ enum wl_status wl_validate_run(int i, const struct wl_validate_opts *opts,
   snprintf(r->title, sizeof r->title, "%s", c->title);
   r->ratio = sqrt(2.0);
   r->order = r->extrapolated = NAN;
-  const int n_levels = opts->n_levels > 0 ? opts->n_levels : 3;
+  /* the quick ladder of a costly case (spheric2: one 3D level) is shorter
+   * unless --ladder says otherwise */
+  const int n_levels = opts->n_levels > 0                  ? opts->n_levels
+                       : opts->quick && c->quick_levels > 0 ? c->quick_levels
+                                                            : 3;
   if (n_levels > WL_VALIDATE_MAX_LEVELS)
     return wl_error_set(err, WL_EINPUT, "validate: --ladder %d: at most %d levels", n_levels,
                         WL_VALIDATE_MAX_LEVELS);
   struct wl_val_ctx ctx = {opts->reference_dir ? opts->reference_dir : WL_VALIDATE_REFERENCE_DIR,
-                           opts->threads, opts->quick, opts->verlet};
+                           opts->threads, opts->quick, opts->verlet, &wl_backend_cpu_ops, "cpu",
+                           c->name, 0, opts->progress, opts->user};
   snprintf(r->integrator, sizeof r->integrator, "%s", opts->verlet ? "verlet" : "symplectic");
+  /* the backend, as assess picks it (--backend cpu|cuda|auto) */
+  const char *want = opts->backend ? opts->backend : "cpu";
+  if (strcmp(want, "cpu") && strcmp(want, "cuda") && strcmp(want, "auto"))
+    return wl_error_set(err, WL_EINPUT, "validate: backend '%s'; valid: cpu, cuda, auto", want);
+  if (strcmp(want, "cpu")) {
+    struct wl_cuda_device dev;
+    struct wl_error qerr;
+    wl_error_clear(&qerr);
+    if (wl_cuda_device_query(&dev, &qerr) == WL_OK) {
+      ctx.ops = &wl_backend_cuda_ops;
+      ctx.backend = "cuda";
+    } else if (!strcmp(want, "cuda")) {
+      return wl_error_set(err, WL_EUNSUPPORTED, "validate: backend cuda: %s", qerr.msg);
+    }
+  }
+  snprintf(r->backend, sizeof r->backend, "%s", ctx.backend);
   const double dp0 = opts->quick ? c->dp0_quick : c->dp0;
   for (int l = 0; l < n_levels; l++) {
     struct wl_validate_level *lv = &r->lv[l];
     memset(lv, 0, sizeof *lv);
     lv->dp = dp0 / pow(r->ratio, l);
+    ctx.level = l;
     enum wl_status st = c->run(c, &ctx, lv->dp, lv, err);
     if (st) {
       wl_error_prefix(err, "validate %s, dp = %g m: ", c->name, lv->dp);
