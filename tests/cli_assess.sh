@@ -10,18 +10,7 @@ ok() { echo "PASS $1"; }
 bad() { echo "FAIL $1"; fail=$((fail+1)); }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-cat > "$work/tiny.yaml" <<'YAML'
-scenario: tiny
-water: {depth: 0.2 m}
-domain: {length: 4 m}
-wall: {x: 3 m, height: 0.4 m, probes: 10}
-gauges: [{name: G1, x: 2 m}]
-loads:
-  solitary: {height: 0.06 m, generation: initial, at: 1.6 m}
-  explosion: {energy: same-as-solitary, at: 1.5 m}
-resolution: {dp: 0.02 m}
-run: {output_interval: 0.02 s}
-YAML
+cp "$src/tests/scenarios/good/tiny.yaml" "$work/tiny.yaml"
 cd "$work" || exit 1
 out=$("$bin" assess tiny.yaml --quiet --end-time 0.3 2>&1); rc=$?
 [ $rc = 0 ] && ok "assess runs both cases (exit 0)" || bad "assess exit $rc: $out"

@@ -40,18 +40,7 @@ cd "$work" || exit 1
 # The scenarios: tiny.yaml as in cli_assess.sh (two cases), one.yaml its
 # solitary case alone, many.yaml sampled so often that results.h5 outgrows
 # the particle snapshots (so a file-size limit can stop results.h5 first).
-cat > tiny.yaml <<'YAML'
-scenario: tiny
-water: {depth: 0.2 m}
-domain: {length: 4 m}
-wall: {x: 3 m, height: 0.4 m, probes: 10}
-gauges: [{name: G1, x: 2 m}]
-loads:
-  solitary: {height: 0.06 m, generation: initial, at: 1.6 m}
-  explosion: {energy: same-as-solitary, at: 1.5 m}
-resolution: {dp: 0.02 m}
-run: {output_interval: 0.02 s}
-YAML
+cp "$src/tests/scenarios/good/tiny.yaml" tiny.yaml
 sed '/explosion:/d; s/scenario: tiny/scenario: one/' tiny.yaml > one.yaml
 sed '/explosion:/d; s/scenario: tiny/scenario: many/; s/dp: 0.02 m/dp: 0.05 m/;
      s/output_interval: 0.02 s/output_interval: 0.00005 s/' tiny.yaml > many.yaml

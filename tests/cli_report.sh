@@ -20,18 +20,7 @@ trap 'rm -rf "$work"' EXIT
 # the process, by design (not a wallload leak); LeakSanitizer is told so.
 echo "leak:libfontconfig.so" > "$work/lsan.supp"
 export LSAN_OPTIONS="suppressions=$work/lsan.supp${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
-cat > "$work/tiny.yaml" <<'YAML'
-scenario: tiny
-water: {depth: 0.2 m}
-domain: {length: 4 m}
-wall: {x: 3 m, height: 0.4 m, probes: 10}
-gauges: [{name: G1, x: 2 m}]
-loads:
-  solitary: {height: 0.06 m, generation: initial, at: 1.6 m}
-  explosion: {energy: same-as-solitary, at: 1.5 m}
-resolution: {dp: 0.02 m}
-run: {output_interval: 0.02 s}
-YAML
+cp "$src/tests/scenarios/good/tiny.yaml" "$work/tiny.yaml"
 cd "$work" || exit 1
 out=$("$bin" assess tiny.yaml -o run --quiet --end-time 0.3 2>&1); rc=$?
 [ $rc = 0 ] && [ -s run/results.h5 ] && ok "assess wrote results.h5" || { bad "assess exit $rc: $out"; exit $fail; }

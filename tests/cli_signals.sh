@@ -34,18 +34,7 @@ work=$(mktemp -d)
 pids=""
 trap 'for p in $pids; do kill -9 $p 2>/dev/null; done; rm -rf "$work"' EXIT
 cd "$work" || exit 1
-cat > tiny.yaml <<'YAML'
-scenario: tiny
-water: {depth: 0.2 m}
-domain: {length: 4 m}
-wall: {x: 3 m, height: 0.4 m, probes: 10}
-gauges: [{name: G1, x: 2 m}]
-loads:
-  solitary: {height: 0.06 m, generation: initial, at: 1.6 m}
-  explosion: {energy: same-as-solitary, at: 1.5 m}
-resolution: {dp: 0.02 m}
-run: {output_interval: 0.02 s}
-YAML
+cp "$src/tests/scenarios/good/tiny.yaml" tiny.yaml
 if [ "${WL_TEST_QUICK:-0}" = 1 ]; then
   T_END=0.05; N_DELAYS=4; N_KILL=1; KILL_AT="results.h5.tmp report.pdf.part"
 else
