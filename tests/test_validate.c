@@ -161,6 +161,42 @@ static void spheric2_built(void) {
   wl_particles_clear(&p);
 }
 
+/* The case's run end to end, cut to 0.01 s at dp = 0.1 m (a few seconds):
+ * every metric is filled, the run reaches its end, the water has not
+ * reached the box (no arrival: the judged P1 metrics fail), the reservoir
+ * gauge reads its depth. */
+static void spheric2_short_run(void) {
+  int i_s2 = -1;
+  for (int i = 0; i < wl_val_n_cases; i++)
+    if (!strcmp(wl_val_cases[i].name, "spheric2")) i_s2 = i;
+  if (i_s2 < 0) return;
+  struct wl_val_case c = wl_val_cases[i_s2];
+  c.p[0] = c.p[1] = 0.01;
+  struct wl_val_ctx ctx;
+  memset(&ctx, 0, sizeof ctx);
+  ctx.ref_dir = WL_SOURCE_DIR "/reference";
+  ctx.threads = 1;
+  ctx.ops = &wl_backend_cpu_ops;
+  ctx.backend = "cpu";
+  ctx.name = c.name;
+  struct wl_validate_level lv;
+  memset(&lv, 0, sizeof lv);
+  struct wl_error err;
+  wl_error_clear(&err);
+  enum wl_status st = c.run(&c, &ctx, 0.1, &lv, &err);
+  CHECK_TRUE(st == WL_OK && lv.status == WL_OK, "spheric2 runs 0.01 s at dp = 0.1 m");
+  if (st) printf("%s\n", err.msg);
+  CHECK_ABS(lv.t_reached, 0.01, 1e-9, "to its end time");
+  CHECK_TRUE(lv.n_metrics == 17, "17 metrics: P1 4, P2-P4 6, heights 7");
+  CHECK_TRUE(lv.n_metrics > 3 && !strcmp(lv.m[0].name, "P1 plateau (0.5-1 s after arrival)") &&
+                 lv.m[0].tol == 0.15 && lv.m[1].tol == 0.05 && lv.m[2].tol == 0.30 &&
+                 lv.m[3].tol == 1.0,
+             "judged: P1 plateau 15 %, arrival 5 %, peak 30 %, tension at most rho g H");
+  CHECK_TRUE(lv.n_metrics > 3 && isnan(lv.m[1].value) && !lv.m[1].pass && lv.m[3].pass,
+             "no arrival within 0.01 s: P1 arrival NaN and failed; no tension");
+  CHECK_REL(lv.m[1].reference, 0.3940334357, 1e-9, "P1 arrival's reference: the experiment's");
+}
+
 /* The experiment's table and metrics against an independent computation
  * (Python over ../shared/validation_data/spheric_test2_kleefsman/
  * test_case_2_exp_data.dat: offsets the means before t = 0.35 s (P) and
@@ -282,5 +318,6 @@ int main(void) {
   spheric2_layout(0.55 / 54);
   spheric2_built();
   spheric2_data();
+  spheric2_short_run();
   return TEST_RESULT();
 }

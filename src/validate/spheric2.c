@@ -334,12 +334,16 @@ enum wl_status wl_val_run_spheric2(const struct wl_val_case *c, const struct wl_
   } else if (!st) {
     const double rgh = cfg.prm.rho0 * G * S2_WATER_H;
     const double t1 = r.s.t[r.s.n - 1];
-    /* the experiment over the simulated time only */
-    struct wl_val_s2_pmetrics me[WL_VAL_S2_NP], mm[WL_VAL_S2_NP];
+    /* the experiment's arrival and plateau from its whole record, its peak
+     * over the simulated time only (a run cut short is compared with what
+     * the experiment saw meanwhile) */
+    struct wl_val_s2_pmetrics me[WL_VAL_S2_NP], mm[WL_VAL_S2_NP], cut;
     int ne = 0;
     while (ne < d.p[0].n && d.p[0].x[ne] <= t1 + 1e-9) ne++;
     for (int i = 0; i < WL_VAL_S2_NP; i++) {
-      wl_val_spheric2_pressure_metrics(d.p[i].x, d.p[i].y, ne, 1, rgh, NAN, &me[i]);
+      wl_val_spheric2_pressure_metrics(d.p[i].x, d.p[i].y, d.p[i].n, 1, rgh, NAN, &me[i]);
+      wl_val_spheric2_pressure_metrics(d.p[i].x, d.p[i].y, ne, 1, rgh, me[i].arrival, &cut);
+      me[i].peak = cut.peak;
       wl_val_spheric2_pressure_metrics(r.s.t, r.s.y + i, r.s.n, K, rgh, me[i].arrival, &mm[i]);
     }
     int j = 0;
