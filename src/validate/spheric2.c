@@ -65,7 +65,7 @@ static const double s2_p_z[WL_VAL_S2_NP] = {0.021, 0.061, 0.101, 0.141};
  * as only the shadow behind the box can: the column H1 is the gauge
  * upstream of the box, H3 the one behind it. Where upstream: the front
  * reaches 1.488 m (3.22 - 1.732 m, GPUSPH's Spheric2LJ gauge in its mirrored
- * frame) at 0.265 s and 1.638 m at 0.214 s in the run at dp = 0.05 m, the
+ * frame) at 0.264 s and 1.638 m at 0.213 s in the run at dp = 0.05 m, the
  * data's H1 passes H/10 at 0.260 s; RMSE/H against it 5.3 % and 8.5 %.
  * So the gauge is taken at 1.488 m (reference/spheric2/README.md). */
 static const double s2_h_x[WL_VAL_S2_NH] = {0.496, 0.992, 1.488, 2.638};
