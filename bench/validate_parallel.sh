@@ -14,7 +14,9 @@ bin=$1 out=$2 ladder=${3:-3}
 shift 3 2>/dev/null || shift $#
 mkdir -p "$out"
 if [ $# -eq 0 ]; then
-  set -- $("$bin" validate --list | awk 'NF {print $1}')
+  # every case but spheric2: a 3D case of up to 1.1 M particles, a GPU run
+  # of its own (validate spheric2 --backend cuda), a day on one CPU thread
+  set -- $("$bin" validate --list | awk 'NF && $1 != "spheric2" {print $1}')
 fi
 one() {
   local a; a=$(date +%s)
