@@ -117,8 +117,8 @@ struct wl_plan {
  * travelling solitary wave feed particle noise that the viscosity then
  * dissipates: H/h = 0.4 on h = 0.2 m at dp = 0.01 m lost 22 % of its energy
  * in 2 s with coefh 1 and artificial viscosity, 12.5 % with coefh 1 and
- * laminar viscosity, 2.5 % with coefh 1.2 and laminar viscosity (measured
- * 2026-11-23, docs/numerics.md). 3D's coefh 1 already gives
+ * laminar viscosity, 2.5 % with coefh 1.2 and laminar viscosity
+ * (docs/numerics.md). 3D's coefh 1 already gives
  * h = 1.73 dp. */
 /* Most particles (fluid and boundary) one case may have: the backends
  * index particles with int, and 2^30 particles need about 160 GiB on the
@@ -148,30 +148,22 @@ static inline void wl_plan_default_numerics(struct wl_sph_params *prm) {
 }
 
 /* Reference throughput used for runtime estimates [force evaluations/s per
- * particle; a symplectic step has two, a Verlet step one]; the measured
- * values are in BENCHMARKS.md ("The main job on this machine") and
- * docs/history/BENCHMARKS-history.md: scenarios/seawall.yaml on the 2-core
- * development machine, 2 threads, 2026-11-24: 1.01e7 and 1.05e7 with the
- * symplectic integrator (solitary and explosion cases), 8.9e6 and 9.6e6
- * with Verlet (whose step is one evaluation plus the same sort); after the
- * pair-term changes of that day, 1.02e7 and 1.05e7 with Verlet. */
+ * particle; a symplectic step has two, a Verlet step one]: scenarios/
+ * seawall.yaml on the 2-core development machine, 2 threads, measured at
+ * 1.0e7-1.05e7 with either integrator (BENCHMARKS.md, "The main job on
+ * this machine"; test_plan checks check's estimate against those runs). */
 #define WL_PLAN_CPU_RATE 1.0e7
 /* The same in 3D (about 100 neighbours per particle instead of 20, and a
  * flume's side walls): test_flume3d's still-water flume (16k particles)
  * ran at about 3e5 symplectic particle-steps/s on the 2-core development
  * machine. */
 #define WL_PLAN_CPU_RATE_3D 6.0e5
-/* The CUDA backend on an H100 (docs/history/BENCHMARKS-history.md, "assess
- * end to end"): a symplectic step of a
- * flume of 9k-38k particles took about 215 us whatever its size (launches
- * and the per-step synchronisation, not the force loop, set the time: the
- * seawall's cases ran 48k and 58k steps in 10.3 and 12.4 s, 2026-11-23); a
- * Verlet step (one force evaluation, no predictor) about 150 us (35.8k and
- * 94.3k steps in 5.6 and 13.5 s, 2026-11-24). Large runs go at the force
- * loop's rate, 2.70e9 force evaluations/s for the 2D dam break of 0.89M
- * particles and 7.67e8 for the 3D one of 1.03M (h = 1.41 and 1.73 dp; the
- * 3D split loop, bench/gpu.sh 2026-11-24T09:00Z). The estimate takes the
- * larger of the two times. */
+/* The CUDA backend on an H100 (BENCHMARKS.md, "CUDA backend, H100"): a small
+ * flume's step costs a fixed time whatever its size (launches and the
+ * per-step synchronisation: about 215 us symplectic, 150 us Verlet, from
+ * seawall.yaml's cases); large runs go at the force loop's rate (the 2D
+ * dam break of 0.89M particles, the 3D one of 1.03M with the split loop).
+ * The estimate takes the larger of the two times. */
 #define WL_PLAN_GPU_STEP_S 2.2e-4
 #define WL_PLAN_GPU_STEP_S_VERLET 1.5e-4
 #define WL_PLAN_GPU_RATE 2.70e9

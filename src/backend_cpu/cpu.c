@@ -502,8 +502,8 @@ static enum wl_status cpu_init(void **ctx, const struct wl_sph_config *cfg,
      * four parallel regions; below a few thousand particles per thread the
      * barriers cost more than the work they split, and on a machine shared
      * with other jobs each barrier can wait a whole scheduler slice for a
-     * descheduled partner (60 s of still water with 980 particles ran 70x
-     * slower on 2 threads than its work needs, 2026-11-23). */
+     * descheduled partner (a small still-water run went 70x slower on 2
+     * threads than its work needs). */
     const int by_work = host->n / WL_CPU_PARTICLES_PER_THREAD;
     const int most = omp_get_max_threads();
     c->n_threads = by_work < 1 ? 1 : by_work > most ? most : by_work;

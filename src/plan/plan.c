@@ -13,9 +13,8 @@
  * crest for the load to have decayed: the rear half of the wave (its tail
  * at 1 % of H) passes in half a length, the other half covers run-down and
  * overtopping water coming to rest. A wave keeps its duration while it
- * shoals, so the offshore celerity is the right one here. Two lengths, as
- * before 2026-11-23, spent a third of seawall.yaml's solitary case on
- * still water. */
+ * shoals, so the offshore celerity is the right one here. (Two lengths
+ * spent a third of seawall.yaml's solitary case on still water.) */
 #define LOAD_PASSES 1.0
 /* Effective solitary wavelength: the distance over which eta > 1 % of H is
  * 2 arccosh(10)/K (first order), about 6/K. */
@@ -360,7 +359,7 @@ static enum wl_status plan_explosion(const struct wl_scenario *s, struct wl_plan
    * explosion (R0 = 0.27 m in 0.36 m of water, 7.2 m from the wall) loads
    * the wall most between 9 and 13 s, peak at 11.8 s, while its leading
    * wave arrives at 5 s and 1.5 times that ended the run at 8.1 s with a
-   * dynamic peak a quarter of the real one (H100 run to 16 s, 2026-11-23).
+   * dynamic peak a quarter of the real one (an H100 run to 16 s).
    * So the run lasts until waves of length 2 R0 have arrived, travelling
    * at their group velocity over the bed (15.5 s there; the H100 run to
    * that end with the absorbing zone below peaked at 10.3 s, 28.8 N/m). */

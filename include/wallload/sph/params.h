@@ -72,9 +72,9 @@ enum wl_sph_integrator {
  * at least this many times the largest expected flow speed (Ma <= 0.1,
  * Monaghan 1994). For a dam break of height H, whose front runs at
  * 2 sqrt(g H) (Ritter), it gives c0 = 20 sqrt(g H): DualSPHysics'
- * dam-break setting. At coefsound 10 (Ma 0.2 at the front) the 3D dam
- * break of `wallload bench` left the density range at the end-wall impact
- * (t = 1.15 s, H100, 2026-11-25) and the 2D one at its splash-down. */
+ * dam-break setting. At coefsound 10 (Ma 0.2 at the front) the dam
+ * breaks of `wallload bench` leave the density range at their impacts
+ * (docs/boundary.md). */
 #define WL_SPH_MACH_FACTOR 10.0
 
 /* Run parameters; wl_sph_params_default fills DualSPHysics' defaults. */
