@@ -216,9 +216,9 @@ const char *wl_assess_stop_signal_name(int sig);
  * memory when it picks the CUDA backend, the host's physical memory, the
  * CPU threads, and the default runtime budget (WL_PLAN_BUDGET_DEFAULT_S).
  * Backend cuda without a GPU is described as the CPU (the run itself then
- * refuses it, saying why). WL_OK. */
-enum wl_status wl_assess_machine(const struct wl_scenario *s, const struct wl_assess_opts *opts,
-                                 struct wl_plan_machine *m, struct wl_error *err);
+ * refuses it, saying why). */
+void wl_assess_machine(const struct wl_scenario *s, const struct wl_assess_opts *opts,
+                       struct wl_plan_machine *m);
 
 /* Build and run one load case (WL_CASE_STILL included) without writing
  * anything: for tests and the validation suite. `snapshots` (may be NULL)

@@ -317,13 +317,12 @@ static enum wl_status pick_backend(const struct wl_scenario *s, const struct wl_
   return WL_OK;
 }
 
-enum wl_status wl_assess_machine(const struct wl_scenario *s, const struct wl_assess_opts *opts,
-                                 struct wl_plan_machine *m, struct wl_error *err) {
+void wl_assess_machine(const struct wl_scenario *s, const struct wl_assess_opts *opts,
+                       struct wl_plan_machine *m) {
   memset(m, 0, sizeof *m);
   const struct wl_backend_ops *ops;
   struct wl_error perr;
   wl_error_clear(&perr);
-  (void)err;
   if (pick_backend(s, opts, &ops, &perr) != WL_OK) ops = &wl_backend_cpu_ops; /* the run says why */
   const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
   if (pages > 0 && page > 0) m->host_bytes = (double)pages * (double)page;
@@ -340,7 +339,6 @@ enum wl_status wl_assess_machine(const struct wl_scenario *s, const struct wl_as
                : s->run.threads.is_auto          ? omp_get_max_threads()
                                                  : (int)s->run.threads.q.si;
   m->budget_seconds = WL_PLAN_BUDGET_DEFAULT_S;
-  return WL_OK;
 }
 
 /* Run one case into c (its flume already built). Returns the run's status;

@@ -242,9 +242,9 @@ static enum wl_status parse(int argc, char **argv, struct bench_opts *o, struct 
       o->steps = (long)s;
     } else if (!strcmp(a, "--coefh")) {
       o->coefh = strtod(v, &end);
-      if (*end || !(o->coefh >= 0.5 && o->coefh <= 3))
-        return wl_error_set(err, WL_EUSAGE, "bench: --coefh: found '%s'; expected 0.5 to 3 (h = "
-                            "coefh sqrt(dim) dp)", v);
+      if (*end || !(o->coefh >= WL_SPH_COEFH_MIN && o->coefh <= WL_SPH_COEFH_MAX))
+        return wl_error_set(err, WL_EUSAGE, "bench: --coefh: found '%s'; expected %g to %g (h = "
+                            "coefh sqrt(dim) dp)", v, WL_SPH_COEFH_MIN, WL_SPH_COEFH_MAX);
     } else if (!strcmp(a, "--shifting")) {
       o->shift = strtod(v, &end);
       if (*end || !(o->shift >= 0 && o->shift <= 10))
@@ -277,8 +277,9 @@ static enum wl_status parse(int argc, char **argv, struct bench_opts *o, struct 
         return wl_error_set(err, WL_EUSAGE, "bench: --wall-alpha: found '%s'; expected 0 to 1", v);
     } else if (!strcmp(a, "--coefsound")) {
       o->coefsound = strtod(v, &end);
-      if (*end || !(o->coefsound >= 5 && o->coefsound <= 100))
-        return wl_error_set(err, WL_EUSAGE, "bench: --coefsound: found '%s'; expected 5 to 100", v);
+      if (*end || !(o->coefsound >= WL_SPH_COEFSOUND_MIN && o->coefsound <= WL_SPH_COEFSOUND_MAX))
+        return wl_error_set(err, WL_EUSAGE, "bench: --coefsound: found '%s'; expected %g to %g", v,
+                            WL_SPH_COEFSOUND_MIN, WL_SPH_COEFSOUND_MAX);
     } else if (!strcmp(a, "--limiter")) {
       if (!strcmp(v, "on")) o->limiter = 1;
       else if (!strcmp(v, "off")) o->limiter = 0;

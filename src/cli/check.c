@@ -44,14 +44,13 @@ static struct wl_plan_cost plan_cost(const struct wl_plan *p) {
 /* The cost of the convergence ladder: each level re-planned at dp x factor
  * (as assess runs it). Prints one line per level and the total to out (or
  * only the total line when `brief`; out may be NULL); *cost gets the sum of
- * the levels' times and the largest level's memory. Returns 1 with a
- * ladder, 0 without one or when a level cannot be planned (*cost is then
- * the plan's own). */
-static int ladder_cost(const struct wl_scenario *s, const struct wl_plan *plan, int brief,
+ * the levels' times and the largest level's memory; without a ladder, or
+ * when a level cannot be planned (printed), the plan's own cost. */
+static void ladder_cost(const struct wl_scenario *s, const struct wl_plan *plan, int brief,
                        FILE *out, struct wl_plan_cost *cost) {
   *cost = plan_cost(plan);
   int n = s->resolution.n_levels;
-  if (n == 0) return 0;
+  if (n == 0) return;
   struct wl_scenario *sl = malloc(sizeof *sl);
   struct wl_plan *pl = malloc(sizeof *pl);
   struct wl_plan_cost sum = {plan->dims, 0, 0, 0, 0};
@@ -85,14 +84,13 @@ static int ladder_cost(const struct wl_scenario *s, const struct wl_plan *plan, 
   }
   free(sl);
   free(pl);
-  if (!ok) return 0;
+  if (!ok) return;
   if (!brief && out)
     fprintf(out, "  all levels: %.3e particle-steps, about %.0f s on the CPU%s\n", steps,
             sum.cpu_seconds,
             s->resolution.target_error.given ? " (less when target_error stops the ladder early)"
                                              : "");
   *cost = sum;
-  return 1;
 }
 
 /* --budget HOURS and --force-large, shared by check and assess: 1 when
@@ -134,7 +132,7 @@ static enum wl_status judge_run(const struct wl_scenario *s, const struct wl_pla
   enum wl_status st = WL_OK;
   if (plan->solitary.present && (st = wl_plan_solitary_runnable(s, plan, err))) return st;
   struct wl_plan_machine m;
-  if ((st = wl_assess_machine(s, opts, &m, err))) return st;
+  wl_assess_machine(s, opts, &m);
   if (budget_s > 0) m.budget_seconds = budget_s;
   m.force_large = force_large;
   st = wl_plan_fits(s, cost, &m, err);
