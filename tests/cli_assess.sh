@@ -40,8 +40,10 @@ v = s['peak_force']['value']
 raise SystemExit(0 if abs(m - v) <= 1e-5 * abs(v) else 1)
 PY
 # summary positive-phase impulse == the trapezoid integral of (raw force -
-# static force) from the CSV over the filtered force's positive phase around
-# its peak, recomputed here in Python (loads.h definition), for both cases
+# force at rest) from the CSV over the filtered force's positive phase around
+# its peak, recomputed here in Python (loads.h definition), for both cases;
+# the force at rest == the trapezoid mean of the raw force over the rest
+# window the summary names (rho g d^2/2 where it names none)
 python3 - <<'PY' && ok "summary positive-phase impulse = integral of the stored force over the peak's positive phase" || bad "positive-phase impulse differs from the stored series"
 import json, csv
 summ = json.load(open('tiny-results/summary.json'))['cases']
@@ -51,7 +53,15 @@ for case, c in summ.items():
     t = [float(r['time_s']) for r in rows]
     f = [float(r['force_N_per_m']) for r in rows]
     ff = [float(r['force_filtered_N_per_m']) for r in rows]
-    fs = c['static_force']['value']
+    w0, w1 = c['rest_from']['value'], c['rest_to']['value']
+    if w0 is None:
+        fs = c['static_force']['value']
+    else:
+        ks = [k for k in range(len(t)) if w0 <= t[k] <= w1]
+        fs = sum(0.5 * (f[k] + f[k + 1]) * (t[k + 1] - t[k]) for k in ks[:-1]) / (t[ks[-1]] - t[ks[0]])
+    if abs(fs - c['rest_force']['value']) > 1e-6 * abs(fs):
+        print('%s: force at rest %.8g, summary %.8g' % (case, fs, c['rest_force']['value']))
+        bad += 1
     t0 = c['peaks_from']['value']
     ip = max((k for k in range(len(t)) if t[k] >= t0), key=lambda k: ff[k])
     a = b = ip

@@ -2,6 +2,7 @@
  * force and moment (REFERENCES 1.1: rho g h^2/2, rho g h^3/6), integrals of
  * known functions, the digital Butterworth magnitude response per pass
  * (bilinear transform), and rise time / duration of a triangle pulse. */
+#include <math.h>
 #include <stdlib.h>
 
 #include "testutil.h"
@@ -40,6 +41,26 @@ int main(void) {
   }
   wl_loads_cumulative(t, f, T, I);
   CHECK_REL(I[T - 1], 2.0, 1e-6, "int_0^pi sin = 2 (trapezoid error pi^2/(12 (T-1)^2) 2)");
+
+  /* The force at rest: the mean of F0 + A sin(2 pi t / T_a) over a whole
+   * number of acoustic periods T_a = 4 d / c0 is F0 (closed form); the rest
+   * window starts after two periods and must hold two more. */
+  {
+    const double d = 0.2, c0 = 16.0, Ta = 4 * d / c0, F0 = 196.2, A = 30.0, ds = 0.005;
+    double w0, w1;
+    CHECK_TRUE(wl_loads_rest_window(0.25, d, c0, &w0, &w1) == 1, "rest window [2 T_a, 0.25 s] usable");
+    CHECK_ABS(w0, 2 * Ta, 1e-15, "rest window starts two acoustic periods 4 d/c0 in");
+    CHECK_TRUE(wl_loads_rest_window(3.9 * Ta, d, c0, &w0, &w1) == 0,
+          "no rest window when fewer than two periods follow the first two");
+    CHECK_TRUE(wl_loads_rest_window(NAN, d, c0, &w0, &w1) == 0, "no rest window without an estimate");
+    enum { R = 201 };
+    double tr[R], fr[R];
+    for (int k = 0; k < R; k++) tr[k] = k * ds, fr[k] = F0 + A * sin(2 * WL_PI * tr[k] / Ta);
+    /* [2 Ta, 6 Ta] = [0.1, 0.3] s: four whole periods of 10 samples */
+    CHECK_REL(wl_loads_mean(tr, fr, R, 2 * Ta, 6 * Ta), F0, 1e-12,
+              "mean over whole periods = the force at rest (trapezoid rule exact on a sine's periods)");
+    CHECK_TRUE(isnan(wl_loads_mean(tr, fr, R, 0.1, 0.01)), "an empty window has no mean");
+  }
 
   /* Filter: sines well below, at and above the cut-off. filtfilt squares
    * the magnitude: gain = 1/(1 + (f/fc)^4) for a second-order Butterworth. */

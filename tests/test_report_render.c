@@ -614,7 +614,8 @@ static void test_full_report(void) {
   check_text(text, "governs explosion solitary solitary explosion solitary",
              "governs row: larger force, impulse, positive-phase impulse, moment, run-up");
   check_text(text, "filtered series", "peaks say they come from the filtered series");
-  check_text(text, "1.37 -0.0617 -4.3", "probe vs boundary: 1368.975 N/m, -61.725 N/m, -4.3 %");
+  check_text(text, "1.43 1.37 -4.3",
+             "probe vs boundary: 1430.7 N/m, 1368.975 N/m (-61.725 N/m), -4.3 % of the probe's");
   check_text(text, "the explosion case has the larger peak force, 2.54 kN/m",
              "summary: force governed by the explosion");
   check_text(text, "the solitary case the larger positive-phase impulse, 0.109 kN s/m",

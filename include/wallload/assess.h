@@ -83,9 +83,17 @@ struct wl_case_loads {
   double *force_filtered;   /* [N/m] */
   double *moment_filtered;  /* [N m/m] */
   double *force_bound_filtered;
-  double *impulse;          /* int (F - F_static) dt from the probes, raw force [N s/m] */
+  double *impulse;          /* int (F - F_rest) dt from the probes, raw force [N s/m] */
   double *impulse_bound;    /* the same from the boundary particles [N s/m] */
   struct wl_peak force_peak, moment_peak, force_bound_peak; /* of the filtered series */
+  /* The model's force (and moment) at rest, the base of every net
+   * quantity here (loads.h): the raw series' means over the rest window
+   * [rest_from, rest_to]; rest_measured 0 (no rest window) leaves the
+   * nominal static_force and static_moment in them. */
+  int rest_measured;
+  double rest_from, rest_to;                   /* [s]; NaN when not measured */
+  double rest_force, rest_force_bound;         /* probes, boundary particles [N/m] */
+  double rest_moment;                          /* probes [N m/m] */
   double impulse_total;     /* [N s/m] at the end of the record */
   double impulse_peak;      /* of the peak force's positive phase (loads.h), probes [N s/m] */
   double impulse_peak_from, impulse_peak_to; /* that phase [s] */
@@ -115,6 +123,7 @@ struct wl_case_result {
    * explosion: 30 N/m at t = 0.02 s against a 17.7 N/m static force, with
    * its wave arriving at 5.8 s). The impulse runs over the whole record. */
   double peak_from;
+  double quiet_until;       /* the plan's: the wall at rest until then [s] (plan.h) */
   /* A caution about the result, empty when there is none: the peak force
    * came in the last tenth of the record, so a larger load may follow
    * (case_caution in assess.c). */

@@ -7,9 +7,16 @@
  *    its width (3D).
  *  - moment M(t) [N m/m]: overturning moment about the wall's toe,
  *    integral of p(z) (z - z_toe) dz.
- *  - impulse I(t) [N s/m]: time integral of F from the start of the record
- *    (trapezoid rule on the stored samples); the "dynamic impulse" is the
- *    integral of F - F_static, F_static the hydrostatic force at rest.
+ *  - force at rest F_rest [N/m]: the model's own force on the wall before
+ *    the wave reaches it, the mean of the raw force over the rest window
+ *    (wl_loads_rest_window), each measurement (probes, boundary particles)
+ *    its own. It differs from the nominal rho g d^2/2 by the model's
+ *    discretisation at the wall (1-2 % at h/dp = 20); subtracting the
+ *    nominal value instead would add that error times the record's length
+ *    to the impulse. Without a rest window (the wave at the wall from the
+ *    start) the nominal value is the base, and the results say so.
+ *  - impulse I(t) [N s/m]: time integral of F - F_rest from the start of
+ *    the record (trapezoid rule on the stored samples).
  *  - filtered series: zero-phase low-pass (second-order Butterworth run
  *    forward and backward, so the response is fourth order with no time
  *    shift) at cut-off f_c. WCSPH's artificial compressibility makes the
@@ -18,10 +25,10 @@
  *    The cut-off is stored with every filtered series. Peaks are taken from
  *    the filtered series and say so.
  *  - rise time: from the last time before the peak the net force
- *    F - F_static was below 10 % of its peak, to the peak.
+ *    F - F_rest was below 10 % of its peak, to the peak.
  *  - duration: the time the net force stays above 10 % of its peak, from
  *    its first upward crossing to its last downward crossing.
- *  - positive-phase impulse [N s/m]: the integral of F - F_static over the
+ *  - positive-phase impulse [N s/m]: the integral of F - F_rest over the
  *    positive phase of the peak, from the last time before the peak that
  *    the filtered net force was at or below zero to the first time after
  *    it. It is the impulse that acts with the peak force. The net impulse
@@ -46,6 +53,18 @@
  * Gives the force per metre [N/m] and the moment about (z_toe) [N m/m]. */
 void wl_loads_profile(const double *z, const double *p, size_t n, double z_toe, double z_top,
                       double *force, double *moment);
+
+/* The window [*t0, *t1] [s] in which the wall's force at rest is read:
+ * from two acoustic periods of the water at the wall (4 d / c0 each: the
+ * start's settling rings at it) to quiet_until, the plan's estimate of the
+ * last time the wave leaves the wall's force alone (plan.h). Returns 1
+ * when the window holds at least two acoustic periods, else 0 (no rest
+ * window: the wave is at the wall from the start). */
+int wl_loads_rest_window(double quiet_until, double depth, double c0, double *t0, double *t1);
+
+/* The time mean of x over [t0, t1] (trapezoid rule over the samples inside
+ * it); NaN when fewer than 4 samples lie inside. */
+double wl_loads_mean(const double *t, const double *x, size_t n, double t0, double t1);
 
 /* Cumulative trapezoid integral out[k] = int_{t0}^{t_k} f dt (out[0] = 0).
  * out may alias nothing. */

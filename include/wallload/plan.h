@@ -46,6 +46,7 @@ struct wl_plan_solitary {
   double crest_x0;                     /* initial crest position [m] (initial condition) */
   int fits;                            /* 1: the crest starts seaward of the wall */
   double arrival_time;                 /* crest at the wall, estimated [s] */
+  double quiet_until;                  /* the wall's force at rest until then [s] (below) */
   double end_time;                     /* simulated time of this case [s] */
   double x_left;                       /* the modelled flume starts here [m] */
   long n_fluid, n_boundary;            /* estimated particles */
@@ -77,11 +78,23 @@ struct wl_plan_explosion {
   int model_thrown;                 /* 1: thrown mass (seed 000) */
   int thrown_parts;
   double arrival_time;              /* leading wave at the wall, estimated [s] */
+  double quiet_until;               /* the wall's force at rest until then [s] (below) */
   double end_time;                  /* simulated time of this case [s] */
   double x_left;                    /* the modelled flume starts here [m] */
   long n_fluid, n_boundary;         /* estimated particles */
   double particle_steps;            /* estimated to end_time */
 };
+
+/* quiet_until (both load cases): the last time the wave leaves the wall's
+ * force at rest alone, so that assess can read the model's own force at
+ * rest before it (loads.h, the rest window). The solitary wave: when its
+ * front, H sech^2(K s) at the distance s from its crest (Grimshaw's K as
+ * the plan's wave length), raises the water at the wall by
+ * WL_PLAN_QUIET_RISE of the depth there, about twice that share of the
+ * force at rest; the crest's travel as arrival_time's. The explosion: half
+ * the leading wave's arrival, which travels at the long-wave speed
+ * sqrt(g d), the fastest a gravity wave goes. */
+#define WL_PLAN_QUIET_RISE 1e-3
 
 enum { WL_PLAN_MAX_NOTES = 12 };
 

@@ -485,6 +485,9 @@ enum wl_status assess_case(const struct wl_scenario *s, const struct wl_plan *pl
                  : load == WL_CASE_EXPLOSION ? 0.5 * plan->explosion.arrival_time
                                              : 0.0;
   if (!(c->peak_from > 0) || c->peak_from > 0.5 * c->t_end) c->peak_from = 0.0;
+  c->quiet_until = load == WL_CASE_SOLITARY    ? plan->solitary.quiet_until
+                   : load == WL_CASE_EXPLOSION ? plan->explosion.quiet_until
+                                               : 0.0;
   c->rec.n_gauges = c->flume.n_gauges;
   c->rec.n_probes = c->flume.n_probes;
   const struct wl_backend_ops *ops;

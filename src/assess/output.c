@@ -342,18 +342,31 @@ static enum wl_status write_summary(const struct wl_scenario *s, const struct wl
     snprintf(filt_b, sizeof filt_b, "boundary particles, low-pass %.4g Hz", l->cutoff);
     jval(&t, "peak_force", l->force_peak.value, "N/m", filt, 0);
     jval(&t, "peak_force_time", l->force_peak.time, "s", filt, 0);
-    jval(&t, "peak_force_dynamic", l->force_peak.value - c->static_force, "N/m",
-         "peak_force minus the hydrostatic force at rest", 0);
+    jval(&t, "peak_force_dynamic", l->force_peak.value - l->rest_force, "N/m",
+         "peak_force minus the force at rest", 0);
     jval(&t, "peak_force_boundary", l->force_bound_peak.value, "N/m", filt_b, 0);
     jval(&t, "static_force", c->static_force, "N/m", "rho g d^2/2 at the wall at rest", 0);
+    {
+      char rest[160];
+      if (l->rest_measured)
+        snprintf(rest, sizeof rest, "the model's, mean of the raw force from %.4g to %.4g s, "
+                 "before the wave reaches the wall", l->rest_from, l->rest_to);
+      else
+        snprintf(rest, sizeof rest, "no time at rest before the wave reaches the wall: the "
+                 "nominal static_force");
+      jval(&t, "rest_force", l->rest_force, "N/m", rest, 0);
+      jval(&t, "rest_force_boundary", l->rest_force_bound, "N/m", rest, 0);
+      jval(&t, "rest_from", l->rest_from, "s", "start of the rest window (null: none)", 0);
+      jval(&t, "rest_to", l->rest_to, "s", "end of the rest window (null: none)", 0);
+    }
     jval(&t, "impulse", l->impulse_total, "N s/m",
-         "integral of (force - static force), raw pressure-probe force", 0);
+         "integral of (force - rest_force), raw pressure-probe force", 0);
     jval(&t, "impulse_boundary", c->rec.n ? l->impulse_bound[c->rec.n - 1] : NAN, "N s/m",
-         "integral of (force - static force), boundary particles", 0);
+         "integral of (force - rest_force_boundary), boundary particles", 0);
     {
       char ph[160];
       snprintf(ph, sizeof ph,
-               "integral of (force - static force) over the peak's positive phase, %.4g to %.4g s, "
+               "integral of (force - rest_force) over the peak's positive phase, %.4g to %.4g s, "
                "raw pressure-probe force",
                l->impulse_peak_from, l->impulse_peak_to);
       jval(&t, "impulse_positive_phase", l->impulse_peak, "N s/m", ph, 0);
@@ -547,6 +560,11 @@ static enum wl_status write_case_h5(struct wl_store *h5, const struct wl_case_re
       {"peaks_from", c->peak_from, "s"},
       {"static_force", c->static_force, "N/m"},
       {"static_moment", c->static_moment, "N m/m"},
+      {"rest_force", l->rest_force, "N/m"},
+      {"rest_force_boundary", l->rest_force_bound, "N/m"},
+      {"rest_moment", l->rest_moment, "N m/m"},
+      {"rest_from", l->rest_from, "s"},
+      {"rest_to", l->rest_to, "s"},
       {"wall_x", f->x_wall, "m"},
       {"wall_toe_z", f->z_toe, "m"},
       {"wall_crest_z", f->z_crest, "m"},

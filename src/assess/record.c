@@ -77,6 +77,21 @@ enum wl_status case_loads_compute(struct wl_case_result *c, struct wl_error *err
       (st = filtered(r->moment, n, dt, l->cutoff, &l->moment_filtered, err)) ||
       (st = filtered(r->force_bound, n, dt, l->cutoff, &l->force_bound_filtered, err)))
     return st;
+  /* the model's own force at rest (loads.h) */
+  const double depth = c->depth_wall > 0 ? c->depth_wall : c->h;
+  double w0, w1;
+  l->rest_measured = wl_loads_rest_window(c->quiet_until, depth, c->c0, &w0, &w1);
+  l->rest_force = l->rest_measured ? wl_loads_mean(r->t, r->force, n, w0, w1) : NAN;
+  l->rest_force_bound = l->rest_measured ? wl_loads_mean(r->t, r->force_bound, n, w0, w1) : NAN;
+  l->rest_moment = l->rest_measured ? wl_loads_mean(r->t, r->moment, n, w0, w1) : NAN;
+  l->rest_measured = l->rest_measured && isfinite(l->rest_force) &&
+                     isfinite(l->rest_force_bound) && isfinite(l->rest_moment);
+  l->rest_from = l->rest_measured ? w0 : NAN;
+  l->rest_to = l->rest_measured ? fmin(w1, r->t[n - 1]) : NAN;
+  if (!l->rest_measured) {
+    l->rest_force = l->rest_force_bound = c->static_force;
+    l->rest_moment = c->static_moment;
+  }
   l->impulse = malloc(n * sizeof *l->impulse);
   l->impulse_bound = malloc(n * sizeof *l->impulse_bound);
   double *net = malloc(n * sizeof *net);
@@ -84,24 +99,24 @@ enum wl_status case_loads_compute(struct wl_case_result *c, struct wl_error *err
     free(net);
     return wl_error_set(err, WL_ENOMEM, "loads: no memory for %zu samples", n);
   }
-  for (size_t k = 0; k < n; k++) net[k] = r->force[k] - c->static_force;
+  for (size_t k = 0; k < n; k++) net[k] = r->force[k] - l->rest_force;
   wl_loads_cumulative(r->t, net, n, l->impulse);
-  for (size_t k = 0; k < n; k++) net[k] = r->force_bound[k] - c->static_force;
+  for (size_t k = 0; k < n; k++) net[k] = r->force_bound[k] - l->rest_force_bound;
   wl_loads_cumulative(r->t, net, n, l->impulse_bound);
   free(net);
   l->impulse_total = l->impulse[n - 1];
   size_t k0 = 0; /* peaks from c->peak_from on (assess.h) */
   while (k0 + 1 < n && r->t[k0] < c->peak_from) k0++;
-  wl_loads_peak(r->t + k0, l->force_filtered + k0, n - k0, c->static_force, &l->force_peak);
-  wl_loads_peak(r->t + k0, l->moment_filtered + k0, n - k0, c->static_moment, &l->moment_peak);
-  wl_loads_peak(r->t + k0, l->force_bound_filtered + k0, n - k0, c->static_force,
+  wl_loads_peak(r->t + k0, l->force_filtered + k0, n - k0, l->rest_force, &l->force_peak);
+  wl_loads_peak(r->t + k0, l->moment_filtered + k0, n - k0, l->rest_moment, &l->moment_peak);
+  wl_loads_peak(r->t + k0, l->force_bound_filtered + k0, n - k0, l->rest_force_bound,
                 &l->force_bound_peak);
   /* indices of the stored series, not of the searched part */
   l->force_peak.index += k0;
   l->moment_peak.index += k0;
   l->force_bound_peak.index += k0;
   l->impulse_peak = wl_loads_positive_phase_impulse(r->t, l->force_filtered, l->impulse, n,
-                                                    c->static_force, l->force_peak.index,
+                                                    l->rest_force, l->force_peak.index,
                                                     &l->impulse_peak_from, &l->impulse_peak_to);
   /* run-up: the last gauge is the one at the wall face */
   int gw = r->n_gauges - 1;

@@ -34,6 +34,24 @@ void wl_loads_cumulative(const double *t, const double *f, size_t n, double *out
   for (size_t k = 1; k < n; k++) out[k] = out[k - 1] + 0.5 * (f[k] + f[k - 1]) * (t[k] - t[k - 1]);
 }
 
+int wl_loads_rest_window(double quiet_until, double depth, double c0, double *t0, double *t1) {
+  const double period = 4.0 * depth / c0;
+  *t0 = 2.0 * period;
+  *t1 = quiet_until;
+  return isfinite(period) && period > 0 && isfinite(quiet_until) && *t1 - *t0 >= 2.0 * period;
+}
+
+double wl_loads_mean(const double *t, const double *x, size_t n, double t0, double t1) {
+  size_t k0 = 0;
+  while (k0 < n && t[k0] < t0) k0++;
+  size_t k1 = k0;
+  while (k1 < n && t[k1] <= t1) k1++;
+  if (k1 - k0 < 4) return NAN;
+  double s = 0.0;
+  for (size_t k = k0 + 1; k < k1; k++) s += 0.5 * (x[k] + x[k - 1]) * (t[k] - t[k - 1]);
+  return s / (t[k1 - 1] - t[k0]);
+}
+
 double wl_loads_cutoff(double c0, double depth, double dt_sample) {
   double fc = c0 / (8.0 * depth);
   double cap = 0.4 * 0.5 / dt_sample;

@@ -223,6 +223,19 @@ static enum wl_status plan_solitary(const struct wl_scenario *s, struct wl_plan 
     ps->x_left = fmax(0.0, ps->crest_x0 - 0.5 * length);
   }
   ps->end_time = ps->arrival_time + LOAD_PASSES * length / c;
+  {
+    /* the front's distance from the crest when it raises the water at the
+     * wall by WL_PLAN_QUIET_RISE of the depth there (plan.h) */
+    const double d_wall = fmax(p->h - wl_scenario_bed_z(s, xw), 0.0);
+    const double rise = WL_PLAN_QUIET_RISE * d_wall;
+    const double s_front = H > rise && rise > 0 ? acosh(sqrt(H / rise)) / K : 0.0;
+    const double x_front = xw - s_front;
+    if (ps->paddle)
+      ps->quiet_until = x_front > 0 ? ps->goring.lambda / c + travel_time(s, p->h, H, c, 0.0, x_front) : 0.0;
+    else
+      ps->quiet_until = x_front > ps->crest_x0 ? travel_time(s, p->h, H, c, ps->crest_x0, x_front) : 0.0;
+    ps->quiet_until = fmin(ps->quiet_until, ps->arrival_time);
+  }
   if (ps->wave.eps > WL_WAVES_EPS_GRIMSHAW_ACCURATE) {
     /* Beyond its accurate range, say by how much the third-order energy
      * misses the exact solitary wave's (Clamond & Dutykh method). */
@@ -350,6 +363,7 @@ static enum wl_status plan_explosion(const struct wl_scenario *s, struct wl_plan
          px->eta0, p->h);
   double c_lin = sqrt(p->g * p->h);
   px->arrival_time = travel_time(s, p->h, 0.0, c_lin, px->x_center + px->extent, xw);
+  px->quiet_until = 0.5 * px->arrival_time; /* plan.h */
   /* The explosion's wave train is dispersive: shorter waves travel slower
    * than sqrt(g h). Run until the slowest part that matters (the train
    * behind the leading wave) has reached the wall. */
@@ -660,6 +674,7 @@ void wl_plan_write(const struct wl_plan *p, FILE *out) {
     else
       fprintf(out, "    %-34s %12.5g m\n", "initial crest position", ps->crest_x0);
     fprintf(out, "    %-34s %12.5g s\n", "arrival at the wall", ps->arrival_time);
+    fprintf(out, "    %-34s %12.5g s\n", "wall's force at rest read until", ps->quiet_until);
     fprintf(out, "    %-34s %12.5g s\n", "end time", ps->end_time);
     fprintf(out, "    %-34s %12.5g m      (%ld fluid + %ld boundary particles, %.3g particle-steps)\n",
             "flume modelled from x", ps->x_left, ps->n_fluid, ps->n_boundary, ps->particle_steps);
@@ -701,6 +716,7 @@ void wl_plan_write(const struct wl_plan *p, FILE *out) {
     if (px->model_thrown)
       fprintf(out, "    model: thrown mass in %d parts (seed 000)\n", px->thrown_parts);
     fprintf(out, "    %-34s %12.5g s\n", "leading wave at the wall", px->arrival_time);
+    fprintf(out, "    %-34s %12.5g s\n", "wall's force at rest read until", px->quiet_until);
     if (px->absorber > 0)
       fprintf(out, "    %-34s %12.5g m      (x = %.4g to %.4g m: the seaward end absorbs)\n",
               "absorbing zone", px->absorber, px->x_left, px->x_left + px->absorber);

@@ -301,8 +301,12 @@ static void case_derive(struct wl_report_case *c) {
   size_t n = c->n;
   if (n == 0 || !c->t)
     return;
-  double fs = isfinite(c->static_force) ? c->static_force : 0.0;
-  double ms = isfinite(c->static_moment) ? c->static_moment : 0.0;
+  /* the bases assess used: the model's force at rest where it measured it */
+  const double fs0 = isfinite(c->static_force) ? c->static_force : 0.0;
+  const double fs = isfinite(c->rest_force) ? c->rest_force : fs0;
+  const double fbs = isfinite(c->rest_force_b) ? c->rest_force_b : fs0;
+  const double ms = isfinite(c->rest_moment) ? c->rest_moment
+                    : isfinite(c->static_moment) ? c->static_moment : 0.0;
   c->filtered = c->force_f != NULL;
   const double *f = c->force_f ? c->force_f : c->force;
   const double *fb = c->force_bf ? c->force_bf : c->force_b;
@@ -315,7 +319,7 @@ static void case_derive(struct wl_report_case *c) {
   if (f)
     wl_loads_peak(c->t + k0, f + k0, n - k0, fs, &c->force_peak), c->force_peak.index += k0;
   if (fb)
-    wl_loads_peak(c->t + k0, fb + k0, n - k0, fs, &c->force_b_peak), c->force_b_peak.index += k0;
+    wl_loads_peak(c->t + k0, fb + k0, n - k0, fbs, &c->force_b_peak), c->force_b_peak.index += k0;
   if (m)
     wl_loads_peak(c->t + k0, m + k0, n - k0, ms, &c->moment_peak), c->moment_peak.index += k0;
   if (c->impulse)
@@ -363,6 +367,11 @@ static enum wl_status read_case(hid_t file, const char *file_name, int index,
       {"peaks_from", &c->peaks_from},
       {"static_force", &c->static_force},
       {"static_moment", &c->static_moment},
+      {"rest_force", &c->rest_force},
+      {"rest_force_boundary", &c->rest_force_b},
+      {"rest_moment", &c->rest_moment},
+      {"rest_from", &c->rest_from},
+      {"rest_to", &c->rest_to},
       {"wall_x", &c->wall_x},
       {"wall_toe_z", &c->wall_toe_z},
       {"wall_crest_z", &c->wall_crest_z},

@@ -50,6 +50,10 @@ struct wl_report_case {
   double peaks_from;    /* peaks are searched from this time on [s] (assess.h; 0 when absent) */
   double static_force;  /* [N/m] */
   double static_moment; /* [N m/m] */
+  /* the model's force and moment at rest, measured over [rest_from,
+   * rest_to] (assess.h; NAN when not measured or not stored: then the
+   * static values are the base) */
+  double rest_force, rest_force_b, rest_moment, rest_from, rest_to;
   double wall_x, wall_toe_z, wall_crest_z, still_water_z; /* [m] */
   size_t n;                                               /* samples */
   double *t;                                              /* [s] */
@@ -66,9 +70,9 @@ struct wl_report_case {
   int wall_gauge; /* index of the gauge named "wall" (run-up); -1 if none */
   /* derived (loads.h definitions; NAN / index 0 when the record is empty) */
   int filtered; /* 1: peaks from the stored filtered series; 0: from raw (no filtered) */
-  struct wl_peak force_peak;             /* of force_f (base static_force) */
+  struct wl_peak force_peak;             /* of force_f (base: the force at rest) */
   struct wl_peak force_b_peak;           /* of force_bf */
-  struct wl_peak moment_peak;            /* of moment_f (base static_moment) */
+  struct wl_peak moment_peak;            /* of moment_f (base: the moment at rest) */
   double impulse_total, impulse_b_total; /* last samples [N s/m] */
   double impulse_peak;                   /* of the force peak's positive phase [N s/m] */
   double impulse_peak_from, impulse_peak_to; /* that phase [s] */

@@ -189,14 +189,18 @@ static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
       break;
     }
   if (first >= 0) {
-    char cut[64], fs[64];
+    char cut[64], fs[64], fs0[64];
     put(&b,
         "Peak forces are those of the pressure probes on the wall face, %s (cut-off %s Hz); "
-        "impulses integrate the force in excess of the hydrostatic force at rest (%s kN/m) over "
-        "the peak's positive phase (the net impulse of the whole record is in the peaks table). ",
+        "impulses integrate the force in excess of the model's force at rest (%s kN/m, "
+        "rho g d^2/2 = %s kN/m) over the peak's positive phase (the net impulse of the whole "
+        "record is in the peaks table). ",
         cs[first].filtered ? "low-pass filtered" : "unfiltered (no filtered series stored)",
         wl_report_fmt(cs[first].cutoff, 3, cut, sizeof cut),
-        wl_report_fmt(cs[first].static_force / KILO, dg, fs, sizeof fs));
+        wl_report_fmt((isfinite(cs[first].rest_force) ? cs[first].rest_force
+                                                       : cs[first].static_force) / KILO,
+                      dg, fs, sizeof fs),
+        wl_report_fmt(cs[first].static_force / KILO, dg, fs0, sizeof fs0));
     put(&b, "Error indicator: the force summed on the wall's boundary particles peaks at");
     int k = 0;
     for (int i = 0; i < WL_REPORT_N_CASES; i++) {
@@ -342,8 +346,10 @@ enum wl_status wl_report_render_peaks(struct wl_report_ctx *c, const struct wl_r
         d, err,
         "Peak force and peak moment are taken from the low-pass filtered series (zero-phase "
         "Butterworth, cut-off c0/(8 d), d the water depth at the wall: %s), not from the raw "
-        "ones. Impulse is the time integral of the raw probe force minus the hydrostatic force "
-        "at rest, to the end of the record; the positive phase's impulse is that integral over "
+        "ones. Impulse is the time integral of the raw probe force minus the model's force at "
+        "rest (its mean before the wave reaches the wall, which differs from rho g d^2/2 by the "
+        "discretisation at the wall; rho g d^2/2 itself where the wave is at the wall from the "
+        "start), to the end of the record; the positive phase's impulse is that integral over "
         "the peak's positive phase only (from the last time before the peak that the filtered "
         "force was at or below the force at rest to the first time after it): the impulse "
         "that acts with the peak, where an oscillating wave train's net impulse nearly "
@@ -452,10 +458,10 @@ enum wl_status wl_report_render_peaks(struct wl_report_ctx *c, const struct wl_r
   /* Probe force against boundary-particle force: the error indicator. */
   static const struct wl_report_column ecols0[] = {
       {"case", NULL, WL_REPORT_ALIGN_LEFT, 0},
-      {"at rest", "kN/m", WL_REPORT_ALIGN_AUTO, 0},
+      {"probes at rest", "kN/m", WL_REPORT_ALIGN_AUTO, 0},
+      {"boundary at rest", "kN/m", WL_REPORT_ALIGN_AUTO, 0},
       {"probe peak", "kN/m", WL_REPORT_ALIGN_AUTO, 0},
       {"boundary peak", "kN/m", WL_REPORT_ALIGN_AUTO, 0},
-      {"difference", "kN/m", WL_REPORT_ALIGN_AUTO, 0},
       {"difference", "% of probe", WL_REPORT_ALIGN_AUTO, 0},
       {"boundary impulse", "kN s/m", WL_REPORT_ALIGN_AUTO, 0},
   };
@@ -473,10 +479,12 @@ enum wl_status wl_report_render_peaks(struct wl_report_ctx *c, const struct wl_r
       continue;
     struct wl_report_cell *row = &ecells[erows * NE];
     row[0] = (struct wl_report_cell){k->name, 0};
-    row[1] = (struct wl_report_cell){NULL, k->static_force / KILO};
-    row[2] = (struct wl_report_cell){NULL, k->force_peak.value / KILO};
-    row[3] = (struct wl_report_cell){NULL, k->force_b_peak.value / KILO};
-    row[4] = (struct wl_report_cell){NULL, (k->force_b_peak.value - k->force_peak.value) / KILO};
+    row[1] = (struct wl_report_cell){
+        NULL, (isfinite(k->rest_force) ? k->rest_force : k->static_force) / KILO};
+    row[2] = (struct wl_report_cell){
+        NULL, (isfinite(k->rest_force_b) ? k->rest_force_b : k->static_force) / KILO};
+    row[3] = (struct wl_report_cell){NULL, k->force_peak.value / KILO};
+    row[4] = (struct wl_report_cell){NULL, k->force_b_peak.value / KILO};
     row[5] = (struct wl_report_cell){NULL, 100.0 * (k->force_b_peak.value - k->force_peak.value) /
                                                fabs(k->force_peak.value)};
     row[6] = (struct wl_report_cell){NULL, k->impulse_b_total / KILO};
@@ -488,7 +496,9 @@ enum wl_status wl_report_render_peaks(struct wl_report_ctx *c, const struct wl_r
         "The wall force is measured twice: by the pressure probes on the wall face (the "
         "values above) and by summing the SPH forces on the wall's boundary particles. The "
         "difference between the two is an indicator of the numerical error of the wall load "
-        "at this resolution (a convergence ladder gives a proper estimate).",
+        "at this resolution (a convergence ladder gives a proper estimate). Each measurement's "
+        "force at rest is its own mean before the wave reaches the wall; each impulse "
+        "subtracts its own.",
         err);
     struct wl_report_table et = {"Probe and boundary-particle wall force (filtered peaks)", ecols,
                                  NE, ecells, erows};

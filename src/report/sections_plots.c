@@ -301,7 +301,9 @@ enum wl_status wl_report_render_loads(struct wl_report_ctx *c, const struct wl_r
     if (r->cases[i].present && r->cases[i].n) {
       any = 1;
       if (!isfinite(fs))
-        fs = r->cases[i].static_force, cut = r->cases[i].cutoff;
+        fs = isfinite(r->cases[i].rest_force) ? r->cases[i].rest_force
+                                              : r->cases[i].static_force,
+        cut = r->cases[i].cutoff;
     }
   if (!st && !any) {
     st = wl_report_paragraphf(d, err, "No wall-load histories: no case recorded samples.%s",
@@ -326,7 +328,7 @@ enum wl_status wl_report_render_loads(struct wl_report_ctx *c, const struct wl_r
     snprintf(cap, sizeof cap,
              "Horizontal force per metre of wall, low-pass filtered (cut-off %.3g Hz), from the "
              "pressure probes (solid) and summed on the wall's boundary particles (dashed); the "
-             "line marks the hydrostatic force at rest.%s",
+             "line marks the probes' force at rest.%s",
              cut, missing);
     if (!st)
       st = figure(d, &p, PLOT_H + 20.0, cap, err);
@@ -378,8 +380,8 @@ enum wl_status wl_report_render_loads(struct wl_report_ctx *c, const struct wl_r
     st = case_lines(c, &sc, imp, 2, -1, 0, &p, ser, labels, err);
     snprintf(cap, sizeof cap,
              "Impulse per metre of wall: the time integral of the raw force in excess of the "
-             "hydrostatic force at rest, from the probes (solid) and the boundary particles "
-             "(dashed).%s",
+             "force at rest, from the probes (solid) and the boundary particles (dashed), each "
+             "its own force at rest.%s",
              missing);
     if (!st)
       st = figure(d, &p, PLOT_H, cap, err);
