@@ -18,6 +18,12 @@
 #                              breaks to the end with assess's numerics, and
 #                              seawall.yaml with each wall condition on the
 #                              GPU; $OUT/walls.log, $OUT/walls.tgz
+#   bench/assess_e2e.sh ladder there (carry [".e2e"]): issue 19's convergence
+#                              measurement, seawall.yaml on the GPU with a
+#                              4-level ladder (1, 0.71, 0.5, 0.35): dp auto
+#                              (whole rows of still water) and dp = 0.0125 m
+#                              as given (the spacings before whole rows);
+#                              $OUT/ladder.log, $OUT/ladder.tgz
 #   python3 bench/assess_compare.py DIR   here, on the unpacked e2e.tgz
 set -u
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -113,5 +119,25 @@ walls)
   } 2>&1 | tee "$out/walls.log"
   (cd $R && tar czf "$out/walls.tgz" */summary.json */*.csv *.log *.yaml)
   ;;
-*) echo "usage: bench/assess_e2e.sh pack|run|walls" >&2; exit 2 ;;
+ladder)
+  R=/tmp/ladder; mkdir -p $R; out=${OUT:-/tmp}
+  export FONTCONFIG_FILE=$E/fonts.conf LD_LIBRARY_PATH=$E/lib
+  W=$E/wallload
+  lad='  convergence: [1, 0.7071, 0.5, 0.3536]'
+  sed "s|^  particles_per_height: 4\$|&\n$lad|" "$root/scenarios/seawall.yaml" >$R/whole.yaml
+  sed "s|^  dp: auto\$|  dp: 0.0125 m|; s|^  particles_per_height: 4\$|$lad|" \
+    "$root/scenarios/seawall.yaml" >$R/given.yaml
+  {
+    echo "# $(date -u +%FT%TZ) $(nvidia-smi --query-gpu=name,memory.total,driver_version --format=csv,noheader 2>&1)"
+    "$W" --version
+    for n in whole given; do
+      echo "== $n"; grep -E '^  (dp|particles_per|convergence)' $R/$n.yaml
+      timeout ${LADDER_T:-280} "$W" assess $R/$n.yaml --backend cuda --quiet -o $R/$n >$R/$n.log 2>&1
+      echo "rc=$?"; tail -45 $R/$n.log
+      cat $R/$n/convergence.csv 2>/dev/null
+    done
+  } 2>&1 | tee "$out/ladder.log"
+  (cd $R && tar czf "$out/ladder.tgz" */summary.json */*.csv *.log *.yaml)
+  ;;
+*) echo "usage: bench/assess_e2e.sh pack|run|walls|ladder" >&2; exit 2 ;;
 esac

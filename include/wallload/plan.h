@@ -104,6 +104,11 @@ struct wl_plan {
   struct wl_plan_solitary solitary;
   struct wl_plan_explosion explosion;
   double dp;                        /* particle spacing [m] */
+  double dp_target;                 /* the spacing asked for (particles_per_height, or
+                                       resolution.dp), before wl_plan_whole_rows_dp [m] */
+  double depth_model, depth_wall, depth_wall_model; /* still water offshore (modelled; the
+                                       nominal is h) and at the wall (nominal, modelled) as
+                                       whole particle rows [m] */
   double coefh;                     /* resolved numerics.coefh [-] (auto: WL_PLAN_COEFH_2D/3D) */
   int evals_per_step;               /* force evaluations a time step: 2 symplectic, 1 Verlet */
   char dims_reason[160];            /* why dims: given, or auto's reason */
@@ -181,6 +186,37 @@ static inline void wl_plan_default_numerics(struct wl_sph_params *prm) {
 #define WL_PLAN_GPU_STEP_S_VERLET 1.5e-4
 #define WL_PLAN_GPU_RATE 2.70e9
 #define WL_PLAN_GPU_RATE_3D 7.67e8
+
+/* Whole rows of still water. The scene lays fluid rows at z_min + (j +
+ * 1/2) dp (scene.c: z_min the lowest bed point up to the wall), every row
+ * at least dp/2 above the bed and below the still-water level h; the water
+ * a row stands for is dp deep, so a depth that is not a whole number of dp
+ * is modelled shallower or deeper by up to dp/2: 0.06 m on seawall.yaml's
+ * platform was 0.05 or 0.0625 m (-17 or +4 %, and the wall's force at rest
+ * -31 or +9 %). wl_plan_whole_rows_dp returns the spacing within
+ * [WL_PLAN_DP_FINER, WL_PLAN_DP_COARSER] x dp_target that models the
+ * offshore depth and the depth at the wall best (the largest relative
+ * error of the two least; among equal, the spacing nearest dp_target):
+ * both exactly where the depths are commensurate, as 0.36 and 0.06 m are
+ * at dp = 0.06/n. *worst gets that largest relative depth error (NULL: not
+ * wanted). With resolution.dp: auto the plan and every level of a
+ * convergence ladder use it; a dp the scenario gives is kept as given. */
+#define WL_PLAN_DP_FINER 0.8
+#define WL_PLAN_DP_COARSER 1.1
+double wl_plan_whole_rows_dp(const struct wl_scenario *s, double dp_target, double *worst);
+
+/* The spacing of a convergence ladder's level with the given factor: with
+ * resolution.dp: auto, wl_plan_whole_rows_dp of dp_target x factor (so
+ * every level models the still water in whole rows, and the levels'
+ * ratios stay near the factors'); a dp the scenario gives times factor. */
+double wl_plan_level_dp(const struct wl_scenario *s, const struct wl_plan *p, double factor);
+
+/* The still-water depth the scene models over a bed at height z_bed [m]
+ * at spacing dp (above); z_min the lowest bed point. */
+double wl_plan_modelled_depth(double h, double z_min, double z_bed, double dp);
+
+/* The lowest bed point from the flume's start to the wall [m]. */
+double wl_plan_bed_min(const struct wl_scenario *s);
 
 /* Build the plan of a validated scenario. Returns WL_OK; WL_EINPUT when a
  * formula's validity is exceeded (message names the scenario key);

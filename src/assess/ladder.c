@@ -129,9 +129,10 @@ enum wl_status ladder_run(const struct wl_scenario *s, const struct wl_plan *pla
   cv->error_estimate = NAN;
   for (int k = 0; k < n; k++) {
     cv->lv[k].factor = s->resolution.levels[k].q.si;
-    cv->lv[k].dp = plan->dp * cv->lv[k].factor;
+    cv->lv[k].dp = wl_plan_level_dp(s, plan, cv->lv[k].factor);
   }
-  /* each level is the scenario with dp set to dp x factor, planned again */
+  /* each level is the scenario with dp set to the level's (plan.h
+   * wl_plan_level_dp), planned again */
   struct wl_scenario *sl = malloc(sizeof *sl);
   struct wl_plan *pl = malloc(sizeof *pl);
   if (!sl || !pl) {

@@ -41,7 +41,8 @@ static struct wl_plan_cost plan_cost(const struct wl_plan *p) {
   return c;
 }
 
-/* The cost of the convergence ladder: each level re-planned at dp x factor
+/* The cost of the convergence ladder: each level re-planned at its dp (plan.h
+ * wl_plan_level_dp)
  * (as assess runs it). Prints one line per level and the total to out (or
  * only the total line when `brief`; out may be NULL); *cost gets the sum of
  * the levels' times and the largest level's memory; without a ladder, or
@@ -61,7 +62,7 @@ static void ladder_cost(const struct wl_scenario *s, const struct wl_plan *plan,
     *sl = *s; /* shallow copy: only read by the plan */
     sl->resolution.dp.is_auto = 0;
     sl->resolution.dp.given = 1;
-    sl->resolution.dp.q.si = plan->dp * s->resolution.levels[k].q.si;
+    sl->resolution.dp.q.si = wl_plan_level_dp(s, plan, s->resolution.levels[k].q.si);
     struct wl_error e;
     wl_error_clear(&e);
     if (wl_plan_make(sl, pl, &e) != WL_OK) {
@@ -77,7 +78,7 @@ static void ladder_cost(const struct wl_scenario *s, const struct wl_plan *plan,
     if (!brief && out) {
       char dps[32];
       snprintf(dps, sizeof dps, "%.4g m", pl->dp);
-      fprintf(out, "  level %d  dp x %-5s = %-10s %8ld particles  %10.3e particle-steps  %6.0f s\n",
+      fprintf(out, "  level %d  x %-5s dp = %-10s %8ld particles  %10.3e particle-steps  %6.0f s\n",
               k + 1, s->resolution.levels[k].text, dps, pl->n_fluid + pl->n_boundary,
               pl->particle_steps, pl->cpu_seconds);
     }

@@ -524,6 +524,56 @@ static enum wl_status plan_sides(const struct wl_scenario *s, struct wl_plan *p,
   return WL_OK;
 }
 
+double wl_plan_bed_min(const struct wl_scenario *s) {
+  double z = fmin(0.0, wl_scenario_bed_z(s, s->wall.x.q.si));
+  for (int i = 0; i < s->n_bed; i++)
+    if (s->bed[i].from.q.si < s->wall.x.q.si) z = fmin(z, wl_scenario_bed_z(s, s->bed[i].from.q.si));
+  return z;
+}
+
+double wl_plan_modelled_depth(double h, double z_min, double z_bed, double dp) {
+  /* rows j >= 0 with z_min + (j + 1/2) dp < h, and from the first at least
+   * dp/2 above z_bed (scene.c; its lattice tolerance 1e-9) */
+  const double top = ceil((h - z_min) / dp - 0.5 - 1e-9);
+  const double first = ceil((z_bed - z_min) / dp - 1e-9);
+  return fmax(top - first, 0.0) * dp;
+}
+
+double wl_plan_whole_rows_dp(const struct wl_scenario *s, double dp_target, double *worst) {
+  const double h = s->water.depth.q.si, z_min = wl_plan_bed_min(s);
+  const double z_wall = wl_scenario_bed_z(s, s->wall.x.q.si);
+  const double depths[3] = {h - z_min, h - z_wall, z_wall - z_min};
+  double best = dp_target, best_err = INFINITY, best_dist = INFINITY;
+  for (int d = 0; d < 3; d++) {
+    if (!(depths[d] > 0)) continue;
+    const long n0 = (long)floor(depths[d] / (WL_PLAN_DP_COARSER * dp_target));
+    const long n1 = (long)ceil(depths[d] / (WL_PLAN_DP_FINER * dp_target));
+    for (long n = n0 > 1 ? n0 : 1; n <= n1 + 1; n++) {
+      const double dp = n == n1 + 1 ? dp_target : depths[d] / (double)n; /* and the target */
+      if (dp < WL_PLAN_DP_FINER * dp_target * (1 - 1e-12) ||
+          dp > WL_PLAN_DP_COARSER * dp_target * (1 + 1e-12))
+        continue;
+      double e = 0.0;
+      for (int m = 0; m < 2; m++) {
+        const double zb = m == 0 ? z_min : z_wall;
+        if (h - zb > 0)
+          e = fmax(e, fabs(wl_plan_modelled_depth(h, z_min, zb, dp) - (h - zb)) / (h - zb));
+      }
+      const double dist = fabs(log(dp / dp_target));
+      /* errors below 1e-9 are exact: then the nearest spacing wins */
+      const double ek = e < 1e-9 ? 0.0 : e, bk = best_err < 1e-9 ? 0.0 : best_err;
+      if (ek < bk || (ek == bk && dist < best_dist)) best = dp, best_err = e, best_dist = dist;
+    }
+  }
+  if (worst) *worst = best_err;
+  return best;
+}
+
+double wl_plan_level_dp(const struct wl_scenario *s, const struct wl_plan *p, double factor) {
+  return s->resolution.dp.is_auto ? wl_plan_whole_rows_dp(s, p->dp_target * factor, NULL)
+                                  : p->dp * factor;
+}
+
 static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_plan *p,
                                       struct wl_error *err) {
   p->fluid_area = wet_area(s, p->h, 0.0);
@@ -533,10 +583,27 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
   if (p->solitary.present) smallest = fmin(smallest, p->solitary.wave.H);
   if (p->explosion.present) smallest = fmin(smallest, p->explosion.eta0);
   double ppH = s->resolution.particles_per_height.q.si;
-  p->dp = s->resolution.dp.is_auto ? smallest / ppH : s->resolution.dp.q.si;
+  p->dp_target = s->resolution.dp.is_auto ? smallest / ppH : s->resolution.dp.q.si;
+  double depth_err = 0.0;
+  p->dp = s->resolution.dp.is_auto ? wl_plan_whole_rows_dp(s, p->dp_target, &depth_err)
+                                   : p->dp_target;
   if (!s->resolution.dp.is_auto && smallest / p->dp < 4)
     note(p, "dp = %g m gives only %.1f particles over the smallest wave height (%.3g m)", p->dp,
          smallest / p->dp, smallest);
+  {
+    const double z_min = wl_plan_bed_min(s), z_wall = wl_scenario_bed_z(s, s->wall.x.q.si);
+    p->depth_model = wl_plan_modelled_depth(p->h, z_min, z_min, p->dp);
+    p->depth_wall = p->h - z_wall;
+    p->depth_wall_model = wl_plan_modelled_depth(p->h, z_min, z_wall, p->dp);
+    const double e0 = fabs(p->depth_model / (p->h - z_min) - 1.0);
+    const double ew = p->depth_wall > 0 ? fabs(p->depth_wall_model / p->depth_wall - 1.0) : 0.0;
+    if (fmax(e0, ew) > 0.01)
+      note(p, "at dp = %.4g m the still water is modelled as whole particle rows: %.4g m offshore "
+              "(%.4g m), %.4g m at the wall (%.4g m); %s",
+           p->dp, p->depth_model, p->h - z_min, p->depth_wall_model, p->depth_wall,
+           s->resolution.dp.is_auto ? "no spacing near the target models both depths within 1 %"
+                                    : "resolution.dp: auto picks a spacing that models them");
+  }
   p->coefh = s->numerics.coefh.is_auto ? (p->dims == 2 ? WL_PLAN_COEFH_2D : WL_PLAN_COEFH_3D)
                                         : s->numerics.coefh.q.si;
   p->h_sml = p->coefh * sqrt((double)p->dims) * p->dp;
@@ -732,7 +799,11 @@ void wl_plan_write(const struct wl_plan *p, FILE *out) {
   if (p->dims == 3)
     fprintf(out, "  %-36s %s\n", "side walls",
             p->slip_walls ? "free-slip (mirror planes)" : "dynamic boundary particles");
-  fprintf(out, "  %-36s %12.5g m\n", "particle spacing dp", p->dp);
+  fprintf(out, "  %-36s %12.5g m      (asked for %.4g m: whole rows of still water)\n",
+          "particle spacing dp", p->dp, p->dp_target);
+  fprintf(out, "  %-36s %12.5g m      (%.4g rows; %.4g m at the wall, %.4g rows)\n",
+          "still water modelled", p->depth_model, p->depth_model / p->dp, p->depth_wall_model,
+          p->depth_wall_model / p->dp);
   fprintf(out, "  %-36s %12.5g m      (h/dp = %.3g)\n", "smoothing length h", p->h_sml,
           p->h_sml / p->dp);
   fprintf(out, "  %-36s %12.5g m/s\n", "speed of sound c0", p->c0);
