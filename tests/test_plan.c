@@ -96,7 +96,13 @@ int main(void) {
     struct wl_error err;
     wl_error_clear(&err);
     wl_scenario_init(&sw);
-    if (wl_scenario_load(path, &sw, &err) == WL_OK && wl_plan_make(&sw, &pw, &err) == WL_OK) {
+    /* at the spacing those runs had (dp auto now picks 0.012 m, below) */
+    int loaded = wl_scenario_load(path, &sw, &err) == WL_OK;
+    if (loaded) {
+      sw.resolution.dp.is_auto = 0, sw.resolution.dp.given = 1;
+      sw.resolution.dp.q.si = 0.0125;
+    }
+    if (loaded && wl_plan_make(&sw, &pw, &err) == WL_OK) {
       CHECK_REL(pw.gpu_seconds, 5.6 + 13.5, 0.25,
                 "GPU runtime estimate of seawall.yaml vs its H100 run (BENCHMARKS.md)");
       /* and the CPU estimate against its run on the 2-core development
@@ -104,6 +110,51 @@ int main(void) {
        * 2026-11-24: 90.6 s + 201.1 s for the two cases, 2 threads) */
       CHECK_REL(pw.cpu_seconds, 90.6 + 201.1, 0.25,
                 "CPU runtime estimate of seawall.yaml vs its 2-core run (BENCHMARKS.md)");
+    } else {
+      printf("FAIL seawall.yaml: %s\n", err.msg), wl_test_failures++;
+    }
+    wl_scenario_clear(&sw);
+  }
+  /* Whole rows of still water (plan.h wl_plan_whole_rows_dp). seawall.yaml:
+   * h = 0.36 m, a platform at z = 0.30 m (0.06 m of water at the wall),
+   * 0.0125 m asked for (4 particles over the 0.05 m solitary wave). By
+   * hand: 0.06/5 = 0.012 m is the nearest spacing within -20/+10 % at which
+   * both depths are whole rows (30 and 5). At the 0.0125 m asked for, the
+   * rows (j + 1/2) 0.0125 < 0.36 are j = 0..28 and those on the platform
+   * start at j = 24: 5 rows, 0.0625 m (+4 %, issue 19's number). The
+   * flume the scene builder lays (an independent count: its fluid
+   * particles in the column next to the wall) must hold the plan's rows. */
+  {
+    char path[1024];
+    snprintf(path, sizeof path, "%s/scenarios/seawall.yaml", WL_SOURCE_DIR);
+    struct wl_scenario sw;
+    struct wl_plan pw;
+    struct wl_error err;
+    wl_error_clear(&err);
+    wl_scenario_init(&sw);
+    if (wl_scenario_load(path, &sw, &err) == WL_OK && wl_plan_make(&sw, &pw, &err) == WL_OK) {
+      CHECK_ABS(pw.dp, 0.012, 1e-12, "dp auto: 0.06/5 m, whole rows at the wall and offshore");
+      CHECK_ABS(pw.depth_wall_model, 0.06, 1e-12, "0.06 m at the wall modelled exactly (5 rows)");
+      CHECK_ABS(pw.depth_model, 0.36, 1e-12, "0.36 m offshore modelled exactly (30 rows)");
+      CHECK_ABS(wl_plan_modelled_depth(0.36, 0.0, 0.30, 0.0125), 0.0625, 1e-12,
+                "0.0125 m: 5 rows on the platform, 0.0625 m (by hand)");
+      CHECK_ABS(wl_plan_modelled_depth(0.36, 0.0, 0.0, 0.0125), 0.3625, 1e-12,
+                "0.0125 m: 29 rows offshore, 0.3625 m (by hand)");
+      /* a ladder level: 0.0125 x 0.5 = 0.00625 m asked, 0.006 m (10 rows) */
+      CHECK_ABS(wl_plan_level_dp(&sw, &pw, 0.5), 0.006, 1e-12, "ladder level x 0.5: 0.06/10 m");
+      struct wl_flume f;
+      memset(&f, 0, sizeof f);
+      if (wl_flume_build(&sw, &pw, WL_CASE_EXPLOSION, &f, &err) == WL_OK) {
+        const struct wl_particles *q = &f.particles;
+        int rows = 0;
+        for (int i = q->n_bound; i < q->n; i++)
+          if (q->pos[0][i] > f.x_wall - pw.dp && q->pos[0][i] < f.x_wall) rows++;
+        CHECK_ABS(rows * pw.dp, pw.depth_wall_model, 1e-12,
+                  "the flume's fluid column at the wall holds the plan's rows");
+      } else {
+        printf("FAIL seawall.yaml flume: %s\n", err.msg), wl_test_failures++;
+      }
+      wl_flume_clear(&f);
     } else {
       printf("FAIL seawall.yaml: %s\n", err.msg), wl_test_failures++;
     }
