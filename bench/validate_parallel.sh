@@ -4,7 +4,9 @@
 # many-core machine with no barrier overhead), for reference/RESULTS.md.
 #   [JOBS=N] [INTEGRATOR=verlet] bench/validate_parallel.sh BIN OUTDIR [LADDER] [CASE...]
 # JOBS: processes at once (default: the number of cores); INTEGRATOR: the
-# time integrator of every run (validate --integrator; default symplectic). Writes
+# time integrator of every run (validate --integrator; default symplectic);
+# REF: the reference/ directory (validate --reference; default: the one the
+# binary was built from, which a carried binary does not have). Writes
 # OUTDIR/<case>/validation.json|csv|pdf and OUTDIR/<case>.log;
 # bench/validate_table.py OUTDIR turns them into RESULTS.md's tables.
 # On the device machine: bench/assess_e2e.sh pack here, then run with carry
@@ -21,9 +23,10 @@ fi
 one() {
   local a; a=$(date +%s)
   "$bin" validate "$1" --ladder "$ladder" --threads 1 ${INTEGRATOR:+--integrator "$INTEGRATOR"} \
+    ${REF:+--reference "$REF"} \
     -o "$out/$1" >"$out/$1.log" 2>&1
   echo "== $1 rc=$? wall=$(( $(date +%s) - a )) s"
 }
 export -f one
-export bin out ladder INTEGRATOR
+export bin out ladder INTEGRATOR REF
 printf '%s\n' "$@" | xargs -P "${JOBS:-$(nproc)}" -I{} bash -c 'one {}'

@@ -28,7 +28,7 @@
 
 static enum wl_status load_scenario(const char *path, double dp, const struct wl_val_ctx *ctx,
                                     struct wl_scenario *s, struct wl_plan *plan,
-                                    struct wl_error *err) {
+                                    struct wl_validate_level *lv, struct wl_error *err) {
   wl_scenario_init(s);
   enum wl_status st = wl_scenario_load(path, s, err);
   if (st) {
@@ -37,10 +37,12 @@ static enum wl_status load_scenario(const char *path, double dp, const struct wl
     err->status = st;
     return st;
   }
-  /* the ladder sets the spacing */
+  /* the ladder sets the spacing, moved as assess moves dp: auto to the
+   * nearest that models the still water in whole particle rows (plan.h);
+   * the level reports the spacing run */
   s->resolution.dp.is_auto = 0;
   s->resolution.dp.given = 1;
-  s->resolution.dp.q.si = dp;
+  s->resolution.dp.q.si = lv->dp = wl_plan_whole_rows_dp(s, dp, NULL);
   if (ctx->verlet) { /* validate --integrator verlet */
     s->numerics.integrator.choice = WL_INTEGRATOR_VERLET;
     s->numerics.integrator.given = 1;
@@ -118,7 +120,7 @@ enum wl_status wl_val_run_solitary(const struct wl_val_case *c, const struct wl_
   snprintf(path, sizeof path, "%s/%s/h%.1f-e%.1f.yaml", ctx->ref_dir, c->dir, h, eps);
   struct wl_scenario s;
   struct wl_plan plan;
-  enum wl_status st = load_scenario(path, dp, ctx, &s, &plan, err);
+  enum wl_status st = load_scenario(path, dp, ctx, &s, &plan, lv, err);
   if (st) {
     wl_scenario_clear(&s);
     return st;
@@ -169,7 +171,7 @@ enum wl_status wl_val_run_solitary_wall(const struct wl_val_case *c, const struc
   snprintf(path, sizeof path, "%s/%s/scenario.yaml", ctx->ref_dir, c->dir);
   struct wl_scenario s;
   struct wl_plan plan;
-  enum wl_status st = load_scenario(path, dp, ctx, &s, &plan, err);
+  enum wl_status st = load_scenario(path, dp, ctx, &s, &plan, lv, err);
   if (st) {
     wl_scenario_clear(&s);
     return st;
@@ -270,7 +272,7 @@ enum wl_status wl_val_run_crater(const struct wl_val_case *c, const struct wl_va
   snprintf(path, sizeof path, "%s/%s/scenario.yaml", ctx->ref_dir, c->dir);
   struct wl_scenario s;
   struct wl_plan plan;
-  enum wl_status st = load_scenario(path, dp, ctx, &s, &plan, err);
+  enum wl_status st = load_scenario(path, dp, ctx, &s, &plan, lv, err);
   if (st) {
     wl_scenario_clear(&s);
     return st;
