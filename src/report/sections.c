@@ -214,7 +214,9 @@ static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
           share(cs[i].force_b_peak.value, cs[i].force_peak.value, pc, sizeof pc));
       k++;
     }
-    put(&b, "; the two ways of measuring the wall load differ by about that much. ");
+    put(&b, "; the two ways of measuring the wall load differ by about that much. That "
+            "difference measures how the wall is discretised, not how far the loads are from "
+            "converged: only a convergence ladder estimates the error of the resolution. ");
   }
   /* the convergence ladder's estimate, where one was run */
   for (int i = 0; i < WL_REPORT_N_CASES; i++) {
@@ -495,8 +497,10 @@ enum wl_status wl_report_render_peaks(struct wl_report_ctx *c, const struct wl_r
         d,
         "The wall force is measured twice: by the pressure probes on the wall face (the "
         "values above) and by summing the SPH forces on the wall's boundary particles. The "
-        "difference between the two is an indicator of the numerical error of the wall load "
-        "at this resolution (a convergence ladder gives a proper estimate). Each measurement's "
+        "difference between the two measures how the wall is discretised at this resolution; "
+        "it is not the error of the resolution itself, which a convergence ladder estimates "
+        "(the two can agree within 1 % while the load still moves by several per cent between "
+        "resolutions). Each measurement's "
         "force at rest is its own mean before the wave reaches the wall; each impulse "
         "subtracts its own.",
         err);
@@ -757,16 +761,19 @@ enum wl_status wl_report_render_convergence(struct wl_report_ctx *c,
         c->doc, err,
         "The scenario asks for a convergence ladder (resolution.convergence: %s), but these "
         "results hold a single resolution (dp = %g m): they were written by a version of "
-        "wallload assess that did not run ladders. No convergence plot is drawn; the numerical "
-        "error is indicated only by the difference between the probe and boundary-particle "
-        "wall forces (see the peak loads).",
+        "wallload assess that did not run ladders. No convergence plot is drawn, and the "
+        "error of the resolution is not known: the difference between the probe and "
+        "boundary-particle wall forces (see the peak loads) measures the wall's "
+        "discretisation only.",
         asked, r->dp);
   else if (!st && !r->has_convergence)
     st = wl_report_paragraphf(
         c->doc, err,
         "No convergence ladder was run for these results (a single resolution, dp = %g m), so "
-        "no convergence plot is drawn and the numerical error is indicated only by the "
-        "difference between the probe and boundary-particle wall forces (see the peak loads). "
+        "no convergence plot is drawn and the error of the resolution is not known: the "
+        "difference between the probe and boundary-particle wall forces (see the peak loads) "
+        "measures the wall's discretisation only, and the two can agree within 1 %% while the "
+        "load still moves by several per cent between resolutions. "
         "To ask for a ladder, add to the scenario\n"
         "    resolution: { convergence: [1, 0.71, 0.5] }\n"
         "(dp, dp/sqrt 2, dp/2) and run wallload assess again: the report then shows peak force, "
