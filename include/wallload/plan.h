@@ -47,6 +47,9 @@ struct wl_plan_solitary {
   int fits;                            /* 1: the crest starts seaward of the wall */
   double arrival_time;                 /* crest at the wall, estimated [s] */
   double quiet_until;                  /* the wall's force at rest until then [s] (below) */
+  double h_max;                        /* still water plus the wave: sets c0 [m] */
+  double c0, dt;                       /* speed of sound [m/s]; CFL time step at rest [s]: what
+                                          the flume gives the solver */
   double end_time;                     /* simulated time of this case [s] */
   double x_left;                       /* the modelled flume starts here [m] */
   long n_fluid, n_boundary;            /* estimated particles */
@@ -79,6 +82,8 @@ struct wl_plan_explosion {
   int thrown_parts;
   double arrival_time;              /* leading wave at the wall, estimated [s] */
   double quiet_until;               /* the wall's force at rest until then [s] (below) */
+  double h_max;                     /* still water plus the lip's crest: sets c0 [m] */
+  double c0, dt;                    /* as the solitary case's */
   double end_time;                  /* simulated time of this case [s] */
   double x_left;                    /* the modelled flume starts here [m] */
   long n_fluid, n_boundary;         /* estimated particles */
@@ -116,8 +121,8 @@ struct wl_plan {
   int symmetry;                     /* 3D: half the width modelled, a symmetry plane on the
                                        centreline (domain.symmetry auto or centreline) */
   double h_sml;                     /* smoothing length h = coefh sqrt(dim) dp [m] */
-  double c0;                        /* numerical speed of sound [m/s] */
-  double dt;                        /* estimated time step, CFL condition [s] */
+  double c0;                        /* numerical speed of sound, the largest of the cases' [m/s] */
+  double dt;                        /* CFL time step at rest, the smallest of the cases' [s] */
   double fluid_area;                /* wetted flume section up to the wall [m^2] (2D) */
   double land_length;               /* land modelled behind the seawall [m] */
   long n_fluid, n_boundary;         /* estimated particles of the largest case */

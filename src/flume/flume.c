@@ -181,7 +181,8 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
   f->static_force = 0.5 * plan->rho * plan->g * f->depth_wall * f->depth_wall;
   f->static_moment = plan->rho * plan->g * pow(f->depth_wall, 3) / 6.0;
 
-  /* What rises above still water decides c0 and the top of the domain. */
+  /* What rises above still water decides the top of the domain (and, in
+   * the plan, c0). */
   double rise = 0.0, top_rise = 0.0, thrown_top = 0.0;
   struct surface surf = {load, depth, NULL, 0, 0, 0, 0, 0, plan->rho, dim, 0, 0, 0};
   const struct wl_plan_solitary *ps = &plan->solitary;
@@ -252,7 +253,12 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
     }
   }
 
-  set_params(s, plan, depth + rise, &f->cfg);
+  /* the case's largest depth, which sets c0: the plan's (plan.h) */
+  set_params(s, plan,
+             load == WL_CASE_SOLITARY    ? ps->h_max
+             : load == WL_CASE_EXPLOSION ? px->h_max
+                                         : depth,
+             &f->cfg);
   if (s->domain.far_end.choice == WL_FAR_END_DAMPING && plan->land_length > 0) {
     /* over the far half of the land, at a rate that stops water arriving at
      * the long-wave speed within about a tenth of the zone's crossing time */

@@ -437,9 +437,10 @@ static long count_of(double x) {
 }
 
 /* Particles of one case whose flume starts at x_left, and its
- * particle-steps to t_end. */
+ * particle-steps to t_end at its time step dt. */
 static void case_cost(const struct wl_scenario *s, struct wl_plan *p, double x_left, double t_end,
-                      double rise, long *n_fluid, long *n_boundary, double *particle_steps) {
+                      double rise, double dt, long *n_fluid, long *n_boundary,
+                      double *particle_steps) {
   double xw = s->wall.x.q.si;
   double area = wet_area(s, p->h, x_left);
   double wall_top = wl_scenario_bed_z(s, xw) + s->wall.height.q.si;
@@ -462,7 +463,7 @@ static void case_cost(const struct wl_scenario *s, struct wl_plan *p, double x_l
     *n_boundary = count_of(layers * perimeter / p->dp * (across + sides * layers) +
                            sides * layers * profile / (p->dp * p->dp));
   }
-  *particle_steps = (double)(*n_fluid + *n_boundary) * t_end / p->dt;
+  *particle_steps = (double)(*n_fluid + *n_boundary) * t_end / dt;
 }
 
 /* "line" of a value for an error message, or "default". */
@@ -610,16 +611,35 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
   p->evals_per_step = s->numerics.integrator.choice == WL_INTEGRATOR_VERLET ? 1 : 2;
   enum wl_status st = plan_sides(s, p, err);
   if (st) return st;
-  double h_max = p->h;
-  if (p->solitary.present) h_max += p->solitary.wave.H;
-  if (p->explosion.present) h_max = fmax(h_max, p->h + p->explosion.rise);
-  p->c0 = s->numerics.coefsound.q.si * sqrt(p->g * h_max);
-  p->dt = s->numerics.cfl.q.si * p->h_sml / p->c0;
+  /* each case's speed of sound from its own largest depth, as its flume
+   * gives the solver (flume.c); the CFL step at rest, h/c0 (the solver's
+   * step is no larger) */
+  const double coefsound = s->numerics.coefsound.q.si, cfl = s->numerics.cfl.q.si;
+  p->c0 = 0.0;
+  p->dt = INFINITY;
+  if (p->solitary.present) {
+    struct wl_plan_solitary *ps = &p->solitary;
+    ps->h_max = p->h + ps->wave.H;
+    ps->c0 = wl_sph_sound_speed(coefsound, p->g, ps->h_max, 0.0);
+    ps->dt = cfl * p->h_sml / ps->c0;
+    p->c0 = fmax(p->c0, ps->c0), p->dt = fmin(p->dt, ps->dt);
+  }
+  if (p->explosion.present) {
+    struct wl_plan_explosion *px = &p->explosion;
+    px->h_max = p->h + px->rise;
+    px->c0 = wl_sph_sound_speed(coefsound, p->g, px->h_max, 0.0);
+    px->dt = cfl * p->h_sml / px->c0;
+    p->c0 = fmax(p->c0, px->c0), p->dt = fmin(p->dt, px->dt);
+  }
+  if (!(p->c0 > 0)) { /* neither case: still water */
+    p->c0 = wl_sph_sound_speed(coefsound, p->g, p->h, 0.0);
+    p->dt = cfl * p->h_sml / p->c0;
+  }
   long n_max = 0;
   if (p->solitary.present) {
     struct wl_plan_solitary *ps = &p->solitary;
     if (!s->run.end_time.is_auto) ps->end_time = s->run.end_time.q.si;
-    case_cost(s, p, ps->x_left, ps->end_time, ps->wave.H, &ps->n_fluid, &ps->n_boundary,
+    case_cost(s, p, ps->x_left, ps->end_time, ps->wave.H, ps->dt, &ps->n_fluid, &ps->n_boundary,
               &ps->particle_steps);
     p->particle_steps += ps->particle_steps;
     if (ps->n_fluid + ps->n_boundary > n_max) n_max = ps->n_fluid + ps->n_boundary;
@@ -628,8 +648,8 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
   if (p->explosion.present) {
     struct wl_plan_explosion *px = &p->explosion;
     if (!s->run.end_time.is_auto) px->end_time = s->run.end_time.q.si;
-    case_cost(s, p, px->x_left, px->end_time, 2.0 * px->eta0, &px->n_fluid, &px->n_boundary,
-              &px->particle_steps);
+    case_cost(s, p, px->x_left, px->end_time, 2.0 * px->eta0, px->dt, &px->n_fluid,
+              &px->n_boundary, &px->particle_steps);
     p->particle_steps += px->particle_steps;
     if (px->n_fluid + px->n_boundary > n_max)
       n_max = px->n_fluid + px->n_boundary, p->n_fluid = px->n_fluid, p->n_boundary = px->n_boundary;
@@ -673,10 +693,10 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
   const double gpu_step = gpu_step_seconds(p);
   p->gpu_seconds = 0;
   if (p->solitary.present)
-    p->gpu_seconds += fmax(p->solitary.end_time / p->dt * gpu_step,
+    p->gpu_seconds += fmax(p->solitary.end_time / p->solitary.dt * gpu_step,
                            p->solitary.particle_steps * p->evals_per_step / gpu_rate);
   if (p->explosion.present)
-    p->gpu_seconds += fmax(p->explosion.end_time / p->dt * gpu_step,
+    p->gpu_seconds += fmax(p->explosion.end_time / p->explosion.dt * gpu_step,
                            p->explosion.particle_steps * p->evals_per_step / gpu_rate);
   return WL_OK;
 }
@@ -742,6 +762,8 @@ void wl_plan_write(const struct wl_plan *p, FILE *out) {
       fprintf(out, "    %-34s %12.5g m\n", "initial crest position", ps->crest_x0);
     fprintf(out, "    %-34s %12.5g s\n", "arrival at the wall", ps->arrival_time);
     fprintf(out, "    %-34s %12.5g s\n", "wall's force at rest read until", ps->quiet_until);
+    fprintf(out, "    %-34s %12.5g m/s    (time step at rest %.4g s)\n", "speed of sound c0", ps->c0,
+            ps->dt);
     fprintf(out, "    %-34s %12.5g s\n", "end time", ps->end_time);
     fprintf(out, "    %-34s %12.5g m      (%ld fluid + %ld boundary particles, %.3g particle-steps)\n",
             "flume modelled from x", ps->x_left, ps->n_fluid, ps->n_boundary, ps->particle_steps);
@@ -784,6 +806,8 @@ void wl_plan_write(const struct wl_plan *p, FILE *out) {
       fprintf(out, "    model: thrown mass in %d parts (seed 000)\n", px->thrown_parts);
     fprintf(out, "    %-34s %12.5g s\n", "leading wave at the wall", px->arrival_time);
     fprintf(out, "    %-34s %12.5g s\n", "wall's force at rest read until", px->quiet_until);
+    fprintf(out, "    %-34s %12.5g m/s    (time step at rest %.4g s)\n", "speed of sound c0", px->c0,
+            px->dt);
     if (px->absorber > 0)
       fprintf(out, "    %-34s %12.5g m      (x = %.4g to %.4g m: the seaward end absorbs)\n",
               "absorbing zone", px->absorber, px->x_left, px->x_left + px->absorber);
@@ -806,8 +830,9 @@ void wl_plan_write(const struct wl_plan *p, FILE *out) {
           p->depth_wall_model / p->dp);
   fprintf(out, "  %-36s %12.5g m      (h/dp = %.3g)\n", "smoothing length h", p->h_sml,
           p->h_sml / p->dp);
-  fprintf(out, "  %-36s %12.5g m/s\n", "speed of sound c0", p->c0);
-  fprintf(out, "  %-36s %12.5g s\n", "time step (CFL estimate)", p->dt);
+  fprintf(out, "  %-36s %12.5g m/s    (the largest case's; each case's above)\n",
+          "speed of sound c0", p->c0);
+  fprintf(out, "  %-36s %12.5g s      (the smallest case's)\n", "time step (CFL, at rest)", p->dt);
   fprintf(out, "  %-36s %12ld        (+ %ld boundary; the largest case)\n", "fluid particles",
           p->n_fluid, p->n_boundary);
   fprintf(out, "  %-36s %12.4g MiB    (%.4g MiB on a GPU)\n", "memory (estimate)",

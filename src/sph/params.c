@@ -115,8 +115,8 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
   const int dim = prm->dim;
   const double gamma = 7.0;
   const double h = prm->coefh * sqrt((double)dim) * prm->dp;
-  const double c0 = fmax(prm->coefsound * sqrt(prm->g * prm->h_max),
-                         WL_SPH_MACH_FACTOR * prm->expected_speed);
+  const double c0 =
+      wl_sph_sound_speed(prm->coefsound, prm->g, prm->h_max, prm->expected_speed);
   const double B = c0 * c0 * prm->rho0 / gamma;
   const double aD = wl_sph_kernel_norm(dim, h);
   k->dim = dim;

@@ -12,6 +12,8 @@
 #ifndef WALLLOAD_SPH_PARAMS_H
 #define WALLLOAD_SPH_PARAMS_H
 
+#include <math.h>
+
 #include "wallload/sph/defs.h"
 
 /* Viscosity model of the momentum equation. */
@@ -76,6 +78,16 @@ enum wl_sph_integrator {
  * breaks of `wallload bench` leave the density range at their impacts
  * (docs/boundary.md). */
 #define WL_SPH_MACH_FACTOR 10.0
+
+/* The numerical speed of sound [m/s]: coefsound sqrt(g h_max) (h_max the
+ * largest water depth, DualSPHysics), raised to WL_SPH_MACH_FACTOR times a
+ * known largest flow speed expected_speed (0: none). The one formula: the
+ * solver's constants (wl_sph_const_make) and the plan's estimates call it. */
+static inline double wl_sph_sound_speed(double coefsound, double g, double h_max,
+                                        double expected_speed) {
+  const double c_depth = coefsound * sqrt(g * h_max), c_mach = WL_SPH_MACH_FACTOR * expected_speed;
+  return c_depth > c_mach ? c_depth : c_mach;
+}
 
 /* Run parameters; wl_sph_params_default fills DualSPHysics' defaults. */
 struct wl_sph_params {
