@@ -607,7 +607,7 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
   }
   p->coefh = s->numerics.coefh.is_auto ? (p->dims == 2 ? WL_PLAN_COEFH_2D : WL_PLAN_COEFH_3D)
                                         : s->numerics.coefh.q.si;
-  p->h_sml = p->coefh * sqrt((double)p->dims) * p->dp;
+  p->h_sml = wl_sph_smoothing_length(p->coefh, p->dims, p->dp);
   p->evals_per_step = s->numerics.integrator.choice == WL_INTEGRATOR_VERLET ? 1 : 2;
   enum wl_status st = plan_sides(s, p, err);
   if (st) return st;

@@ -114,7 +114,7 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
   memset(k, 0, sizeof *k);
   const int dim = prm->dim;
   const double gamma = 7.0;
-  const double h = prm->coefh * sqrt((double)dim) * prm->dp;
+  const double h = wl_sph_smoothing_length(prm->coefh, dim, prm->dp);
   const double c0 =
       wl_sph_sound_speed(prm->coefsound, prm->g, prm->h_max, prm->expected_speed);
   const double B = c0 * c0 * prm->rho0 / gamma;

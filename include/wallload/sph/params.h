@@ -79,6 +79,12 @@ enum wl_sph_integrator {
  * (docs/boundary.md). */
 #define WL_SPH_MACH_FACTOR 10.0
 
+/* The smoothing length h = coefh sqrt(dim) dp [m] (DualSPHysics'
+ * convention): the solver's constants and the plan call it. */
+static inline double wl_sph_smoothing_length(double coefh, int dim, double dp) {
+  return coefh * sqrt((double)dim) * dp;
+}
+
 /* The numerical speed of sound [m/s]: coefsound sqrt(g h_max) (h_max the
  * largest water depth, DualSPHysics), raised to WL_SPH_MACH_FACTOR times a
  * known largest flow speed expected_speed (0: none). The one formula: the
