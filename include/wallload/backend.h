@@ -11,6 +11,7 @@
 #ifndef WALLLOAD_BACKEND_H
 #define WALLLOAD_BACKEND_H
 
+#include <math.h>
 #include <stddef.h>
 
 #include "wallload/error.h"
@@ -61,6 +62,21 @@ struct wl_sph_step_out {
   long n_limited;   /* fluid particles the wall limiter moved in this step (sph/guard.h) */
   long n_excluded;  /* fluid particles that left the domain box in this step (sph/guard.h) */
 };
+
+/* The next step from the maxima over a step's force evaluations
+ * (DualSPHysics DtVariable), for every backend: max |a|^2 and |v|^2 of the
+ * fluid particles and max h|v.r|/(r^2 + eta^2) over their pairs; fills
+ * dt_next, dt_force, dt_cv, ace_max and vel_max of out. */
+static inline void wl_sph_step_dt(const struct wl_sph_const *k, double ace2_max, double vel2_max,
+                                  double visc_max, struct wl_sph_step_out *out) {
+  const double h = k->h_d, c0 = k->c0_d;
+  const double amax = sqrt(ace2_max), vmax = sqrt(vel2_max);
+  out->ace_max = amax;
+  out->vel_max = vmax;
+  out->dt_force = amax > 0 ? sqrt(h / amax) : INFINITY;
+  out->dt_cv = h / ((c0 > 10 * vmax ? c0 : 10 * vmax) + visc_max);
+  out->dt_next = k->cfl * (out->dt_force < out->dt_cv ? out->dt_force : out->dt_cv);
+}
 
 struct wl_backend_ops {
   const char *name; /* "cpu", "cuda" */

@@ -362,16 +362,9 @@ static void shift(struct cpu *c, double dt) {
   }
 }
 
-/* dt from the maxima of the evaluations of a step (DualSPHysics DtVariable):
- * CFL min(sqrt(h/|a|max), h/(max(c0, 10|v|max) + max h|v.r|/(r^2+eta^2))). */
+/* dt from the maxima of the evaluations of a step (backend.h wl_sph_step_dt). */
 static void fill_dt(const struct cpu *c, const struct eval_stats *st, struct wl_sph_step_out *out) {
-  const double h = c->k.h_d, c0 = c->k.c0_d;
-  const double amax = sqrt(st->ace2_max), vmax = sqrt(st->vel2_max);
-  out->ace_max = amax;
-  out->vel_max = vmax;
-  out->dt_force = amax > 0 ? sqrt(h / amax) : INFINITY;
-  out->dt_cv = h / ((c0 > 10 * vmax ? c0 : 10 * vmax) + st->visc_max);
-  out->dt_next = c->k.cfl * (out->dt_force < out->dt_cv ? out->dt_force : out->dt_cv);
+  wl_sph_step_dt(&c->k, st->ace2_max, st->vel2_max, st->visc_max, out);
 }
 
 /* ---- guard ------------------------------------------------------------------- */

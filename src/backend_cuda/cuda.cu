@@ -1172,15 +1172,8 @@ static enum wl_status finish(struct gpu *c, const struct wl_sph_step_in *in,
   memcpy(&ace2, &st->ace2, sizeof ace2);
   memcpy(&vel2, &st->vel2, sizeof vel2);
   memcpy(&visc, &st->visc, sizeof visc);
-  /* dt exactly as the CPU backend's fill_dt */
-  const double h = c->k.h_d, c0 = c->k.c0_d;
-  const double amax = sqrt(ace2), vmax = sqrt(vel2);
   memset(out, 0, sizeof *out);
-  out->ace_max = amax;
-  out->vel_max = vmax;
-  out->dt_force = amax > 0 ? sqrt(h / amax) : INFINITY;
-  out->dt_cv = h / ((c0 > 10 * vmax ? c0 : 10 * vmax) + visc);
-  out->dt_next = c->k.cfl * (out->dt_force < out->dt_cv ? out->dt_force : out->dt_cv);
+  wl_sph_step_dt(&c->k, ace2, vel2, visc, out); /* the CPU backend's formula (backend.h) */
   out->fault = WL_SPH_FAULT_NONE;
   out->n_limited = (long)st->limited;
   out->n_excluded = (long)st->excluded;
