@@ -246,7 +246,14 @@ static void print_case(const struct wl_case_result *c, const struct wl_scenario 
   printf("  %-34s %12.5g kN/m  (boundary particles, filtered)\n", "peak force",
          l->force_bound_peak.value / 1e3);
   printf("  %-34s %12.5g kN/m  (rho g d^2/2)\n", "static force", c->static_force / 1e3);
-  printf("  %-34s %12.5g kN s/m (whole record)\n", "impulse (force - static)",
+  if (l->rest_measured)
+    printf("  %-34s %12.5g kN/m  (probes; %.5g boundary particles; %.3g to %.3g s)\n",
+           "force at rest, the model's", l->rest_force / 1e3, l->rest_force_bound / 1e3,
+           l->rest_from, l->rest_to);
+  else
+    printf("  %-34s %12s        (the wave is at the wall from the start: rho g d^2/2)\n",
+           "force at rest, the model's", "not read");
+  printf("  %-34s %12.5g kN s/m (whole record)\n", "impulse (force - at rest)",
          l->impulse_total / 1e3);
   printf("  %-34s %12.5g kN s/m (%.3f to %.3f s)\n", "impulse of the peak's positive phase",
          l->impulse_peak / 1e3, l->impulse_peak_from, l->impulse_peak_to);
