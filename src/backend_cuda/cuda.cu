@@ -44,10 +44,12 @@
  *    the marked pairs evenly over its 32 lanes (k_gather_split, below). The
  *    same terms in the same order per particle, summed in runs: equal to
  *    "ref" to float rounding.
- * The bookkeeping of wl_sph_gather_block (fluid then boundary sums, the
- * DDT2 switch, gravity, the mirror planes' passes: mirror_fast) is mirrored
- * in k_gather_fast and k_gather_split: a change there must be made here too
- * (the test's comparison with the reference loop catches a divergence). */
+ * Every variant ends with the shared finish (sph/gather.h wl_sph_finish:
+ * gravity, the DDT2 switch, the time-step input). The order of the sums
+ * (fluid then boundary, the mirror planes' passes: mirror_fast) is
+ * mirrored in k_gather_fast and k_gather_split: a change in
+ * wl_sph_gather_block's order must be made here too (the test's comparison
+ * with the reference loop catches a divergence). */
 #include <cuda_runtime.h>
 #include <math.h>
 #include <stdio.h>
@@ -414,20 +416,14 @@ __global__ void __launch_bounds__(THREADS)
         range_fast<DIM, LAM, 1, 0>(&k, &e, xi, vi, rho_i, inv_rho_i, p_i, bb[first[r]],
                                    bb[last[r] + 1], k.av_fb, k.lam_fb, r2_skip, 0, &b);
       mirror_fast<DIM, LAM>(&k, &g, &e, cell, 1, xi, vi, rho_i, inv_rho_i, p_i, r2_skip, &f, &b);
-      const wl_real ddt = (k.ddt == WL_SPH_DDT_FOURTAKAS && b.wsum > 0) ? WL_R(0.0) : f.ddt;
-      e.ace[0][i] = f.a[0] + b.a[0] + k.gravity[0];
-      if (DIM == 3) e.ace[1][i] = f.a[1] + b.a[1] + k.gravity[1];
-      e.ace[DIM - 1][i] = f.a[2] + b.a[2] + k.gravity[DIM - 1];
-      e.ar[i] = rho_i * (f.cont + b.cont) + ddt;
-      e.visc[i] = k.h * wl_sph_max_nonneg(f.visc, b.visc);
+      wl_sph_finish(DIM, &k, &e, i, 1, rho_i, f.a, f.cont, f.ddt, f.visc, b.a, b.cont, b.wsum,
+                    b.visc);
     } else {
       for (int r = 0; r < nr; r++)
         range_fast<DIM, LAM, 0, 0>(&k, &e, xi, vi, rho_i, inv_rho_i, p_i, bf[first[r]],
                                    bf[last[r] + 1], k.av_fb, k.lam_fb, r2_skip, 0, &f);
       mirror_fast<DIM, LAM>(&k, &g, &e, cell, 0, xi, vi, rho_i, inv_rho_i, p_i, r2_skip, &f, &f);
-      for (int a = 0; a < DIM; a++) e.ace[a][i] = 0;
-      e.ar[i] = rho_i * f.cont;
-      e.visc[i] = k.h * f.visc;
+      wl_sph_finish(DIM, &k, &e, i, 0, rho_i, f.a, f.cont, 0, f.visc, f.a, 0, 0, 0);
     }
     particle_max<DIM>(&e, i, nb, &a2, &v2, &vmax);
   }
@@ -861,18 +857,8 @@ __global__ void __launch_bounds__(WL_SPLIT_THREADS, WL_SPLIT_MIN_BLOCKS)
      * plane have any); the walk above did the ordinary rows of f and b */
     mirror_fast<DIM, LAM>(&k, &g, &e, cx + nx * rest, fluid, xi, vi, rho_i, inv_rho_i, sv.w,
                           r2_skip, &f, &b);
-    if (fluid) {
-      const wl_real ddt = (k.ddt == WL_SPH_DDT_FOURTAKAS && b.wsum > 0) ? WL_R(0.0) : f.ddt;
-      e.ace[0][i] = f.a[0] + b.a[0] + k.gravity[0];
-      if (DIM == 3) e.ace[1][i] = f.a[1] + b.a[1] + k.gravity[1];
-      e.ace[DIM - 1][i] = f.a[2] + b.a[2] + k.gravity[DIM - 1];
-      e.ar[i] = rho_i * (f.cont + b.cont) + ddt;
-      e.visc[i] = k.h * wl_sph_max_nonneg(f.visc, b.visc);
-    } else {
-      for (int a = 0; a < DIM; a++) e.ace[a][i] = 0;
-      e.ar[i] = rho_i * f.cont;
-      e.visc[i] = k.h * f.visc;
-    }
+    wl_sph_finish(DIM, &k, &e, i, fluid, rho_i, f.a, f.cont, f.ddt, f.visc, b.a, b.cont, b.wsum,
+                  b.visc);
     particle_max<DIM>(&e, i, nb, &a2, &v2, &vmax);
   }
   block_max3<WL_SPLIT_THREADS>(a2, v2, vmax, st);

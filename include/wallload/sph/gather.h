@@ -138,6 +138,33 @@ WL_HD static WL_INLINE void wl_sph_gather_range(const int dim, const int laminar
   }
 }
 
+/* The end of particle i's evaluation, from its sums over fluid neighbours
+ * (fa, fcont, fddt, fvisc) and, for a fluid particle, over boundary ones
+ * (ba, bcont, bwsum, bvisc); fa and ba hold the horizontal, transverse
+ * (3D) and vertical components at 0, 1 and 2. A fluid particle's
+ * acceleration adds gravity; its density rate the diffusion, except under
+ * DDT2 (not Full) next to a wall; its time-step input takes the larger of
+ * the two sums. A boundary particle (DBC) keeps only its continuity
+ * equation. Every force loop of every backend ends with this. */
+WL_HD static WL_INLINE void wl_sph_finish(const int dim, const struct wl_sph_const *k,
+                                          const struct wl_sph_eval *e, int i, int fluid,
+                                          wl_real rho_i, const wl_real *fa, wl_real fcont,
+                                          wl_real fddt, wl_real fvisc, const wl_real *ba,
+                                          wl_real bcont, wl_real bwsum, wl_real bvisc) {
+  if (fluid) {
+    const wl_real ddt = (k->ddt == WL_SPH_DDT_FOURTAKAS && bwsum > 0) ? WL_R(0.0) : fddt;
+    e->ace[0][i] = fa[0] + ba[0] + k->gravity[0];
+    if (dim == 3) e->ace[1][i] = fa[1] + ba[1] + k->gravity[1];
+    e->ace[dim - 1][i] = fa[2] + ba[2] + k->gravity[dim - 1];
+    e->ar[i] = rho_i * (fcont + bcont) + ddt;
+    e->visc[i] = k->h * wl_sph_max_nonneg(fvisc, bvisc);
+  } else {
+    for (int a = 0; a < dim; a++) e->ace[a][i] = 0;
+    e->ar[i] = rho_i * fcont;
+    e->visc[i] = k->h * fvisc;
+  }
+}
+
 /* Forces on particles i0 .. i0 + m - 1 (sorted indices, 1 <= m <= lanes) of
  * one group, in cells `span` + 1 consecutive cells of one row (span 0: one
  * cell); writes e->ace, e->ar, e->visc of each. Lanes beyond m repeat the
@@ -194,14 +221,10 @@ WL_HD static WL_INLINE void wl_sph_gather_block(const int dim, const int laminar
         wl_sph_gather_range(dim, laminar, 1, 0, lanes, k, e, &in, bb[mfirst[side][r]],
                             bb[mlast[side][r] + 1], k->av_fb, k->lam_fb, side + 1, &b);
     for (int l = 0; l < m; l++) {
-      const int i = i0 + l;
-      /* DDT2 (not Full): no diffusion for a fluid particle next to a wall */
-      const wl_real ddt = (k->ddt == WL_SPH_DDT_FOURTAKAS && b.wsum[l] > 0) ? WL_R(0.0) : f.ddt[l];
-      e->ace[0][i] = f.a[0][l] + b.a[0][l] + k->gravity[0];
-      if (dim == 3) e->ace[1][i] = f.a[1][l] + b.a[1][l] + k->gravity[1];
-      e->ace[dim - 1][i] = f.a[2][l] + b.a[2][l] + k->gravity[dim - 1];
-      e->ar[i] = in.rho[l] * (f.cont[l] + b.cont[l]) + ddt;
-      e->visc[i] = k->h * wl_sph_max_nonneg(f.visc[l], b.visc[l]);
+      const wl_real fa[3] = {f.a[0][l], f.a[1][l], f.a[2][l]};
+      const wl_real ba[3] = {b.a[0][l], b.a[1][l], b.a[2][l]};
+      wl_sph_finish(dim, k, e, i0 + l, 1, in.rho[l], fa, f.cont[l], f.ddt[l], f.visc[l], ba,
+                    b.cont[l], b.wsum[l], b.visc[l]);
     }
   } else {
     for (int r = 0; r < nr; r++)
@@ -211,12 +234,9 @@ WL_HD static WL_INLINE void wl_sph_gather_block(const int dim, const int laminar
       for (int r = 0; r < nm[side]; r++)
         wl_sph_gather_range(dim, laminar, 0, 0, lanes, k, e, &in, bf[mfirst[side][r]],
                             bf[mlast[side][r] + 1], k->av_fb, k->lam_fb, side + 1, &f);
-    for (int l = 0; l < m; l++) {
-      const int i = i0 + l;
-      for (int a = 0; a < dim; a++) e->ace[a][i] = 0;
-      e->ar[i] = in.rho[l] * f.cont[l];
-      e->visc[i] = k->h * f.visc[l];
-    }
+    for (int l = 0; l < m; l++)
+      wl_sph_finish(dim, k, e, i0 + l, 0, in.rho[l], NULL, f.cont[l], 0, f.visc[l], NULL, 0, 0,
+                    0);
   }
 }
 
