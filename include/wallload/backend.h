@@ -78,6 +78,38 @@ static inline void wl_sph_step_dt(const struct wl_sph_const *k, double ace2_max,
   out->dt_next = k->cfl * (out->dt_force < out->dt_cv ? out->dt_force : out->dt_cv);
 }
 
+/* What every backend's init checks of the host particles it is given
+ * (backend: its name, for the message): their dimension is the
+ * configuration's; boundary particles first, then fluid; kinds fluid,
+ * fixed or moving; a moving particle's body 1..WL_SPH_BODIES_MAX; at most
+ * WL_SPH_WALLS_MAX wall faces. WL_OK or WL_EINPUT naming the particle. */
+static inline enum wl_status wl_sph_check_particles(const char *backend,
+                                                    const struct wl_sph_config *cfg,
+                                                    const struct wl_particles *host,
+                                                    struct wl_error *err) {
+  if (host->dim != cfg->prm.dim)
+    return wl_error_set(err, WL_EINPUT, "%s backend: particles are %dD, configuration %dD",
+                        backend, host->dim, cfg->prm.dim);
+  for (int i = 0; i < host->n; i++) {
+    const int bound = host->kind[i] != WL_KIND_FLUID;
+    if (bound != (i < host->n_bound))
+      return wl_error_set(err, WL_EINPUT,
+                          "%s backend: particle %d (id %u) is %s but the first %d particles must "
+                          "be the boundary ones and the rest fluid",
+                          backend, i, host->id[i], bound ? "boundary" : "fluid", host->n_bound);
+    if (host->kind[i] > WL_KIND_MOVING)
+      return wl_error_set(err, WL_EINPUT, "%s backend: particle %d has kind %d; valid 0, 1, 2",
+                          backend, i, host->kind[i]);
+    if (host->kind[i] == WL_KIND_MOVING && (host->body[i] < 1 || host->body[i] > WL_SPH_BODIES_MAX))
+      return wl_error_set(err, WL_EINPUT, "%s backend: moving particle %d has body %d; valid 1..%d",
+                          backend, i, host->body[i], WL_SPH_BODIES_MAX);
+  }
+  if (cfg->n_walls < 0 || cfg->n_walls > WL_SPH_WALLS_MAX)
+    return wl_error_set(err, WL_EINPUT, "%s backend: %d walls; at most %d", backend, cfg->n_walls,
+                        WL_SPH_WALLS_MAX);
+  return WL_OK;
+}
+
 struct wl_backend_ops {
   const char *name; /* "cpu", "cuda" */
   /* Create the backend state from the host particles (boundary first, then

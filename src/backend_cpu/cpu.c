@@ -468,23 +468,8 @@ static enum wl_status cpu_init(void **ctx, const struct wl_sph_config *cfg,
                                struct wl_sph_step_out *out, struct wl_error *err) {
   *ctx = NULL;
   const int dim = cfg->prm.dim;
-  if (host->dim != dim)
-    return wl_error_set(err, WL_EINPUT, "cpu backend: particles are %dD, configuration %dD",
-                        host->dim, dim);
-  for (int i = 0; i < host->n; i++) {
-    const int bound = host->kind[i] != WL_KIND_FLUID;
-    if (bound != (i < host->n_bound))
-      return wl_error_set(err, WL_EINPUT,
-                          "cpu backend: particle %d (id %u) is %s but the first %d particles must "
-                          "be the boundary ones and the rest fluid",
-                          i, host->id[i], bound ? "boundary" : "fluid", host->n_bound);
-    if (host->kind[i] > WL_KIND_MOVING)
-      return wl_error_set(err, WL_EINPUT, "cpu backend: particle %d has kind %d; valid 0, 1, 2", i,
-                          host->kind[i]);
-    if (host->kind[i] == WL_KIND_MOVING && (host->body[i] < 1 || host->body[i] > WL_SPH_BODIES_MAX))
-      return wl_error_set(err, WL_EINPUT, "cpu backend: moving particle %d has body %d; valid 1..%d",
-                          i, host->body[i], WL_SPH_BODIES_MAX);
-  }
+  enum wl_status st0 = wl_sph_check_particles("cpu", cfg, host, err);
+  if (st0) return st0;
   struct cpu *c = calloc(1, sizeof *c);
   if (!c) return wl_error_set(err, WL_ENOMEM, "cpu backend: out of memory");
   c->cfg = *cfg;

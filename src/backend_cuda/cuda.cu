@@ -1283,28 +1283,10 @@ static enum wl_status cuda_init(void **ctx, const struct wl_sph_config *cfg,
                                 struct wl_sph_step_out *out, struct wl_error *err) {
   *ctx = NULL;
   const int dim = cfg->prm.dim;
-  if (host->dim != dim)
-    return wl_error_set(err, WL_EINPUT, "cuda backend: particles are %dD, configuration %dD",
-                        host->dim, dim);
-  for (int i = 0; i < host->n; i++) {
-    const int bound = host->kind[i] != WL_KIND_FLUID;
-    if (bound != (i < host->n_bound))
-      return wl_error_set(err, WL_EINPUT,
-                          "cuda backend: particle %d (id %u) is %s but the first %d particles must "
-                          "be the boundary ones and the rest fluid",
-                          i, host->id[i], bound ? "boundary" : "fluid", host->n_bound);
-    if (host->kind[i] > WL_KIND_MOVING)
-      return wl_error_set(err, WL_EINPUT, "cuda backend: particle %d has kind %d; valid 0, 1, 2",
-                          i, host->kind[i]);
-    if (host->kind[i] == WL_KIND_MOVING && (host->body[i] < 1 || host->body[i] > WL_SPH_BODIES_MAX))
-      return wl_error_set(err, WL_EINPUT, "cuda backend: moving particle %d has body %d; valid 1..%d",
-                          i, host->body[i], WL_SPH_BODIES_MAX);
-  }
-  if (cfg->n_walls < 0 || cfg->n_walls > WL_SPH_WALLS_MAX)
-    return wl_error_set(err, WL_EINPUT, "cuda backend: %d walls; at most %d", cfg->n_walls,
-                        WL_SPH_WALLS_MAX);
+  enum wl_status st = wl_sph_check_particles("cuda", cfg, host, err);
+  if (st) return st;
   struct wl_cuda_device dev;
-  enum wl_status st = wl_cuda_device_query(&dev, err);
+  st = wl_cuda_device_query(&dev, err);
   if (st) return st;
   struct gpu *c = (struct gpu *)calloc(1, sizeof *c);
   if (!c) return wl_error_set(err, WL_ENOMEM, "cuda backend: out of host memory");
