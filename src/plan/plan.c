@@ -823,8 +823,11 @@ void wl_plan_write(const struct wl_plan *p, FILE *out) {
   if (p->dims == 3)
     fprintf(out, "  %-36s %s\n", "side walls",
             p->slip_walls ? "free-slip (mirror planes)" : "dynamic boundary particles");
-  fprintf(out, "  %-36s %12.5g m      (asked for %.4g m: whole rows of still water)\n",
-          "particle spacing dp", p->dp, p->dp_target);
+  if (p->dp != p->dp_target) /* dp auto moved it (a given dp stays) */
+    fprintf(out, "  %-36s %12.5g m      (asked for %.4g m: whole rows of still water)\n",
+            "particle spacing dp", p->dp, p->dp_target);
+  else
+    fprintf(out, "  %-36s %12.5g m\n", "particle spacing dp", p->dp);
   fprintf(out, "  %-36s %12.5g m      (%.4g rows; %.4g m at the wall, %.4g rows)\n",
           "still water modelled", p->depth_model, p->depth_model / p->dp, p->depth_wall_model,
           p->depth_wall_model / p->dp);

@@ -298,13 +298,15 @@ static void case_derive(struct wl_report_case *c) {
   for (int g = 0; g < c->n_gauges; g++)
     if (!strcmp(c->gauges[g].name, "wall"))
       c->wall_gauge = g;
-  size_t n = c->n;
-  if (n == 0 || !c->t)
-    return;
   /* the bases assess used: the model's force at rest where it measured it */
   const double fs0 = isfinite(c->static_force) ? c->static_force : 0.0;
   const double fs = isfinite(c->rest_force) ? c->rest_force : fs0;
   const double fbs = isfinite(c->rest_force_b) ? c->rest_force_b : fs0;
+  /* from here on the bases themselves (results.h) */
+  c->rest_force = fs, c->rest_force_b = fbs;
+  size_t n = c->n;
+  if (n == 0 || !c->t)
+    return;
   const double ms = isfinite(c->rest_moment) ? c->rest_moment
                     : isfinite(c->static_moment) ? c->static_moment : 0.0;
   c->filtered = c->force_f != NULL;

@@ -51,8 +51,9 @@ struct wl_report_case {
   double static_force;  /* [N/m] */
   double static_moment; /* [N m/m] */
   /* the model's force and moment at rest, measured over [rest_from,
-   * rest_to] (assess.h; NAN when not measured or not stored: then the
-   * static values are the base) */
+   * rest_to] (assess.h); rest_force and rest_force_b are the bases of the
+   * derived values: the static force where not measured or not stored
+   * (rest_from NAN then) */
   double rest_force, rest_force_b, rest_moment, rest_from, rest_to;
   double wall_x, wall_toe_z, wall_crest_z, still_water_z; /* [m] */
   size_t n;                                               /* samples */

@@ -197,9 +197,7 @@ static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
         "record is in the peaks table). ",
         cs[first].filtered ? "low-pass filtered" : "unfiltered (no filtered series stored)",
         wl_report_fmt(cs[first].cutoff, 3, cut, sizeof cut),
-        wl_report_fmt((isfinite(cs[first].rest_force) ? cs[first].rest_force
-                                                       : cs[first].static_force) / KILO,
-                      dg, fs, sizeof fs),
+        wl_report_fmt(cs[first].rest_force / KILO, dg, fs, sizeof fs),
         wl_report_fmt(cs[first].static_force / KILO, dg, fs0, sizeof fs0));
     put(&b, "Error indicator: the force summed on the wall's boundary particles peaks at");
     int k = 0;
@@ -481,10 +479,8 @@ enum wl_status wl_report_render_peaks(struct wl_report_ctx *c, const struct wl_r
       continue;
     struct wl_report_cell *row = &ecells[erows * NE];
     row[0] = (struct wl_report_cell){k->name, 0};
-    row[1] = (struct wl_report_cell){
-        NULL, (isfinite(k->rest_force) ? k->rest_force : k->static_force) / KILO};
-    row[2] = (struct wl_report_cell){
-        NULL, (isfinite(k->rest_force_b) ? k->rest_force_b : k->static_force) / KILO};
+    row[1] = (struct wl_report_cell){NULL, k->rest_force / KILO};
+    row[2] = (struct wl_report_cell){NULL, k->rest_force_b / KILO};
     row[3] = (struct wl_report_cell){NULL, k->force_peak.value / KILO};
     row[4] = (struct wl_report_cell){NULL, k->force_b_peak.value / KILO};
     row[5] = (struct wl_report_cell){NULL, 100.0 * (k->force_b_peak.value - k->force_peak.value) /

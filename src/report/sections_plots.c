@@ -301,9 +301,7 @@ enum wl_status wl_report_render_loads(struct wl_report_ctx *c, const struct wl_r
     if (r->cases[i].present && r->cases[i].n) {
       any = 1;
       if (!isfinite(fs))
-        fs = isfinite(r->cases[i].rest_force) ? r->cases[i].rest_force
-                                              : r->cases[i].static_force,
-        cut = r->cases[i].cutoff;
+        fs = r->cases[i].rest_force, cut = r->cases[i].cutoff;
     }
   if (!st && !any) {
     st = wl_report_paragraphf(d, err, "No wall-load histories: no case recorded samples.%s",
