@@ -123,9 +123,12 @@ ladder)
   R=/tmp/ladder; mkdir -p $R; out=${OUT:-/tmp}
   export FONTCONFIG_FILE=$E/fonts.conf LD_LIBRARY_PATH=$E/lib
   W=$E/wallload
+  # seawall.yaml's resolution block with 4 particles per wave height (its
+  # finest level) as the first of four levels
   lad='  convergence: [1, 0.7071, 0.5, 0.3536]'
-  sed "s|^  particles_per_height: 4\$|&\n$lad|" "$root/scenarios/seawall.yaml" >$R/whole.yaml
-  sed "s|^  dp: auto\$|  dp: 0.0125 m|; s|^  particles_per_height: 4\$|$lad|" \
+  sed "s|^  particles_per_height: 2\$|  particles_per_height: 4|; s|^  convergence: .*|$lad|" \
+    "$root/scenarios/seawall.yaml" >$R/whole.yaml
+  sed "s|^  dp: auto\$|  dp: 0.0125 m|; /^  particles_per_height: 2\$/d; s|^  convergence: .*|$lad|" \
     "$root/scenarios/seawall.yaml" >$R/given.yaml
   {
     echo "# $(date -u +%FT%TZ) $(nvidia-smi --query-gpu=name,memory.total,driver_version --format=csv,noheader 2>&1)"

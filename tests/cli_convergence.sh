@@ -6,10 +6,10 @@
 #  - summary.json holds cases.solitary.convergence with 3 levels, equal to
 #    convergence.csv (both written from the run; results.h5 against the
 #    in-memory values is tests/test_convergence.c);
-#  - the observed order, Richardson value and error estimate recomputed
-#    HERE from the stored per-level values with an independent method
-#    (Celik et al. 2008, J. Fluids Eng. 130 078001, fixed-point iteration
-#    for unequal refinement ratios), including the fallback rules;
+#  - the observed order, Richardson value and uncertainty recomputed HERE
+#    from the stored per-level values with an independent method (Celik et
+#    al. 2008, J. Fluids Eng. 130 078001, fixed-point iteration for unequal
+#    refinement ratios), with the uncertainty bands of loads.h;
 #  - the report PDF (rendered by `wallload report` from results.h5 alone)
 #    holds the ladder table with summary.json's peak forces as printed;
 #  - resolution.target_error: 20 % stops the same ladder after level 2
@@ -79,50 +79,58 @@ report(len(rows) == 3 and all(same(l[j], float(r[c])) for l, r in zip(lv, rows) 
 # eps21 = phi2 - phi1, eps32 = phi3 - phi2, s = sign(eps32/eps21),
 # p = |ln|eps32/eps21| + q(p)| / ln r21, q(p) = ln((r21^p - s)/(r32^p - s)),
 # phi_ext = (r21^p phi1 - phi2)/(r21^p - 1), e_ext = |(phi_ext - phi1)/phi_ext|.
-# wallload's rules: monotone (s = +1) and 0.5 <= p <= 4, else no
-# extrapolation and the error is the last change |phi1 - phi2|/|phi1|.
+# The uncertainty bands (Eca & Hoekstra 2014 for three levels, Roache's GCI;
+# loads.h): monotone with 0.95 <= p < 2.05: 1.25 |phi1 - phi_ext|;
+# 0 < p < 0.95: min(that, 3 range); p >= 2.05: max(1.25 |phi1 - phi_ext(2)|,
+# 1.25 range); oscillating, a zero difference or p <= 0: 3 range. The
+# extrapolation is reported for monotone 0.5 <= p <= 4 only.
 def celik(h, f):
     h1, h2, h3 = h[2], h[1], h[0]
     f1, f2, f3 = f[2], f[1], f[0]
     r21, r32 = h2 / h1, h3 / h2
     e21, e32 = f2 - f1, f3 - f2
-    last = abs(f1 - f2) / abs(f1)
+    rng = max(f) - min(f)
     if e21 == 0 or e32 == 0 or (e21 > 0) != (e32 > 0):
-        return None, None, last
+        return None, None, 3 * rng / abs(f1), '3 x range'
     p = math.log(abs(e32 / e21)) / math.log(r21)   # start: constant-ratio value
     for _ in range(500):
         q = math.log((r21 ** p - 1) / (r32 ** p - 1)) if p != 0 else math.log(math.log(r21) / math.log(r32))
         p_new = (math.log(abs(e32 / e21)) + q) / math.log(r21)
         if abs(p_new - p) < 1e-13: p = p_new; break
         p = p_new
-    if not (0.5 <= p <= 4):
-        return p, None, last
-    ext = (r21 ** p * f1 - f2) / (r21 ** p - 1)
-    return p, ext, abs((ext - f1) / ext)
+    ext = (r21 ** p * f1 - f2) / (r21 ** p - 1) if 0.5 <= p <= 4 else None
+    delta = lambda pp: abs(f1 - f2) / (r21 ** pp - 1)
+    if p <= 0:
+        u, basis = 3 * rng, '3 x range'
+    elif p < 0.95:
+        u, basis = min(1.25 * delta(p), 3 * rng), 'GCI, low order'
+    elif p < 2.05:
+        u, basis = 1.25 * delta(p), 'GCI'
+    else:
+        u, basis = max(1.25 * delta(2.0), 1.25 * rng), 'GCI, order capped at 2'
+    return p, ext, u / abs(f1), basis
 
 h = [l['dp'] for l in lv]
 errs = []
 for q, key in (('peak_force', 'peak_force'), ('impulse_positive_phase', 'impulse_positive_phase')):
     f = [l[key] for l in lv]
-    p, ext, err = celik(h, f)
+    p, ext, err, basis = celik(h, f)
     st = cv[q]
     d1, d2 = f[0] - f[1], f[1] - f[2]
-    what = "%s %s: differences %.4g, %.4g; by hand p = %s, f_ext = %s, error = %.6g; stored p = %s, f_ext = %s, error = %.6g (%s)" % (
-        q, [round(x, 4) for x in f], d1, d2, p, ext, err, st['order'], st['extrapolated'], st['error_estimate'], st['basis'])
-    # summary.json keeps 10 significant digits, so an error estimate made
-    # from the difference of two stored values carries an absolute rounding
-    # of about 1e-10 |f| / |f1| ~ 1e-10: relative agreement is not to be had
-    # when the two finest values nearly coincide (|f1 - f2| ~ 1e-5 |f1|)
+    what = "%s %s: differences %.4g, %.4g; by hand p = %s, f_ext = %s, uncertainty = %.6g (%s); stored p = %s, f_ext = %s, uncertainty = %.6g (%s)" % (
+        q, [round(x, 4) for x in f], d1, d2, p, ext, err, basis, st['order'], st['extrapolated'], st['error_estimate'], st['basis'])
+    # summary.json keeps 10 significant digits, so an estimate made from the
+    # difference of two stored values carries an absolute rounding of about
+    # 1e-10 |f| / |f1| ~ 1e-10: relative agreement is not to be had when the
+    # two finest values nearly coincide (|f1 - f2| ~ 1e-5 |f1|)
     good = (same(err, st['error_estimate'], 1e-6) or abs(err - st['error_estimate']) <= 1e-9) \
-        and (ext is None) == (st['extrapolated'] is None)
+        and (ext is None) == (st['extrapolated'] is None) and basis == st['basis']
     if p is not None and st['order'] is not None:
         good = good and same(p, st['order'], 1e-6)
     elif p is not None or st['order'] is not None:
         good = False
     if ext is not None:
-        good = good and same(ext, st['extrapolated'], 1e-6) and st['basis'] == 'Richardson'
-    else:
-        good = good and st['basis'] == 'last change'
+        good = good and same(ext, st['extrapolated'], 1e-6)
     report(good, what)
     errs.append(err)
 report(same(max(errs), cv['error_estimate'], 1e-6),

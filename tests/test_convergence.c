@@ -3,13 +3,14 @@
  *
  * References from outside the code under test:
  *  - synthetic sequences f(h) = f* + C h^p with p, f*, C chosen here, so
- *    the observed order is p, the Richardson value f* and the error of the
- *    finest level |C h3^p| / |f*|, written out below; with the ladder
- *    factors 1, 0.71, 0.5 (unequal ratios 1.408, 1.42) and with a constant
- *    ratio sqrt 2;
- *  - the fallback cases by hand: oscillating values (no order, last change),
- *    an order outside [0.5, 4] (reported, no extrapolation), two levels
- *    (last change), one level (no estimate);
+ *    the observed order is p, the Richardson value f* and the uncertainty
+ *    1.25 |C h3^p| / |f3|, written out below; with the ladder factors 1,
+ *    0.71, 0.5 (unequal ratios 1.408, 1.42) and with a constant ratio
+ *    sqrt 2;
+ *  - the published worked example of Celik et al. (2008), Table 1;
+ *  - the other bands by hand (loads.h): an order above 2.05 (capped),
+ *    below 0.95, oscillating and diverging values (3 x range), two levels
+ *    (Roache's two-grid index), one level (no estimate);
  *  - storage: a tiny assessment with a 3-level ladder, its /convergence
  *    group read back through the report's HDF5 reader (a second code path)
  *    and summary.json's numbers parsed from the text; both must equal what
@@ -47,24 +48,41 @@ static void power_law(const double *h, int n, double fstar, double C, double p, 
 }
 
 static void test_synthetic(void) {
-  char msg[256];
+  char msg[320];
   struct wl_loads_convergence cv;
   const double dp = 0.02;
   /* the ladder of the scenarios: factors 1, 0.71, 0.5 (ratios 1.408, 1.42) */
   double h[3] = {dp, 0.71 * dp, 0.5 * dp}, f[3];
-  const double ps[] = {1.0, 2.0, 3.5};
-  for (int i = 0; i < 3; i++) {
+  const double ps[] = {1.0, 2.0};
+  for (int i = 0; i < 2; i++) {
     double p = ps[i], fstar = 1234.5, C = -8.0e4;
     power_law(h, 3, fstar, C, p, f);
     wl_loads_convergence(h, f, 3, &cv);
-    /* error of the finest level by hand: |C h3^p| / |f*| */
-    double err = fabs(C * pow(h[2], p)) / fstar;
+    /* p in [0.95, 2.05): Roache's GCI, 1.25 |f3 - f*| / |f3|, by hand */
+    double u = 1.25 * fabs(C * pow(h[2], p)) / fabs(f[2]);
     snprintf(msg, sizeof msg,
              "f = f* + C h^p, p = %.1f, ladder 1/0.71/0.5: order %.12g (%.1f), f_ext %.12g "
-             "(f* %.1f), error %.6g (|C h3^p|/f* = %.6g), Richardson",
-             p, cv.order, p, cv.extrapolated, fstar, cv.error, err);
+             "(f* %.1f), uncertainty %.6g (1.25 |C h3^p|/|f3| = %.6g), GCI",
+             p, cv.order, p, cv.extrapolated, fstar, cv.error, u);
     check(cv.order_ok && close_rel(cv.order, p, 1e-9) && close_rel(cv.extrapolated, fstar, 1e-9) &&
-              close_rel(cv.error, err, 1e-7) && cv.basis == WL_LOADS_EST_RICHARDSON,
+              close_rel(cv.error, u, 1e-7) && cv.basis == WL_LOADS_EST_GCI,
+          msg);
+  }
+  /* p = 3.5 >= 2.05: the order is reported and extrapolated, but the band
+   * uses order 2 and at least 1.25 x the range (Eca & Hoekstra): by hand */
+  {
+    double fstar = 1234.5, C = -8.0e4 * 50;
+    power_law(h, 3, fstar, C, 3.5, f);
+    wl_loads_convergence(h, f, 3, &cv);
+    double r32 = h[1] / h[2];
+    double d2 = fabs(f[2] - f[1]) / (r32 * r32 - 1), range = fabs(f[2] - f[0]);
+    double u = fmax(1.25 * d2, 1.25 * range) / fabs(f[2]);
+    snprintf(msg, sizeof msg,
+             "p = 3.5: order %.6g, f_ext %.9g = f*, uncertainty %.6g = max(1.25 delta(p=2), 1.25 "
+             "range)/|f3| = %.6g, order capped",
+             cv.order, cv.extrapolated, cv.error, u);
+    check(cv.order_ok && close_rel(cv.order, 3.5, 1e-9) && close_rel(cv.extrapolated, fstar, 1e-9) &&
+              close_rel(cv.error, u, 1e-12) && cv.basis == WL_LOADS_EST_GCI_HIGH,
           msg);
   }
   /* constant ratio sqrt 2: the closed form p = ln((f1-f2)/(f2-f3))/ln r */
@@ -82,50 +100,83 @@ static void test_synthetic(void) {
             close_rel(cv.extrapolated, 50.0, 1e-9) && close_rel(cv.extrapolated, ext_hand, 1e-12),
         msg);
 
-  /* oscillating: differences of opposite sign -> no order, last change */
+  /* The worked example of Celik et al. (2008), J. Fluids Eng. 130, 078001,
+   * Table 1, first column: grids of N = 18000, 8000, 4500 cells in 2D
+   * (spacings 1/sqrt N), phi = 6.063, 5.972, 5.863 (fine to coarse);
+   * published p = 1.53, phi_ext = 6.1685, GCI_fine = 2.2 %. */
+  {
+    double hc[3] = {1 / sqrt(4500.0), 1 / sqrt(8000.0), 1 / sqrt(18000.0)};
+    double fc[3] = {5.863, 5.972, 6.063};
+    wl_loads_convergence(hc, fc, 3, &cv);
+    snprintf(msg, sizeof msg,
+             "Celik et al. 2008 Table 1: p %.4g (1.53), phi_ext %.6g (6.1685), GCI %.4g %% (2.2 %%)",
+             cv.order, cv.extrapolated, 100 * cv.error);
+    check(fabs(cv.order - 1.53) < 0.005 && fabs(cv.extrapolated - 6.1685) < 0.00005 &&
+              fabs(100 * cv.error - 2.2) < 0.05 && cv.basis == WL_LOADS_EST_GCI,
+          msg);
+  }
+
+  /* oscillating: differences of opposite sign -> no order, 3 x the range */
   double fo[3] = {100.0, 90.0, 95.0};
   wl_loads_convergence(h, fo, 3, &cv);
   snprintf(msg, sizeof msg,
-           "oscillating 100, 90, 95: no order (%g), no extrapolation, error = |95-90|/95 = %.6g "
-           "(%.6g), last change",
-           cv.order, 5.0 / 95.0, cv.error);
+           "oscillating 100, 90, 95: no order (%g), no extrapolation, uncertainty = 3 x 10/95 = "
+           "%.6g (%.6g), 3 x range",
+           cv.order, 30.0 / 95.0, cv.error);
   check(isnan(cv.order) && !cv.order_ok && isnan(cv.extrapolated) &&
-            close_rel(cv.error, 5.0 / 95.0, 1e-12) && cv.basis == WL_LOADS_EST_LAST_CHANGE,
+            close_rel(cv.error, 30.0 / 95.0, 1e-12) && cv.basis == WL_LOADS_EST_RANGE,
         msg);
 
-  /* order out of range: p = 6 is reported, not used */
+  /* order beyond 4: reported, not extrapolated; still the capped band */
   power_law(h, 3, 10.0, 1.0e9, 6.0, f);
   wl_loads_convergence(h, f, 3, &cv);
-  double last = fabs(f[2] - f[1]) / fabs(f[2]);
-  snprintf(msg, sizeof msg,
-           "p = 6 > 4: order reported (%.6g), not meaningful, error = last change %.6g (%.6g)",
-           cv.order, last, cv.error);
-  check(close_rel(cv.order, 6.0, 1e-9) && !cv.order_ok && isnan(cv.extrapolated) &&
-            close_rel(cv.error, last, 1e-12) && cv.basis == WL_LOADS_EST_LAST_CHANGE,
-        msg);
+  {
+    double r32 = h[1] / h[2];
+    double u = fmax(1.25 * fabs(f[2] - f[1]) / (r32 * r32 - 1), 1.25 * fabs(f[2] - f[0])) / fabs(f[2]);
+    snprintf(msg, sizeof msg,
+             "p = 6 > 4: order reported (%.6g), no extrapolation, uncertainty %.6g (%.6g), capped",
+             cv.order, cv.error, u);
+    check(close_rel(cv.order, 6.0, 1e-9) && !cv.order_ok && isnan(cv.extrapolated) &&
+              close_rel(cv.error, u, 1e-12) && cv.basis == WL_LOADS_EST_GCI_HIGH,
+          msg);
+  }
 
-  /* p = 0.3 < 0.5: slow, not in the asymptotic range */
+  /* p = 0.3 < 0.95: slow; the smaller of 1.25 delta_RE and 3 x range */
   power_law(h, 3, 10.0, 5.0, 0.3, f);
   wl_loads_convergence(h, f, 3, &cv);
-  snprintf(msg, sizeof msg, "p = 0.3 < 0.5: order %.6g reported, not meaningful, last change",
-           cv.order);
-  check(close_rel(cv.order, 0.3, 1e-9) && !cv.order_ok && cv.basis == WL_LOADS_EST_LAST_CHANGE,
-        msg);
+  {
+    double r32 = h[1] / h[2];
+    double u = fmin(1.25 * fabs(f[2] - f[1]) / (pow(r32, 0.3) - 1), 3 * fabs(f[2] - f[0])) / fabs(f[2]);
+    snprintf(msg, sizeof msg, "p = 0.3 < 0.95: order %.6g, uncertainty %.6g (%.6g), low order",
+             cv.order, cv.error, u);
+    check(close_rel(cv.order, 0.3, 1e-9) && !cv.order_ok && close_rel(cv.error, u, 1e-9) &&
+              cv.basis == WL_LOADS_EST_GCI_LOW,
+          msg);
+  }
+  /* diverging: monotone but growing differences (p < 0): 3 x the range */
+  double fd[3] = {100.0, 101.0, 104.0};
+  wl_loads_convergence(h, fd, 3, &cv);
+  snprintf(msg, sizeof msg, "diverging 100, 101, 104: order %.4g < 0, uncertainty %.6g = 3 x 4/104",
+           cv.order, cv.error);
+  check(cv.order < 0 && close_rel(cv.error, 12.0 / 104.0, 1e-12) && cv.basis == WL_LOADS_EST_RANGE, msg);
 
-  /* two levels: the last change; one level: nothing */
+  /* two levels: Roache's two-grid GCI, 3 |f2 - f1| / (r^2 - 1), order 2
+   * assumed; one level: nothing */
   double f2[2] = {200.0, 210.0};
   wl_loads_convergence(h, f2, 2, &cv);
-  snprintf(msg, sizeof msg, "two levels 200, 210: error = 10/210 = %.6g (%.6g), no order",
-           10.0 / 210.0, cv.error);
-  check(close_rel(cv.error, 10.0 / 210.0, 1e-12) && isnan(cv.order) &&
-            cv.basis == WL_LOADS_EST_LAST_CHANGE,
-        msg);
+  {
+    double r01 = h[0] / h[1];
+    double u = 3 * 10.0 / (r01 * r01 - 1) / 210.0;
+    snprintf(msg, sizeof msg, "two levels 200, 210: uncertainty = 3 x 10/(r^2 - 1)/210 = %.6g (%.6g), no order",
+             u, cv.error);
+    check(close_rel(cv.error, u, 1e-12) && isnan(cv.order) && cv.basis == WL_LOADS_EST_TWO_LEVEL, msg);
+  }
   wl_loads_convergence(h, f2, 1, &cv);
   check(isnan(cv.error) && cv.basis == WL_LOADS_EST_NONE, "one level: no estimate");
-  /* converged exactly: zero differences -> no order, error 0 */
+  /* converged exactly: zero differences -> no order, uncertainty 0 */
   double fc[3] = {7.0, 7.0, 7.0};
   wl_loads_convergence(h, fc, 3, &cv);
-  check(isnan(cv.order) && cv.error == 0.0, "equal values: no order, error 0 (last change)");
+  check(isnan(cv.order) && cv.error == 0.0, "equal values: no order, uncertainty 0 (3 x range)");
 }
 
 /* The number after "key": at or after `from` in the JSON text. */

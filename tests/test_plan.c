@@ -123,10 +123,12 @@ int main(void) {
     wl_scenario_clear(&sw);
   }
   /* Whole rows of still water (plan.h wl_plan_whole_rows_dp). seawall.yaml:
-   * h = 0.36 m, a platform at z = 0.30 m (0.06 m of water at the wall),
-   * 0.0125 m asked for (4 particles over the 0.05 m solitary wave). By
-   * hand: 0.06/5 = 0.012 m is the nearest spacing within -20/+10 % at which
-   * both depths are whole rows (30 and 5). At the 0.0125 m asked for, the
+   * h = 0.36 m, a platform at z = 0.30 m (0.06 m of water at the wall), a
+   * ladder from 0.025 m asked for (2 particles over the 0.05 m solitary
+   * wave) x 1, 0.71, 0.5. By hand: the nearest spacing within -20/+10 % of
+   * the asked one at which both depths are whole rows is 0.06/3 = 0.02 m
+   * (18 and 3 rows) for 0.025 m, 0.06/4 = 0.015 m (24, 4) for 0.01775 m
+   * and 0.06/5 = 0.012 m (30, 5) for 0.0125 m. At 0.0125 m as asked, the
    * rows (j + 1/2) 0.0125 < 0.36 are j = 0..28 and those on the platform
    * start at j = 24: 5 rows, 0.0625 m (+4 %, issue 19's number). The
    * flume the scene builder lays (an independent count: its fluid
@@ -137,15 +139,17 @@ int main(void) {
     struct wl_error err;
     wl_error_clear(&err);
     if (plan_seawall(0.0, &sw, &pw)) {
-      CHECK_ABS(pw.dp, 0.012, 1e-12, "dp auto: 0.06/5 m, whole rows at the wall and offshore");
-      CHECK_ABS(pw.depth_wall_model, 0.06, 1e-12, "0.06 m at the wall modelled exactly (5 rows)");
-      CHECK_ABS(pw.depth_model, 0.36, 1e-12, "0.36 m offshore modelled exactly (30 rows)");
+      CHECK_ABS(pw.dp, 0.02, 1e-12, "dp auto: 0.06/3 m, whole rows at the wall and offshore");
+      CHECK_ABS(pw.depth_wall_model, 0.06, 1e-12, "0.06 m at the wall modelled exactly (3 rows)");
+      CHECK_ABS(pw.depth_model, 0.36, 1e-12, "0.36 m offshore modelled exactly (18 rows)");
       CHECK_ABS(wl_plan_modelled_depth(0.36, 0.0, 0.30, 0.0125), 0.0625, 1e-12,
                 "0.0125 m: 5 rows on the platform, 0.0625 m (by hand)");
       CHECK_ABS(wl_plan_modelled_depth(0.36, 0.0, 0.0, 0.0125), 0.3625, 1e-12,
                 "0.0125 m: 29 rows offshore, 0.3625 m (by hand)");
-      /* a ladder level: 0.0125 x 0.5 = 0.00625 m asked, 0.006 m (10 rows) */
-      CHECK_ABS(wl_plan_level_dp(&sw, &pw, 0.5), 0.006, 1e-12, "ladder level x 0.5: 0.06/10 m");
+      /* the ladder's levels: 0.025 x 0.71 = 0.01775 m asked, 0.015 m (4
+       * rows); 0.025 x 0.5 = 0.0125 m asked, 0.012 m (5 rows) */
+      CHECK_ABS(wl_plan_level_dp(&sw, &pw, 0.71), 0.015, 1e-12, "ladder level x 0.71: 0.06/4 m");
+      CHECK_ABS(wl_plan_level_dp(&sw, &pw, 0.5), 0.012, 1e-12, "ladder level x 0.5: 0.06/5 m");
       struct wl_flume f;
       memset(&f, 0, sizeof f);
       if (wl_flume_build(&sw, &pw, WL_CASE_EXPLOSION, &f, &err) == WL_OK) {

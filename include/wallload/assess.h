@@ -29,22 +29,22 @@
  * as without a ladder (series, snapshots, CSV, peaks). Per level the driver
  * keeps dp, particles, steps, runtime, particle-steps/s and the scalar loads
  * (peak force from the filtered probe and boundary-particle series, impulse,
- * peak moment, maximum run-up), and after each level estimates the relative
- * error of the peak force (probes) and of the impulse with
- * wl_loads_convergence (loads.h) from the last three levels run:
+ * peak moment, maximum run-up), and after each level estimates the
+ * uncertainty of the peak force (probes) and of the positive-phase impulse
+ * with wl_loads_convergence (loads.h) from the last three levels run:
  *
  *   observed order p = ln((f1 - f2)/(f2 - f3)) / ln r (r = h1/h2 = h2/h3;
- *     with slightly unequal ratios the general equation of loads.h),
+ *     with unequal ratios the general equation of loads.h),
  *   Richardson value f_ext = f3 + (f3 - f2)/(r^p - 1),
- *   error estimate |f3 - f_ext| / |f_ext| of the finest level run;
+ *   uncertainty of the finest level: Roache's grid convergence index
+ *     1.25 |f3 - f_ext| where 0.95 <= p < 2.05, with Eca & Hoekstra's
+ *     bands outside it (the order capped at 2, or 3 x the range of the
+ *     three values when they oscillate), relative to |f3|; with two
+ *     levels 3 |f3 - f2| / (r^2 - 1).
  *
- * when the differences change sign or vanish, or p lies outside
- * [WL_LOADS_ORDER_MIN, WL_LOADS_ORDER_MAX] = [0.5, 4], there is no
- * extrapolation and the error estimate is the last change |f3 - f2|/|f3|
- * (with two levels, too). The case's error estimate is the larger of the
- * two quantities'. When resolution.target_error is written in the scenario,
- * refining stops once that estimate (available from the second level on) is
- * below the target; the levels not run are listed as skipped. Without it the
+ * The case's estimate is the larger of the two quantities'. When
+ * resolution.target_error is written in the scenario, refining stops once
+ * that estimate (available from the second level on) is below the target; the levels not run are listed as skipped. Without it the
  * whole ladder runs and the estimate is compared with the default target
  * (5 %). Stored in results.h5 under /convergence/<case>/, in summary.json
  * (cases.<case>.convergence) and in convergence.csv. */
@@ -159,7 +159,7 @@ struct wl_assess_level {
   double error;             /* estimated relative error of this level: the larger of peak
                                force and positive-phase impulse, |f_k - f_ref|/|f_ref| with f_ref the
                                Richardson value when the order is meaningful, else the
-                               finest level run; the finest level gets the case's estimate */
+                               finest level run; the finest level gets the case's uncertainty */
 };
 
 /* The ladder of one load case. */

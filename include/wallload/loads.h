@@ -113,51 +113,75 @@ double wl_loads_positive_phase_impulse(const double *t, const double *xf, const 
 
 /* Meaningful observed orders: outside [MIN, MAX] the three levels are not in
  * the asymptotic range (or the quantity is noise-dominated) and no
- * Richardson extrapolation is made. */
+ * Richardson value is reported. */
 #define WL_LOADS_ORDER_MIN 0.5
 #define WL_LOADS_ORDER_MAX 4.0
 
-/* How the error estimate of a ladder was obtained. */
+/* The order bands of the uncertainty (Eca & Hoekstra 2014, J. Comput. Phys.
+ * 262, 104-130, section 4, for a method of formal order 2: the Wendland
+ * kernel's SPH is at best second order), the order assumed where the
+ * observed one cannot be used, and the factors of safety: 1.25 with an
+ * observed order, 3 with an assumed one or with only the data range (Roache
+ * 1998, "Verification and Validation in Computational Science and
+ * Engineering", ch. 5; ASME V&V 20-2009, section 5). */
+#define WL_LOADS_ORDER_LOW 0.95
+#define WL_LOADS_ORDER_HIGH 2.05
+#define WL_LOADS_ORDER_ASSUMED 2.0
+#define WL_LOADS_SAFETY_OBSERVED 1.25
+#define WL_LOADS_SAFETY_ASSUMED 3.0
+
+/* How the uncertainty of a ladder's finest value was obtained. */
 enum wl_loads_estimate {
-  WL_LOADS_EST_NONE,        /* fewer than two levels (or non-finite values): no estimate */
-  WL_LOADS_EST_LAST_CHANGE, /* |f_n - f_(n-1)| / |f_n|: two levels, or the order not meaningful */
-  WL_LOADS_EST_RICHARDSON,  /* |f_n - f_ext| / |f_ext| with the observed order */
+  WL_LOADS_EST_NONE,      /* fewer than two levels (or non-finite values): none */
+  WL_LOADS_EST_TWO_LEVEL, /* two levels: 3 |f3 - f2| / (r32^2 - 1), the order assumed 2 */
+  WL_LOADS_EST_GCI,       /* monotone, 0.95 <= p < 2.05: 1.25 |f3 - f_ext| */
+  WL_LOADS_EST_GCI_LOW,   /* monotone, 0 < p < 0.95: min(1.25 |f3 - f_ext|, 3 range) */
+  WL_LOADS_EST_GCI_HIGH,  /* monotone, p >= 2.05: max(1.25 |f3 - f_ext(p = 2)|, 1.25 range) */
+  WL_LOADS_EST_RANGE,     /* oscillating, a zero difference or diverging: 3 range */
 };
 
-/* Observed order, Richardson extrapolation and error estimate of a quantity
- * f computed at spacings h (any length unit), from the LAST three levels
+/* Observed order, Richardson extrapolation and uncertainty of a quantity f
+ * computed at spacings h (any length unit), from the LAST three levels
  * (1 coarsest, 3 finest of those three; h1 > h2 > h3):
  *
  *   r21 = h1/h2, r32 = h2/h3 (refinement ratios)
  *   with f = f* + C h^p:  (f1 - f2)/(f2 - f3) = r32^p (r21^p - 1)/(r32^p - 1),
  *   which for a constant ratio r is r^p, so p = ln((f1 - f2)/(f2 - f3)) / ln r;
- *   for unequal ratios (the ladder 1, 0.71, 0.5 has 1.408 and 1.42) the
- *   equation is solved for p by bisection (its right side increases with p).
- *   f_ext = f3 + (f3 - f2)/(r32^p - 1)                 (Richardson)
- *   error = |f3 - f_ext| / |f_ext|                      (relative, of the finest level)
+ *   for unequal ratios (whole rows of still water make them so) the
+ *   equation is solved for p by bisection (its right side increases with p);
+ *   Celik et al. 2008, J. Fluids Eng. 130, 078001, eqs 3-4.
+ *   f_ext(p) = f3 + (f3 - f2)/(r32^p - 1)               (Richardson)
+ *   range = max(f1, f2, f3) - min(f1, f2, f3)
  *
- * The order is "meaningful" (order_ok) when the two differences have the
- * same sign (monotone convergence) and WL_LOADS_ORDER_MIN <= p <=
- * WL_LOADS_ORDER_MAX. Otherwise (differences of opposite sign: oscillating;
- * a zero difference; p out of range) there is no extrapolation and the
- * error estimate is the last change |f3 - f2| / |f3|; the order is still
- * reported when it is defined (NaN when the differences change sign or one
- * is zero). With two levels the estimate is the last change; with one, none.
- * Pure function; never fails. */
+ * The uncertainty U of the finest value f3 (a band meant to hold the
+ * converged value with about 95 % confidence, not a best guess of the
+ * error) follows Eca & Hoekstra's bands for three levels, without their
+ * least-squares fit (the ladder has three levels at most in use):
+ *   monotone (both differences of one sign) and 0.95 <= p < 2.05:
+ *       U = 1.25 |f3 - f_ext(p)|                    (Roache's GCI)
+ *   monotone and 0 < p < 0.95:  U = min(1.25 |f3 - f_ext(p)|, 3 range)
+ *   monotone and p >= 2.05:     U = max(1.25 |f3 - f_ext(2)|, 1.25 range)
+ *   otherwise (oscillating, a zero difference, p <= 0): U = 3 range
+ *   two levels:  U = 3 |f3 - f2| / (r32^2 - 1)       (Roache's two-grid GCI)
+ * error = U / |f3|. The order is "meaningful" (order_ok; the Richardson
+ * value f_ext is then given) when monotone with WL_LOADS_ORDER_MIN <= p <=
+ * WL_LOADS_ORDER_MAX; the order is reported whenever it is defined (NaN
+ * when the differences change sign or one is zero). Pure function; never
+ * fails. */
 struct wl_loads_convergence {
   int n_used;            /* levels used: min(n, 3) */
   double r21, r32;       /* refinement ratios of the last three levels (NaN when absent) */
   double order;          /* observed order p (NaN when undefined) */
   int order_ok;          /* 1: monotone and p in [WL_LOADS_ORDER_MIN, WL_LOADS_ORDER_MAX] */
   double extrapolated;   /* f_ext (NaN unless order_ok) */
-  double error;          /* relative error estimate of the finest value (NaN: none) */
+  double error;          /* uncertainty of the finest value, relative: U / |f3| (NaN: none) */
   enum wl_loads_estimate basis;
 };
 
 void wl_loads_convergence(const double *h, const double *f, int n,
                           struct wl_loads_convergence *out);
 
-/* "Richardson", "last change" or "none". */
+/* A short name of the basis ("GCI", "3 x range", ...; "none"). */
 const char *wl_loads_estimate_name(enum wl_loads_estimate e);
 
 #endif

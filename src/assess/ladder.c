@@ -1,7 +1,7 @@
 /* ladder.c: the convergence ladder of a load case (resolution.convergence):
  * the case run at dp x factor for each level, coarse to fine, its scalar
- * loads kept per level, the observed order, Richardson value and error
- * estimate of peak force and impulse after each level (wl_loads_convergence),
+ * loads kept per level, the observed order, Richardson value and uncertainty
+ * of peak force and impulse after each level (wl_loads_convergence),
  * and the early stop at resolution.target_error. Definitions in assess.h. */
 #include <math.h>
 #include <stdio.h>
@@ -84,34 +84,30 @@ static void ladder_note(struct wl_assess_convergence *cv, const char *stop_word)
   char e[32], t[32];
   pct(cv->error_estimate, e, sizeof e);
   pct(cv->target, t, sizeof t);
-  const char *basis = cv->force.basis == WL_LOADS_EST_RICHARDSON &&
-                              cv->impulse_phase.basis == WL_LOADS_EST_RICHARDSON
-                          ? "Richardson"
-                      : cv->force.basis == WL_LOADS_EST_NONE ? "none"
-                      : cv->force.basis == WL_LOADS_EST_RICHARDSON ||
-                              cv->impulse_phase.basis == WL_LOADS_EST_RICHARDSON
-                          ? "Richardson and last change"
-                          : "last change";
+  /* the basis of the larger of the two quantities' bands */
+  const struct wl_loads_convergence *gov =
+      !(cv->impulse_phase.error > cv->force.error) ? &cv->force : &cv->impulse_phase;
+  const char *basis = wl_loads_estimate_name(gov->basis);
   const struct wl_assess_level *last = &cv->lv[cv->n_levels - 1];
   if (stop_word)
     snprintf(cv->note, sizeof cv->note,
-             "level %d of %d (dp = %.4g m) %s, so the ladder stopped there; estimated error %s "
+             "level %d of %d (dp = %.4g m) %s, so the ladder stopped there; uncertainty %s "
              "(%s) from the complete levels",
              cv->n_levels, cv->n_planned, last->dp, stop_word, e, basis);
   else if (cv->stopped_early)
     snprintf(cv->note, sizeof cv->note,
-             "stopped refining after level %d of %d (dp = %.4g m): the estimated error %s (%s) "
+             "stopped refining after level %d of %d (dp = %.4g m): the uncertainty %s (%s) "
              "is below the target %s",
              cv->n_levels, cv->n_planned, last->dp, e, basis, t);
   else if (cv->target_given)
     snprintf(cv->note, sizeof cv->note,
-             "ran all %d levels; the estimated error %s (%s) is %s the target %s%s", cv->n_levels, e,
+             "ran all %d levels; the uncertainty %s (%s) is %s the target %s%s", cv->n_levels, e,
              basis, cv->target_met ? "below" : "above", t,
              cv->target_met ? "" : ": a finer level is needed to meet it");
   else
     snprintf(cv->note, sizeof cv->note,
              "ran all %d levels (resolution.target_error not set, so no early stop); the "
-             "estimated error %s (%s) is %s the default target %s",
+             "uncertainty %s (%s) is %s the default target %s",
              cv->n_levels, e, basis, cv->target_met ? "below" : "above", t);
 }
 

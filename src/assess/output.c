@@ -122,9 +122,9 @@ static const struct level_field LEVEL_FIELDS[] = {
      LF(peak_moment), 0},
     {"max_runup", "m", "highest water level at the wall face above still water", LF(runup), 0},
     {"estimated_error", "1",
-     "relative error estimate of the level: larger of peak force and positive-phase impulse, "
-     "against the "
-     "Richardson value (or the finest level); the finest level's is the case's estimate",
+     "relative error of the level: larger of peak force and positive-phase impulse, against "
+     "the Richardson value (or the finest level); the finest level's is the case's "
+     "uncertainty (loads.h)",
      LF(error), 0},
     {"status", "", "complete, unstable, interrupted or failed", LF(status), 3},
 };

@@ -1,8 +1,7 @@
 /* convergence.c: observed order of convergence, Richardson extrapolation and
- * relative error estimate over a resolution ladder (definitions in loads.h;
- * Roache 1998, "Verification and Validation in Computational Science and
- * Engineering", ch. 5; Celik et al. 2008, J. Fluids Eng. 130, 078001, for
- * unequal refinement ratios). */
+ * the uncertainty of the finest value over a resolution ladder (definitions
+ * and sources in loads.h: Roache's grid convergence index with Eca &
+ * Hoekstra's order bands; Celik et al. 2008 for unequal refinement ratios). */
 #include <math.h>
 
 #include "wallload/loads.h"
@@ -22,10 +21,35 @@ static double log_ratio_model(double a, double b, double p) {
 
 const char *wl_loads_estimate_name(enum wl_loads_estimate e) {
   switch (e) {
-  case WL_LOADS_EST_LAST_CHANGE: return "last change";
-  case WL_LOADS_EST_RICHARDSON: return "Richardson";
+  case WL_LOADS_EST_TWO_LEVEL: return "two levels, order 2 assumed";
+  case WL_LOADS_EST_GCI: return "GCI";
+  case WL_LOADS_EST_GCI_LOW: return "GCI, low order";
+  case WL_LOADS_EST_GCI_HIGH: return "GCI, order capped at 2";
+  case WL_LOADS_EST_RANGE: return "3 x range";
   default: return "none";
   }
+}
+
+/* |f3 - f_ext(p)|: Richardson's estimate of the finest value's error. */
+static double richardson_delta(double f2, double f3, double r32, double p) {
+  return fabs(f3 - f2) / (pow(r32, p) - 1.0);
+}
+
+/* The observed order of three levels whose differences d12 = f1 - f2 and
+ * d23 = f2 - f3 have one sign, at ratios r21, r32; +-ORDER_BRACKET where the
+ * equation's root lies beyond the bracket. */
+static double observed_order(double d12, double d23, double r21, double r32) {
+  double lq = log(d12 / d23), a = log(r21), b = log(r32);
+  if (fabs(a - b) <= EQUAL_RATIO_TOL * b) return lq / b;
+  double lo = -ORDER_BRACKET, hi = ORDER_BRACKET;
+  if (lq <= log_ratio_model(a, b, lo)) return lo;
+  if (lq >= log_ratio_model(a, b, hi)) return hi;
+  while (hi - lo > ORDER_TOL) {
+    double mid = 0.5 * (lo + hi);
+    if (log_ratio_model(a, b, mid) < lq) lo = mid;
+    else hi = mid;
+  }
+  return 0.5 * (lo + hi);
 }
 
 void wl_loads_convergence(const double *h, const double *f, int n,
@@ -38,32 +62,39 @@ void wl_loads_convergence(const double *h, const double *f, int n,
   double h2 = h[n - 2], h3 = h[n - 1], f2 = f[n - 2], f3 = f[n - 1];
   if (!isfinite(f2) || !isfinite(f3) || !(h3 > 0) || !(h2 > h3)) return;
   out->r32 = h2 / h3;
-  /* the fallback: the last change, relative to the finest value */
-  out->error = fabs(f3 - f2) / fabs(f3);
-  out->basis = WL_LOADS_EST_LAST_CHANGE;
+  /* two levels: Roache's two-grid GCI with the order assumed */
+  out->error = WL_LOADS_SAFETY_ASSUMED * richardson_delta(f2, f3, out->r32, WL_LOADS_ORDER_ASSUMED) /
+               fabs(f3);
+  out->basis = WL_LOADS_EST_TWO_LEVEL;
   if (n < 3) return;
   double h1 = h[n - 3], f1 = f[n - 3];
   if (!isfinite(f1) || !(h1 > h2)) return;
   out->r21 = h1 / h2;
+  const double range = fmax(f1, fmax(f2, f3)) - fmin(f1, fmin(f2, f3));
   double d12 = f1 - f2, d23 = f2 - f3;
-  if (d12 == 0.0 || d23 == 0.0 || (d12 > 0) != (d23 > 0)) return; /* no order */
-  double q = d12 / d23; /* > 0 */
-  double a = log(out->r21), b = log(out->r32);
-  if (fabs(a - b) <= EQUAL_RATIO_TOL * b) {
-    out->order = log(q) / b;
-  } else {
-    double lq = log(q), lo = -ORDER_BRACKET, hi = ORDER_BRACKET;
-    if (lq < log_ratio_model(a, b, lo) || lq > log_ratio_model(a, b, hi)) return;
-    while (hi - lo > ORDER_TOL) {
-      double mid = 0.5 * (lo + hi);
-      if (log_ratio_model(a, b, mid) < lq) lo = mid;
-      else hi = mid;
-    }
-    out->order = 0.5 * (lo + hi);
+  /* oscillating or a zero difference: the data range alone */
+  out->error = 3.0 * range / fabs(f3);
+  out->basis = WL_LOADS_EST_RANGE;
+  if (d12 == 0.0 || d23 == 0.0 || (d12 > 0) != (d23 > 0)) return;
+  const double p = observed_order(d12, d23, out->r21, out->r32);
+  out->order = p;
+  if (p >= WL_LOADS_ORDER_MIN && p <= WL_LOADS_ORDER_MAX) {
+    out->order_ok = 1;
+    out->extrapolated = f3 + (f3 - f2) / (pow(out->r32, p) - 1.0);
   }
-  if (!(out->order >= WL_LOADS_ORDER_MIN && out->order <= WL_LOADS_ORDER_MAX)) return;
-  out->order_ok = 1;
-  out->extrapolated = f3 + (f3 - f2) / (pow(out->r32, out->order) - 1.0);
-  out->error = fabs(f3 - out->extrapolated) / fabs(out->extrapolated);
-  out->basis = WL_LOADS_EST_RICHARDSON;
+  if (!(p > 0)) return; /* diverging: the range */
+  double u;
+  if (p < WL_LOADS_ORDER_LOW) {
+    u = fmin(WL_LOADS_SAFETY_OBSERVED * richardson_delta(f2, f3, out->r32, p),
+             WL_LOADS_SAFETY_ASSUMED * range);
+    out->basis = WL_LOADS_EST_GCI_LOW;
+  } else if (p < WL_LOADS_ORDER_HIGH) {
+    u = WL_LOADS_SAFETY_OBSERVED * richardson_delta(f2, f3, out->r32, p);
+    out->basis = WL_LOADS_EST_GCI;
+  } else {
+    u = fmax(WL_LOADS_SAFETY_OBSERVED * richardson_delta(f2, f3, out->r32, WL_LOADS_ORDER_ASSUMED),
+             WL_LOADS_SAFETY_OBSERVED * range);
+    out->basis = WL_LOADS_EST_GCI_HIGH;
+  }
+  out->error = u / fabs(f3);
 }

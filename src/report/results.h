@@ -102,7 +102,7 @@ struct wl_report_convergence {
   double force_order, force_order_ok, force_extrapolated, force_error;
   double phase_order, phase_order_ok, phase_extrapolated, phase_error; /* positive-phase impulse */
   double error_estimate, target, target_given, target_met, stopped_early;
-  char force_basis[32], phase_basis[32]; /* "Richardson", "last change", "none" */
+  char force_basis[32], phase_basis[32]; /* wl_loads_estimate_name: "GCI", "3 x range", ... */
   char note[WL_REPORT_ATTR_MAX];           /* how the ladder ended */
 };
 

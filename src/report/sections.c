@@ -624,7 +624,7 @@ static enum wl_status convergence_summary_table(struct wl_report_ctx *c, int dg,
                                    0};
     rows += ROWS;
   }
-  struct wl_report_table t = {"Observed order, Richardson value and relative error estimate of "
+  struct wl_report_table t = {"Observed order, Richardson value and relative uncertainty of "
                               "the finest level run (order and extrapolation n/a where not "
                               "defined or not meaningful)",
                               cols, NC, cells, rows};
@@ -688,10 +688,10 @@ static enum wl_status convergence_plot(struct wl_report_ctx *c, struct wl_error 
   if (!st)
     st = wl_report_end_figure(
         c->doc,
-        "Speed against error: the estimated relative error of each level (the larger of peak "
-        "force and positive-phase impulse, against the Richardson value where the order is meaningful, else "
-        "against the finest level; the finest level's is the case's estimate) against the "
-        "wall-clock runtime of that level, log-log.",
+        "Speed against error: the relative error of each coarser level (the larger of peak "
+        "force and positive-phase impulse, against the Richardson value where the order is "
+        "meaningful, else against the finest level) and the finest level's uncertainty, against "
+        "the wall-clock runtime of that level, log-log.",
         err);
   return st;
 }
@@ -720,13 +720,16 @@ enum wl_status wl_report_render_convergence(struct wl_report_ctx *c,
           "Each load case was run on a ladder of particle spacings%s%s (dp times each factor, "
           "coarse to fine); the finest level run is the case's result on the other pages. From "
           "the last three levels (spacings h1 > h2 > h3, refinement ratio r) the observed order "
-          "is p = ln((f1 - f2)/(f2 - f3)) / ln r, the Richardson value f_ext = f3 + (f3 - f2)/"
-          "(r^p - 1) and the error estimate of the finest level |f3 - f_ext| / |f_ext|. Where "
-          "the two differences change sign or vanish, or p lies outside [0.5, 4], the levels "
-          "are not in the asymptotic range: no extrapolation is made and the error estimate is "
-          "the last change |f3 - f2| / |f3| (also with two levels). A case's estimate is the "
-          "larger of those of the peak force and the impulse of the peak's positive phase (an "
-          "oscillating wave train's net impulse is too small a difference to converge).",
+          "is p = ln((f1 - f2)/(f2 - f3)) / ln r and the Richardson value f_ext = f3 + (f3 - f2)/"
+          "(r^p - 1). The uncertainty of the finest level is a band meant to hold the converged "
+          "value (Roache's grid convergence index, with the order bands of Eca & Hoekstra 2014): "
+          "1.25 |f3 - f_ext| where 0.95 <= p < 2.05; for a larger p the same with p = 2 but at "
+          "least 1.25 times the range of the three values; for a smaller p the smaller of "
+          "1.25 |f3 - f_ext| and 3 times the range; where the values oscillate, 3 times their "
+          "range; with two levels 3 |f3 - f2| / (r^2 - 1). It is given relative to f3. A case's "
+          "uncertainty is the larger of those of the peak force and the impulse of the peak's "
+          "positive phase (an oscillating wave train's net impulse is too small a difference "
+          "to converge).",
           asked[0] ? " " : "", asked);
     for (int i = 0; !st && i < WL_REPORT_N_CASES; i++)
       if (r->conv[i].present)
