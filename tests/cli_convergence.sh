@@ -69,6 +69,7 @@ rows = [r for r in csv.DictReader(open(sys.argv[2])) if r['case'] == 'solitary']
 keys = [('dp', 'dp_m'), ('particles', 'particles'), ('steps', 'steps'), ('runtime', 'runtime_s'),
         ('peak_force', 'peak_force_N_per_m'), ('impulse', 'impulse_Ns_per_m'),
         ('impulse_positive_phase', 'impulse_positive_phase_Ns_per_m'),
+        ('impulse_positive', 'impulse_positive_Ns_per_m'),
         ('peak_moment', 'peak_moment_Nm_per_m'), ('max_runup', 'max_runup_m'),
         ('estimated_error', 'estimated_error')]
 report(len(rows) == 3 and all(same(l[j], float(r[c])) for l, r in zip(lv, rows) for j, c in keys),
@@ -112,7 +113,7 @@ def celik(h, f):
 
 h = [l['dp'] for l in lv]
 errs = []
-for q, key in (('peak_force', 'peak_force'), ('impulse_positive_phase', 'impulse_positive_phase')):
+for q, key in (('peak_force', 'peak_force'), ('impulse_positive', 'impulse_positive')):
     f = [l[key] for l in lv]
     p, ext, err, basis = celik(h, f)
     st = cv[q]

@@ -67,10 +67,10 @@ fails = 0
 for name, c in cases.items():
     f = c['peak_force']['value'] / 1000.0
     t = c['peak_force_time']['value']
-    i = c['impulse']['value'] / 1000.0
+    i = c['impulse_positive']['value'] / 1000.0
     row = "%s %s %s %s" % (name, fmt(f), fmt(t), fmt(i))
     if row in text:
-        print("PASS peaks row '%s' = summary.json's peak force %.6g N/m at %.4g s, impulse %.6g N s/m"
+        print("PASS peaks row '%s' = summary.json's peak force %.6g N/m at %.4g s, positive impulse %.6g N s/m"
               % (row, f * 1000, t, i * 1000))
     else:
         print("FAIL peaks row '%s' (summary.json peak force %.6g N/m) not in the PDF text" % (row, f * 1000))

@@ -256,18 +256,19 @@ static void test_storage(void) {
               rc->particles[l] == lv->n_particles && rc->steps[l] == (double)lv->steps &&
               rc->runtime[l] == lv->runtime_s && rc->peak_force[l] == lv->peak_force &&
               rc->peak_force_b[l] == lv->peak_force_bound && rc->impulse[l] == lv->impulse &&
-              rc->impulse_phase[l] == lv->impulse_phase &&
+              rc->impulse_phase[l] == lv->impulse_phase && rc->impulse_pos[l] == lv->impulse_positive &&
               rc->peak_moment[l] == lv->peak_moment && rc->runup[l] == lv->runup &&
               close_rel(rc->error[l], lv->error, 0) && rc->status[l] == (int)lv->status;
     }
     check(same, "every level's dp, particles, steps, runtime, peaks, impulse, run-up, error "
                 "read back bit for bit");
     snprintf(msg, sizeof msg,
-             "attributes read back: force order %g, positive-phase impulse order %g, error estimate %g, target "
-             "%g, target met %g",
-             rc->force_order, rc->phase_order, rc->error_estimate, rc->target, rc->target_met);
+             "attributes read back: force order %g, positive impulse order %g, uncertainty %g, "
+             "target %g, target met %g",
+             rc->force_order, rc->pos_order, rc->error_estimate, rc->target, rc->target_met);
     check(close_rel(rc->force_order, cv->force.order, 0) &&
-              close_rel(rc->phase_order, cv->impulse_phase.order, 0) &&
+              close_rel(rc->pos_order, cv->impulse_pos.order, 0) &&
+              close_rel(rc->pos_error, cv->impulse_pos.error, 0) && !strcmp(rc->pos_basis, wl_loads_estimate_name(cv->impulse_pos.basis)) &&
               close_rel(rc->force_extrapolated, cv->force.extrapolated, 0) &&
               close_rel(rc->error_estimate, cv->error_estimate, 0) && rc->target == cv->target &&
               rc->target_met == cv->target_met && !strcmp(rc->note, cv->note),
@@ -310,6 +311,7 @@ static void test_storage(void) {
               close_rel(json_number(p, "peak_force"), cv->lv[l].peak_force, 1e-9) &&
               close_rel(json_number(p, "impulse"), cv->lv[l].impulse, 1e-9) &&
               close_rel(json_number(p, "impulse_positive_phase"), cv->lv[l].impulse_phase, 1e-9) &&
+              close_rel(json_number(p, "impulse_positive"), cv->lv[l].impulse_positive, 1e-9) &&
               close_rel(json_number(p, "estimated_error"), cv->lv[l].error, 1e-9);
       p++;
     }

@@ -1,7 +1,8 @@
 /* test_loads.c: the load post-processing against closed forms: hydrostatic
  * force and moment (REFERENCES 1.1: rho g h^2/2, rho g h^3/6), integrals of
  * known functions, the digital Butterworth magnitude response per pass
- * (bilinear transform), and rise time / duration of a triangle pulse. */
+ * (bilinear transform), rise time / duration of a triangle pulse, and the
+ * positive-phase and positive impulses of a decaying oscillating train. */
 #include <math.h>
 #include <stdlib.h>
 
@@ -146,6 +147,25 @@ int main(void) {
     double net_exact = A * w / (w * w + 1.0 / (tau * tau)) * (1.0 - exp(-T4 / tau));
     CHECK_REL(cum[m - 1], net_exact, 1e-4, "net impulse of the train (closed form)");
     CHECK_TRUE(cum[m - 1] < 0.15 * (cum[i1] - cum[i0]), "the net impulse is far below the phase's");
+    /* the positive impulse of the whole train: the four positive half
+     * periods, each the first one's times e^(-k T/tau) (T = 1 s), by hand.
+     * The trapezoid rule's relative error on a half sine of N = 250
+     * intervals is (pi/N)^2/12 = 1.3e-5: the tolerance is 3e-5. */
+    double pos_exact = 0;
+    for (int k = 0; k < 4; k++) pos_exact += exact * exp(-k / tau);
+    CHECK_REL(wl_loads_positive_impulse(ts, xs, (size_t)m, base), pos_exact, 3e-5,
+              "positive impulse of the train: sum of its positive half periods (closed form)");
+    {
+      /* exact for a piecewise-linear record: base + 1 falling to base - 1
+       * over 1 s pushes 1/2 x 1 x 1/2 = 0.25; the mirror image likewise;
+       * a record wholly below base, nothing */
+      const double t2[3] = {0, 1, 3}, down[3] = {base + 1, base - 1, base - 1},
+                   up[3] = {base - 1, base - 1, base + 3}, below[3] = {base - 2, base - 1, base - 3};
+      CHECK_ABS(wl_loads_positive_impulse(t2, down, 3, base), 0.25, 1e-15, "crossing down: 0.25");
+      CHECK_ABS(wl_loads_positive_impulse(t2, up, 3, base), 0.5 * 3 * 1.5, 1e-15,
+                "crossing up over 2 s to +3: 1/2 x 3 x 1.5");
+      CHECK_ABS(wl_loads_positive_impulse(t2, below, 3, base), 0.0, 0.0, "below the base: 0");
+    }
     /* a phase that is still positive at the record's end ends there */
     wl_loads_positive_phase(xs, 200, base, pp.index, &i0, &i1); /* 0 .. 0.398 s */
     CHECK_TRUE(i0 == 0 && i1 == 199, "phase cut by the record's end");

@@ -30,8 +30,8 @@
  * keeps dp, particles, steps, runtime, particle-steps/s and the scalar loads
  * (peak force from the filtered probe and boundary-particle series, impulse,
  * peak moment, maximum run-up), and after each level estimates the
- * uncertainty of the peak force (probes) and of the positive-phase impulse
- * with wl_loads_convergence (loads.h) from the last three levels run:
+ * uncertainty of the peak force (probes) and of the positive impulse with
+ * wl_loads_convergence (loads.h) from the last three levels run:
  *
  *   observed order p = ln((f1 - f2)/(f2 - f3)) / ln r (r = h1/h2 = h2/h3;
  *     with unequal ratios the general equation of loads.h),
@@ -96,6 +96,9 @@ struct wl_case_loads {
   double rest_moment;                          /* probes [N m/m] */
   double impulse_total;     /* [N s/m] at the end of the record */
   double impulse_peak;      /* of the peak force's positive phase (loads.h), probes [N s/m] */
+  double impulse_positive;  /* int max(0, F_filtered - F_rest) dt from peak_from on, probes
+                               (loads.h wl_loads_positive_impulse) [N s/m] */
+  double impulse_positive_bound; /* the same from the boundary particles [N s/m] */
   double impulse_peak_from, impulse_peak_to; /* that phase [s] */
   double runup;             /* max eta at the wall face [m] */
   double runup_time;        /* [s] */
@@ -154,10 +157,11 @@ struct wl_assess_level {
   double peak_force_bound;  /* filtered, boundary particles [N/m] */
   double impulse;           /* int (F - F_static) dt, probes, whole record [N s/m] */
   double impulse_phase;     /* the same over the peak's positive phase (loads.h) [N s/m] */
+  double impulse_positive;  /* int max(0, F_filtered - F_rest) dt, probes (loads.h) [N s/m] */
   double peak_moment;       /* filtered, about the toe [N m/m] */
   double runup;             /* max water level at the wall above still water [m] */
   double error;             /* estimated relative error of this level: the larger of peak
-                               force and positive-phase impulse, |f_k - f_ref|/|f_ref| with f_ref the
+                               force and positive impulse, |f_k - f_ref|/|f_ref| with f_ref the
                                Richardson value when the order is meaningful, else the
                                finest level run; the finest level gets the case's uncertainty */
 };
@@ -167,11 +171,12 @@ struct wl_assess_convergence {
   int n_planned;            /* levels in the scenario (0: no ladder) */
   int n_levels;             /* levels run */
   struct wl_assess_level lv[WL_ASSESS_MAX_LEVELS];
-  /* of the peak force (probes) and of the positive-phase impulse: the net
-   * impulse of an oscillating wave train is too small a difference to
-   * converge (loads.h), the positive phase's is the load acting with the peak */
-  struct wl_loads_convergence force, impulse_phase;
-  double error_estimate;    /* max(force.error, impulse_phase.error) [-]; NaN: none */
+  /* of the peak force (probes) and of the positive impulse: the net impulse
+   * of an oscillating wave train is too small a difference to converge, and
+   * the peak's positive phase changes crest between resolutions (loads.h
+   * wl_loads_positive_impulse) */
+  struct wl_loads_convergence force, impulse_pos;
+  double error_estimate;    /* max(force.error, impulse_pos.error) [-]; NaN: none */
   double target;            /* resolution.target_error [-] (its default when not given) */
   int target_given;         /* 1: written in the scenario: the ladder may stop early */
   int target_met;           /* error_estimate <= target */

@@ -109,6 +109,18 @@ void wl_loads_positive_phase(const double *x, size_t n, double base, size_t ip, 
 double wl_loads_positive_phase_impulse(const double *t, const double *xf, const double *I,
                                        size_t n, double base, size_t ip, double *t0, double *t1);
 
+/* The positive impulse of the filtered force xf over the base (the force at
+ * rest): the integral of max(0, xf - base) dt over the whole series, each
+ * interval integrated exactly for the linear interpolant (an interval that
+ * crosses the base contributes its positive triangle). It is the push of
+ * every wave of a train together, and the load's impulse that converges
+ * with resolution where the peak's positive phase does not: an explosion's
+ * train brings several crests of nearly equal force, and which of them
+ * carries the peak (and so whose phase is integrated) changes between
+ * resolutions (docs/outputs.md). The filtered force, because the positive
+ * part of the raw force would rectify the acoustic ringing into a bias. */
+double wl_loads_positive_impulse(const double *t, const double *xf, size_t n, double base);
+
 /* ---- convergence over a resolution ladder --------------------------------- */
 
 /* Meaningful observed orders: outside [MIN, MAX] the three levels are not in

@@ -35,20 +35,20 @@ void ladder_estimate(struct wl_assess_convergence *cv) {
     if (cv->lv[k].status != WL_OK) continue;
     h[m] = cv->lv[k].dp;
     fo[m] = cv->lv[k].peak_force;
-    im[m] = cv->lv[k].impulse_phase;
+    im[m] = cv->lv[k].impulse_positive;
     idx[m++] = k;
   }
   wl_loads_convergence(h, fo, m, &cv->force);
-  wl_loads_convergence(h, im, m, &cv->impulse_phase);
-  cv->error_estimate = (isnan(cv->force.error) || isnan(cv->impulse_phase.error))
+  wl_loads_convergence(h, im, m, &cv->impulse_pos);
+  cv->error_estimate = (isnan(cv->force.error) || isnan(cv->impulse_pos.error))
                            ? NAN
-                           : fmax(cv->force.error, cv->impulse_phase.error);
+                           : fmax(cv->force.error, cv->impulse_pos.error);
   cv->target_met = isfinite(cv->error_estimate) && cv->error_estimate <= cv->target;
   if (m < 2) return;
   /* each coarser level against the best value known: Richardson's when the
    * order is meaningful, else the finest complete level */
   double ref_f = cv->force.order_ok ? cv->force.extrapolated : fo[m - 1];
-  double ref_i = cv->impulse_phase.order_ok ? cv->impulse_phase.extrapolated : im[m - 1];
+  double ref_i = cv->impulse_pos.order_ok ? cv->impulse_pos.extrapolated : im[m - 1];
   for (int j = 0; j + 1 < m; j++)
     cv->lv[idx[j]].error = fmax(rel_change(fo[j], ref_f), rel_change(im[j], ref_i));
   cv->lv[idx[m - 1]].error = cv->error_estimate;
@@ -67,6 +67,7 @@ static void level_from_case(struct wl_assess_level *lv, const struct wl_case_res
   lv->peak_force_bound = have ? l->force_bound_peak.value : NAN;
   lv->impulse = have ? l->impulse_total : NAN;
   lv->impulse_phase = have ? l->impulse_peak : NAN;
+  lv->impulse_positive = have ? l->impulse_positive : NAN;
   lv->peak_moment = have ? l->moment_peak.value : NAN;
   lv->runup = have ? l->runup : NAN;
   lv->error = NAN;
@@ -86,7 +87,7 @@ static void ladder_note(struct wl_assess_convergence *cv, const char *stop_word)
   pct(cv->target, t, sizeof t);
   /* the basis of the larger of the two quantities' bands */
   const struct wl_loads_convergence *gov =
-      !(cv->impulse_phase.error > cv->force.error) ? &cv->force : &cv->impulse_phase;
+      !(cv->impulse_pos.error > cv->force.error) ? &cv->force : &cv->impulse_pos;
   const char *basis = wl_loads_estimate_name(gov->basis);
   const struct wl_assess_level *last = &cv->lv[cv->n_levels - 1];
   if (stop_word)

@@ -118,11 +118,14 @@ static const struct level_field LEVEL_FIELDS[] = {
     {"impulse_positive_phase", "N s/m",
      "integral of (probe force - static force) dt over the peak's positive phase",
      LF(impulse_phase), 0},
+    {"impulse_positive", "N s/m",
+     "integral of max(0, filtered probe force - force at rest) dt: every wave's push",
+     LF(impulse_positive), 0},
     {"peak_moment", "N m/m", "peak of the filtered overturning moment about the toe",
      LF(peak_moment), 0},
     {"max_runup", "m", "highest water level at the wall face above still water", LF(runup), 0},
     {"estimated_error", "1",
-     "relative error of the level: larger of peak force and positive-phase impulse, against "
+     "relative error of the level: larger of peak force and positive impulse, against "
      "the Richardson value (or the finest level); the finest level's is the case's "
      "uncertainty (loads.h)",
      LF(error), 0},
@@ -188,11 +191,11 @@ static void json_convergence(struct text *t, const struct wl_assess_convergence 
   jnum(t, cv->force.r32);
   put(t, ",\n        \"order\": { \"peak_force\": ");
   jnum(t, cv->force.order);
-  put(t, ", \"impulse_positive_phase\": ");
-  jnum(t, cv->impulse_phase.order);
+  put(t, ", \"impulse_positive\": ");
+  jnum(t, cv->impulse_pos.order);
   put(t, " },\n");
   json_estimate(t, "peak_force", &cv->force, 0);
-  json_estimate(t, "impulse_positive_phase", &cv->impulse_phase, 0);
+  json_estimate(t, "impulse_positive", &cv->impulse_pos, 0);
   put(t, "        \"error_estimate\": ");
   jnum(t, cv->error_estimate);
   put(t, ",\n        \"target\": ");
@@ -239,10 +242,10 @@ static enum wl_status write_convergence_h5(struct wl_store *h5, const struct wl_
       {"peak_force_order_meaningful", cv->force.order_ok, "1"},
       {"peak_force_extrapolated", cv->force.extrapolated, "N/m"},
       {"peak_force_error_estimate", cv->force.error, "1"},
-      {"impulse_positive_phase_order", cv->impulse_phase.order, "1"},
-      {"impulse_positive_phase_order_meaningful", cv->impulse_phase.order_ok, "1"},
-      {"impulse_positive_phase_extrapolated", cv->impulse_phase.extrapolated, "N s/m"},
-      {"impulse_positive_phase_error_estimate", cv->impulse_phase.error, "1"},
+      {"impulse_positive_order", cv->impulse_pos.order, "1"},
+      {"impulse_positive_order_meaningful", cv->impulse_pos.order_ok, "1"},
+      {"impulse_positive_extrapolated", cv->impulse_pos.extrapolated, "N s/m"},
+      {"impulse_positive_error_estimate", cv->impulse_pos.error, "1"},
       {"error_estimate", cv->error_estimate, "1"},
       {"target", cv->target, "1"},
       {"target_given", cv->target_given, "1"},
@@ -254,8 +257,8 @@ static enum wl_status write_convergence_h5(struct wl_store *h5, const struct wl_
   if (!st)
     st = wl_store_attr_text(h5, g, "peak_force_basis", wl_loads_estimate_name(cv->force.basis), err);
   if (!st)
-    st = wl_store_attr_text(h5, g, "impulse_positive_phase_basis",
-                            wl_loads_estimate_name(cv->impulse_phase.basis), err);
+    st = wl_store_attr_text(h5, g, "impulse_positive_basis",
+                            wl_loads_estimate_name(cv->impulse_pos.basis), err);
   if (!st) st = wl_store_attr_text(h5, g, "note", cv->note, err);
   return st;
 }
@@ -371,6 +374,11 @@ static enum wl_status write_summary(const struct wl_scenario *s, const struct wl
                l->impulse_peak_from, l->impulse_peak_to);
       jval(&t, "impulse_positive_phase", l->impulse_peak, "N s/m", ph, 0);
     }
+    jval(&t, "impulse_positive", l->impulse_positive, "N s/m",
+         "integral of max(0, filtered force - rest_force) from peaks_from on: the push of "
+         "every wave, pressure probes", 0);
+    jval(&t, "impulse_positive_boundary", l->impulse_positive_bound, "N s/m",
+         "the same from the boundary particles", 0);
     jval(&t, "peak_moment", l->moment_peak.value, "N m/m", filt, 0);
     jval(&t, "max_runup", l->runup, "m", "water level at the wall face above still water", 0);
     struct wl_load_units u;
@@ -380,6 +388,7 @@ static enum wl_status write_summary(const struct wl_scenario *s, const struct wl
       jval(&t, "peak_force_boundary", l->force_bound_peak.value * u.force_f, u.force, NULL, 0);
       jval(&t, "impulse", l->impulse_total * u.impulse_f, u.impulse, NULL, 0);
       jval(&t, "impulse_positive_phase", l->impulse_peak * u.impulse_f, u.impulse, NULL, 0);
+      jval(&t, "impulse_positive", l->impulse_positive * u.impulse_f, u.impulse, NULL, 0);
       jval(&t, "peak_moment", l->moment_peak.value * u.moment_f, u.moment, NULL, 0);
       jval(&t, "max_runup", l->runup * u.length_f, u.length, NULL, 1);
       put(&t, "      },\n");
@@ -428,6 +437,7 @@ static enum wl_status write_summary(const struct wl_scenario *s, const struct wl
     int f = a->force_peak.value >= b->force_peak.value ? 0 : 1;
     int im = a->impulse_total >= b->impulse_total ? 0 : 1;
     int ip = a->impulse_peak >= b->impulse_peak ? 0 : 1;
+    int ipos = a->impulse_positive >= b->impulse_positive ? 0 : 1;
     put(&t, ",\n  \"comparison\": {\n    \"larger_peak_force\": ");
     jstr(&t, res->cases[f].name);
     put(&t, ",\n    \"peak_force_ratio\": ");
@@ -440,6 +450,10 @@ static enum wl_status write_summary(const struct wl_scenario *s, const struct wl
     jstr(&t, res->cases[ip].name);
     put(&t, ",\n    \"impulse_positive_phase_ratio\": ");
     jnum(&t, res->cases[ip].loads.impulse_peak / res->cases[1 - ip].loads.impulse_peak);
+    put(&t, ",\n    \"larger_impulse_positive\": ");
+    jstr(&t, res->cases[ipos].name);
+    put(&t, ",\n    \"impulse_positive_ratio\": ");
+    jnum(&t, res->cases[ipos].loads.impulse_positive / res->cases[1 - ipos].loads.impulse_positive);
     put(&t, "\n  }");
   }
   (void)plan;

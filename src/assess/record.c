@@ -118,6 +118,11 @@ enum wl_status case_loads_compute(struct wl_case_result *c, struct wl_error *err
   l->impulse_peak = wl_loads_positive_phase_impulse(r->t, l->force_filtered, l->impulse, n,
                                                     l->rest_force, l->force_peak.index,
                                                     &l->impulse_peak_from, &l->impulse_peak_to);
+  /* the positive impulse of the whole event, from where peaks are searched */
+  l->impulse_positive = wl_loads_positive_impulse(r->t + k0, l->force_filtered + k0, n - k0,
+                                                  l->rest_force);
+  l->impulse_positive_bound = wl_loads_positive_impulse(r->t + k0, l->force_bound_filtered + k0,
+                                                        n - k0, l->rest_force_bound);
   /* run-up: the last gauge is the one at the wall face */
   int gw = r->n_gauges - 1;
   l->runup = -INFINITY;

@@ -257,6 +257,8 @@ static void print_case(const struct wl_case_result *c, const struct wl_scenario 
          l->impulse_total / 1e3);
   printf("  %-34s %12.5g kN s/m (%.3f to %.3f s)\n", "impulse of the peak's positive phase",
          l->impulse_peak / 1e3, l->impulse_peak_from, l->impulse_peak_to);
+  printf("  %-34s %12.5g kN s/m (boundary particles: %.5g; every wave's push)\n",
+         "positive impulse", l->impulse_positive / 1e3, l->impulse_positive_bound / 1e3);
   printf("  %-34s %12.5g kN m/m\n", "peak overturning moment", l->moment_peak.value / 1e3);
   printf("  %-34s %12.5g m\n", "max run-up at the wall", l->runup);
   printf("  %-34s %12.5g s\n", "rise time", l->force_peak.rise_time);
@@ -266,10 +268,11 @@ static void print_case(const struct wl_case_result *c, const struct wl_scenario 
            "kept in bounds", c->n_limited, c->n_excluded);
   struct wl_load_units u;
   if (wl_scenario_load_units(s, &u))
-    printf("  %-34s %.5g %s, impulse %.5g %s (positive phase %.5g), moment %.5g %s, run-up "
-           "%.4g %s\n",
+    printf("  %-34s %.5g %s, positive impulse %.5g %s (net %.5g, positive phase %.5g), moment "
+           "%.5g %s, run-up %.4g %s\n",
            "in the scenario's units", l->force_peak.value * u.force_f, u.force,
-           l->impulse_total * u.impulse_f, u.impulse, l->impulse_peak * u.impulse_f,
+           l->impulse_positive * u.impulse_f, u.impulse, l->impulse_total * u.impulse_f,
+           l->impulse_peak * u.impulse_f,
            l->moment_peak.value * u.moment_f, u.moment, l->runup * u.length_f, u.length);
   if (c->caution[0]) printf("  caution: %s\n", c->caution);
 }
@@ -278,18 +281,21 @@ static void print_convergence(const struct wl_case_result *c,
                               const struct wl_assess_convergence *cv) {
   if (!cv->n_levels) return;
   printf("  convergence ladder (%d of %d levels):\n", cv->n_levels, cv->n_planned);
-  printf("    %5s %10s %10s %9s %14s %16s %16s %10s\n", "level", "dp [m]", "particles", "runtime",
-         "peak F [kN/m]", "impulse [kN s/m]", "pos. phase", "est. error");
+  printf("    %5s %10s %10s %9s %14s %18s %16s %10s\n", "level", "dp [m]", "particles", "runtime",
+         "peak F [kN/m]", "I+ [kN s/m]", "pos. phase", "error");
   for (int k = 0; k < cv->n_levels; k++) {
     const struct wl_assess_level *lv = &cv->lv[k];
-    printf("    %5d %10.4g %10d %8.1fs %14.5g %16.5g %16.5g %9.3g%%%s\n", k + 1, lv->dp,
-           lv->n_particles, lv->runtime_s, lv->peak_force / 1e3, lv->impulse / 1e3,
+    printf("    %5d %10.4g %10d %8.1fs %14.5g %18.5g %16.5g %9.3g%%%s\n", k + 1, lv->dp,
+           lv->n_particles, lv->runtime_s, lv->peak_force / 1e3, lv->impulse_positive / 1e3,
            lv->impulse_phase / 1e3, 100 * lv->error,
            lv->status == WL_OK ? "" : "  (stopped)");
   }
-  printf("    observed order: peak force %.3g%s, positive-phase impulse %.3g%s\n",
-         cv->force.order, cv->force.order_ok ? "" : " (not meaningful)", cv->impulse_phase.order,
-         cv->impulse_phase.order_ok ? "" : " (not meaningful)");
+  printf("    observed order: peak force %.3g%s, positive impulse %.3g%s; uncertainty: peak "
+         "force %.3g %% (%s), positive impulse %.3g %% (%s)\n",
+         cv->force.order, cv->force.order_ok ? "" : " (not meaningful)", cv->impulse_pos.order,
+         cv->impulse_pos.order_ok ? "" : " (not meaningful)", 100 * cv->force.error,
+         wl_loads_estimate_name(cv->force.basis), 100 * cv->impulse_pos.error,
+         wl_loads_estimate_name(cv->impulse_pos.basis));
   printf("    %s: %s\n", c->name, cv->note);
 }
 

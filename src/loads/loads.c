@@ -162,3 +162,17 @@ void wl_loads_peak(const double *t, const double *x, size_t n, double base, stru
     pk->duration = t_end - tc;
   }
 }
+
+double wl_loads_positive_impulse(const double *t, const double *xf, size_t n, double base) {
+  double sum = 0;
+  for (size_t k = 0; k + 1 < n; k++) {
+    const double a = xf[k] - base, b = xf[k + 1] - base, dt = t[k + 1] - t[k];
+    if (a >= 0 && b >= 0)
+      sum += 0.5 * (a + b) * dt;
+    else if (a > 0) /* crosses down at dt a/(a - b) */
+      sum += 0.5 * a * dt * a / (a - b);
+    else if (b > 0) /* crosses up */
+      sum += 0.5 * b * dt * b / (b - a);
+  }
+  return sum;
+}

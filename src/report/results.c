@@ -294,6 +294,7 @@ static void case_derive(struct wl_report_case *c) {
   c->force_peak = c->force_b_peak = c->moment_peak = none;
   c->impulse_total = c->impulse_b_total = c->runup = c->runup_time = NAN;
   c->impulse_peak = c->impulse_peak_from = c->impulse_peak_to = NAN;
+  c->impulse_positive = c->impulse_positive_b = NAN;
   c->wall_gauge = -1;
   for (int g = 0; g < c->n_gauges; g++)
     if (!strcmp(c->gauges[g].name, "wall"))
@@ -330,6 +331,10 @@ static void case_derive(struct wl_report_case *c) {
     c->impulse_peak = wl_loads_positive_phase_impulse(c->t, f, c->impulse, n, fs,
                                                       c->force_peak.index, &c->impulse_peak_from,
                                                       &c->impulse_peak_to);
+  if (f)
+    c->impulse_positive = wl_loads_positive_impulse(c->t + k0, f + k0, n - k0, fs);
+  if (fb)
+    c->impulse_positive_b = wl_loads_positive_impulse(c->t + k0, fb + k0, n - k0, fbs);
   if (c->impulse_b)
     c->impulse_b_total = c->impulse_b[n - 1];
   if (c->wall_gauge >= 0 && c->gauges[c->wall_gauge].eta) {
@@ -482,10 +487,10 @@ static enum wl_status read_convergence(hid_t file, const char *file_name, int i,
       {"peak_force_order_meaningful", &cv->force_order_ok},
       {"peak_force_extrapolated", &cv->force_extrapolated},
       {"peak_force_error_estimate", &cv->force_error},
-      {"impulse_positive_phase_order", &cv->phase_order},
-      {"impulse_positive_phase_order_meaningful", &cv->phase_order_ok},
-      {"impulse_positive_phase_extrapolated", &cv->phase_extrapolated},
-      {"impulse_positive_phase_error_estimate", &cv->phase_error},
+      {"impulse_positive_order", &cv->pos_order},
+      {"impulse_positive_order_meaningful", &cv->pos_order_ok},
+      {"impulse_positive_extrapolated", &cv->pos_extrapolated},
+      {"impulse_positive_error_estimate", &cv->pos_error},
       {"error_estimate", &cv->error_estimate},
       {"target", &cv->target},
       {"target_given", &cv->target_given},
@@ -495,7 +500,7 @@ static enum wl_status read_convergence(hid_t file, const char *file_name, int i,
   for (size_t k = 0; k < sizeof attrs / sizeof attrs[0]; k++)
     *attrs[k].v = attr_double(grp, attrs[k].name);
   attr_text(grp, "peak_force_basis", cv->force_basis, sizeof cv->force_basis);
-  attr_text(grp, "impulse_positive_phase_basis", cv->phase_basis, sizeof cv->phase_basis);
+  attr_text(grp, "impulse_positive_basis", cv->pos_basis, sizeof cv->pos_basis);
   attr_text(grp, "note", cv->note, sizeof cv->note);
   H5Gclose(grp);
   struct {
@@ -512,6 +517,7 @@ static enum wl_status read_convergence(hid_t file, const char *file_name, int i,
       {"peak_force_boundary", cv->peak_force_b},
       {"impulse", cv->impulse},
       {"impulse_positive_phase", cv->impulse_phase},
+      {"impulse_positive", cv->impulse_pos},
       {"peak_moment", cv->peak_moment},
       {"max_runup", cv->runup},
       {"estimated_error", cv->error},

@@ -76,6 +76,7 @@ struct wl_report_case {
   struct wl_peak moment_peak;            /* of moment_f (base: the moment at rest) */
   double impulse_total, impulse_b_total; /* last samples [N s/m] */
   double impulse_peak;                   /* of the force peak's positive phase [N s/m] */
+  double impulse_positive, impulse_positive_b; /* probes, boundary particles (loads.h) [N s/m] */
   double impulse_peak_from, impulse_peak_to; /* that phase [s] */
   double runup, runup_time;              /* max eta of the wall gauge [m], when [s] */
 };
@@ -93,6 +94,7 @@ struct wl_report_convergence {
   double peak_force[WL_REPORT_MAX_LEVELS], peak_force_b[WL_REPORT_MAX_LEVELS]; /* [N/m] */
   double impulse[WL_REPORT_MAX_LEVELS];       /* whole record [N s/m] */
   double impulse_phase[WL_REPORT_MAX_LEVELS]; /* the peak's positive phase [N s/m] */
+  double impulse_pos[WL_REPORT_MAX_LEVELS];   /* the positive impulse [N s/m] */
   double peak_moment[WL_REPORT_MAX_LEVELS];                              /* [N m/m] */
   double runup[WL_REPORT_MAX_LEVELS];                                    /* [m] */
   double error[WL_REPORT_MAX_LEVELS];   /* estimated relative error of each level [-] */
@@ -100,9 +102,9 @@ struct wl_report_convergence {
   /* attributes */
   double levels_planned, ratio;
   double force_order, force_order_ok, force_extrapolated, force_error;
-  double phase_order, phase_order_ok, phase_extrapolated, phase_error; /* positive-phase impulse */
+  double pos_order, pos_order_ok, pos_extrapolated, pos_error; /* positive impulse */
   double error_estimate, target, target_given, target_met, stopped_early;
-  char force_basis[32], phase_basis[32]; /* wl_loads_estimate_name: "GCI", "3 x range", ... */
+  char force_basis[32], pos_basis[32]; /* wl_loads_estimate_name: "GCI", "3 x range", ... */
   char note[WL_REPORT_ATTR_MAX];           /* how the ladder ended */
 };
 

@@ -147,7 +147,7 @@ static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
   char f[2][64], im[2][64], tf[2][64];
   for (int i = 0; i < WL_REPORT_N_CASES; i++) {
     wl_report_fmt(cs[i].force_peak.value / KILO, dg, f[i], sizeof f[i]);
-    wl_report_fmt(cs[i].impulse_peak / KILO, dg, im[i], sizeof im[i]);
+    wl_report_fmt(cs[i].impulse_positive / KILO, dg, im[i], sizeof im[i]);
     wl_report_fmt(cs[i].force_peak.time, TIME_DIGITS, tf[i], sizeof tf[i]);
   }
   const int S = WL_REPORT_CASE_SOLITARY, X = WL_REPORT_CASE_EXPLOSION;
@@ -157,19 +157,18 @@ static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
     int i = cs[S].present ? S : X;
     put(&b,
         "Only the %s case is in the results (no %s case was run), so the two cases are not "
-        "compared. Its peak force is %s kN/m (at t = %s s) and the impulse of the peak's "
-        "positive phase %s kN s/m per metre of wall. ",
+        "compared. Its peak force is %s kN/m (at t = %s s) and its positive impulse %s kN s/m "
+        "per metre of wall. ",
         cs[i].name, cs[1 - i].name, f[i], tf[i], im[i]);
   } else {
     int gf = wl_report_governs(cs[S].force_peak.value, cs[X].force_peak.value);
-    int gi = wl_report_governs(cs[S].impulse_peak, cs[X].impulse_peak);
+    int gi = wl_report_governs(cs[S].impulse_positive, cs[X].impulse_positive);
     if (gf < 0) {
       put(&b, "Neither case has a peak force in its record, so none governs. ");
     } else if (gf == gi) {
       put(&b,
-          "The %s case governs: its peak force, %s kN/m (at t = %s s), and the impulse of that "
-          "peak's positive phase, %s kN s/m per metre of wall, exceed the %s case's %s kN/m and "
-          "%s kN s/m. ",
+          "The %s case governs: its peak force, %s kN/m (at t = %s s), and its positive "
+          "impulse, %s kN s/m per metre of wall, exceed the %s case's %s kN/m and %s kN s/m. ",
           cs[gf].name, f[gf], tf[gf], im[gf], cs[1 - gf].name, f[1 - gf], im[1 - gf]);
     } else {
       put(&b,
@@ -177,7 +176,7 @@ static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
           "(at t = %s s) against %s kN/m",
           cs[gf].name, f[gf], tf[gf], f[1 - gf]);
       if (gi >= 0)
-        put(&b, ", the %s case the larger positive-phase impulse, %s kN s/m against %s kN s/m",
+        put(&b, ", the %s case the larger positive impulse, %s kN s/m against %s kN s/m",
             cs[gi].name, im[gi], im[1 - gi]);
       put(&b, " (per metre of wall). ");
     }
@@ -192,9 +191,10 @@ static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
     char cut[64], fs[64], fs0[64];
     put(&b,
         "Peak forces are those of the pressure probes on the wall face, %s (cut-off %s Hz); "
-        "impulses integrate the force in excess of the model's force at rest (%s kN/m, "
-        "rho g d^2/2 = %s kN/m) over the peak's positive phase (the net impulse of the whole "
-        "record is in the peaks table). ",
+        "the positive impulse integrates that force wherever it exceeds the model's force at "
+        "rest (%s kN/m, rho g d^2/2 = %s kN/m): the push of every wave together (the impulse "
+        "of the peak's positive phase and the net impulse of the whole record are in the peaks "
+        "table). ",
         cs[first].filtered ? "low-pass filtered" : "unfiltered (no filtered series stored)",
         wl_report_fmt(cs[first].cutoff, 3, cut, sizeof cut),
         wl_report_fmt(cs[first].rest_force / KILO, dg, fs, sizeof fs),
@@ -223,19 +223,19 @@ static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
       continue;
     char ef[64], ei[64], dpf[64];
     wl_report_fmt(100.0 * cv->force_error, SHARE_DIGITS, ef, sizeof ef);
-    wl_report_fmt(100.0 * cv->phase_error, SHARE_DIGITS, ei, sizeof ei);
+    wl_report_fmt(100.0 * cv->pos_error, SHARE_DIGITS, ei, sizeof ei);
     wl_report_fmt(cv->dp[cv->n_levels - 1], 3, dpf, sizeof dpf);
     if (!isfinite(cv->error_estimate))
       put(&b,
           "The %s case's convergence ladder ran %d level%s (finest dp = %s m): too few complete "
-          "levels for an error estimate. ",
+          "levels for an uncertainty. ",
           wl_report_case_name(i), cv->n_levels,
           cv->n_levels == 1 ? "" : "s", dpf);
     else
       put(&b,
-          "Convergence ladder of the %s case (%d levels, finest dp = %s m): estimated relative "
-          "error %s %% of the peak force (%s) and %s %% of the positive-phase impulse (%s)%s. ",
-          wl_report_case_name(i), cv->n_levels, dpf, ef, cv->force_basis, ei, cv->phase_basis,
+          "Convergence ladder of the %s case (%d levels, finest dp = %s m): uncertainty of the "
+          "resolution +-%s %% of the peak force (%s) and +-%s %% of the positive impulse (%s)%s. ",
+          wl_report_case_name(i), cv->n_levels, dpf, ef, cv->force_basis, ei, cv->pos_basis,
           !isfinite(cv->target)     ? ""
           : cv->target_met > 0      ? ", within the target"
                                     : ", above the target");
@@ -346,13 +346,17 @@ enum wl_status wl_report_render_peaks(struct wl_report_ctx *c, const struct wl_r
         d, err,
         "Peak force and peak moment are taken from the low-pass filtered series (zero-phase "
         "Butterworth, cut-off c0/(8 d), d the water depth at the wall: %s), not from the raw "
-        "ones. Impulse is the time integral of the raw probe force minus the model's force at "
-        "rest (its mean before the wave reaches the wall, which differs from rho g d^2/2 by the "
-        "discretisation at the wall; rho g d^2/2 itself where the wave is at the wall from the "
-        "start), to the end of the record; the positive phase's impulse is that integral over "
+        "ones. The positive impulse, the one to quote, is the time integral of the filtered "
+        "force wherever it exceeds the model's force at rest (its mean before the wave reaches "
+        "the wall, which differs from rho g d^2/2 by the discretisation at the wall; rho g "
+        "d^2/2 itself where the wave is at the wall from the start), over the record from where "
+        "peaks are searched: the push of every wave together, which converges with resolution. "
+        "The positive phase's impulse integrates the raw force minus the force at rest over "
         "the peak's positive phase only (from the last time before the peak that the filtered "
-        "force was at or below the force at rest to the first time after it): the impulse "
-        "that acts with the peak, where an oscillating wave train's net impulse nearly "
+        "force was at or below the force at rest to the first time after it); where a wave "
+        "train brings several crests of nearly equal force, which crest carries the peak, and "
+        "so this impulse, changes with resolution. The net impulse integrates the raw force "
+        "minus the force at rest to the end of the record; for an oscillating train it nearly "
         "cancels. Run-up is the highest water level at the wall face "
         "above still water. Rise time and duration are those of the filtered force in excess "
         "of the force at rest (10 %% of its peak). All per metre of wall.",
@@ -363,13 +367,14 @@ enum wl_status wl_report_render_peaks(struct wl_report_ctx *c, const struct wl_r
       {"peak force", "kN/m", WL_REPORT_ALIGN_AUTO, 0},
       {"at", "s", WL_REPORT_ALIGN_AUTO, 0},
       {"impulse", "kN s/m", WL_REPORT_ALIGN_AUTO, 0},
-      {"positive phase", "kN s/m", WL_REPORT_ALIGN_AUTO, 0},
+      {"pos. phase", "kN s/m", WL_REPORT_ALIGN_AUTO, 0},
+      {"net", "kN s/m", WL_REPORT_ALIGN_AUTO, 0},
       {"peak moment", "kN m/m", WL_REPORT_ALIGN_AUTO, 0},
       {"run-up", "m", WL_REPORT_ALIGN_AUTO, 0},
       {"rise time", "s", WL_REPORT_ALIGN_AUTO, 0},
       {"duration", "s", WL_REPORT_ALIGN_AUTO, 0},
   };
-  enum { NC = 9 };
+  enum { NC = 10 };
   struct wl_report_column cols[NC];
   memcpy(cols, cols0, sizeof cols);
   for (int k = 1; k < NC; k++)
@@ -388,12 +393,13 @@ enum wl_status wl_report_render_peaks(struct wl_report_ctx *c, const struct wl_r
     } else {
       row[1] = (struct wl_report_cell){NULL, k->force_peak.value / KILO};
       row[2] = (struct wl_report_cell){NULL, k->force_peak.time};
-      row[3] = (struct wl_report_cell){NULL, k->impulse_total / KILO};
+      row[3] = (struct wl_report_cell){NULL, k->impulse_positive / KILO};
       row[4] = (struct wl_report_cell){NULL, k->impulse_peak / KILO};
-      row[5] = (struct wl_report_cell){NULL, k->moment_peak.value / KILO};
-      row[6] = (struct wl_report_cell){NULL, k->runup};
-      row[7] = (struct wl_report_cell){NULL, k->force_peak.rise_time};
-      row[8] = (struct wl_report_cell){NULL, k->force_peak.duration};
+      row[5] = (struct wl_report_cell){NULL, k->impulse_total / KILO};
+      row[6] = (struct wl_report_cell){NULL, k->moment_peak.value / KILO};
+      row[7] = (struct wl_report_cell){NULL, k->runup};
+      row[8] = (struct wl_report_cell){NULL, k->force_peak.rise_time};
+      row[9] = (struct wl_report_cell){NULL, k->force_peak.duration};
     }
     rows++;
   }
@@ -405,18 +411,22 @@ enum wl_status wl_report_render_peaks(struct wl_report_ctx *c, const struct wl_r
     int g;
     g = wl_report_governs(cs[0].force_peak.value, cs[1].force_peak.value);
     row[1].text = g < 0 ? "n/a" : cs[g].name;
-    g = wl_report_governs(cs[0].impulse_total, cs[1].impulse_total);
+    g = wl_report_governs(cs[0].impulse_positive, cs[1].impulse_positive);
     row[3].text = g < 0 ? "n/a" : cs[g].name;
     g = wl_report_governs(cs[0].impulse_peak, cs[1].impulse_peak);
     row[4].text = g < 0 ? "n/a" : cs[g].name;
-    g = wl_report_governs(cs[0].moment_peak.value, cs[1].moment_peak.value);
+    g = wl_report_governs(cs[0].impulse_total, cs[1].impulse_total);
     row[5].text = g < 0 ? "n/a" : cs[g].name;
-    g = wl_report_governs(cs[0].runup, cs[1].runup);
+    g = wl_report_governs(cs[0].moment_peak.value, cs[1].moment_peak.value);
     row[6].text = g < 0 ? "n/a" : cs[g].name;
+    g = wl_report_governs(cs[0].runup, cs[1].runup);
+    row[7].text = g < 0 ? "n/a" : cs[g].name;
     rows++;
   }
   struct wl_report_table tab = {
-      "Peak loads per metre of wall (peak force and moment from the filtered series)", cols, NC,
+      "Peak loads per metre of wall (peak force and moment from the filtered series; impulse: "
+      "the positive impulse; pos. phase: the peak's positive phase; net: the whole record)",
+      cols, NC,
       cells, rows};
   if (!st)
     st = wl_report_add_table(d, &tab, err);
@@ -428,12 +438,13 @@ enum wl_status wl_report_render_peaks(struct wl_report_ctx *c, const struct wl_r
     const struct wl_report_column ucols[] = {
         {"case", NULL, WL_REPORT_ALIGN_LEFT, 0},
         {"peak force", u.force, WL_REPORT_ALIGN_AUTO, dg},
-        {"impulse", u.impulse, WL_REPORT_ALIGN_AUTO, dg},
+        {"positive impulse", u.impulse, WL_REPORT_ALIGN_AUTO, dg},
         {"positive phase", u.impulse, WL_REPORT_ALIGN_AUTO, dg},
+        {"net impulse", u.impulse, WL_REPORT_ALIGN_AUTO, dg},
         {"peak moment", u.moment, WL_REPORT_ALIGN_AUTO, dg},
         {"run-up", u.length, WL_REPORT_ALIGN_AUTO, dg},
     };
-    enum { NU = 6 };
+    enum { NU = 7 };
     struct wl_report_cell ucells[WL_REPORT_N_CASES * NU];
     int urows = 0;
     for (int i = 0; i < WL_REPORT_N_CASES; i++) {
@@ -443,10 +454,11 @@ enum wl_status wl_report_render_peaks(struct wl_report_ctx *c, const struct wl_r
       struct wl_report_cell *row = &ucells[urows++ * NU];
       row[0] = (struct wl_report_cell){k->name, 0};
       row[1] = (struct wl_report_cell){NULL, k->force_peak.value * u.force_f};
-      row[2] = (struct wl_report_cell){NULL, k->impulse_total * u.impulse_f};
+      row[2] = (struct wl_report_cell){NULL, k->impulse_positive * u.impulse_f};
       row[3] = (struct wl_report_cell){NULL, k->impulse_peak * u.impulse_f};
-      row[4] = (struct wl_report_cell){NULL, k->moment_peak.value * u.moment_f};
-      row[5] = (struct wl_report_cell){NULL, k->runup * u.length_f};
+      row[4] = (struct wl_report_cell){NULL, k->impulse_total * u.impulse_f};
+      row[5] = (struct wl_report_cell){NULL, k->moment_peak.value * u.moment_f};
+      row[6] = (struct wl_report_cell){NULL, k->runup * u.length_f};
     }
     struct wl_report_table ut = {
         "The same peaks in the scenario's units (US customary, per foot of wall; 1 lbf = "
@@ -541,9 +553,9 @@ static enum wl_status convergence_case_table(struct wl_report_ctx *c, int i, int
       {"runtime", "s", WL_REPORT_ALIGN_AUTO, 0},
       {"peak force", "kN/m", WL_REPORT_ALIGN_AUTO, 0},
       {"change", "%", WL_REPORT_ALIGN_AUTO, 2},
-      {"pos. phase impulse", "kN s/m", WL_REPORT_ALIGN_AUTO, 0},
+      {"positive impulse", "kN s/m", WL_REPORT_ALIGN_AUTO, 0},
       {"change", "%", WL_REPORT_ALIGN_AUTO, 2},
-      {"est. error", "%", WL_REPORT_ALIGN_AUTO, 2},
+      {"error", "%", WL_REPORT_ALIGN_AUTO, 2},
       {"status", NULL, WL_REPORT_ALIGN_LEFT, 0},
   };
   enum { NC = 10 };
@@ -562,15 +574,16 @@ static enum wl_status convergence_case_table(struct wl_report_ctx *c, int i, int
     row[3] = (struct wl_report_cell){NULL, cv->runtime[l]};
     row[4] = (struct wl_report_cell){NULL, cv->peak_force[l] / KILO};
     row[5] = (struct wl_report_cell){l ? NULL : "", l ? change_pct(cv->peak_force[l], cv->peak_force[l - 1]) : 0};
-    row[6] = (struct wl_report_cell){NULL, cv->impulse_phase[l] / KILO};
+    row[6] = (struct wl_report_cell){NULL, cv->impulse_pos[l] / KILO};
     row[7] = (struct wl_report_cell){l ? NULL : "",
-                                     l ? change_pct(cv->impulse_phase[l], cv->impulse_phase[l - 1]) : 0};
+                                     l ? change_pct(cv->impulse_pos[l], cv->impulse_pos[l - 1]) : 0};
     row[8] = (struct wl_report_cell){NULL, 100.0 * cv->error[l]};
     row[9] = (struct wl_report_cell){cv->status[l] == 0 ? "complete" : "stopped", 0};
   }
   char caption[160];
   snprintf(caption, sizeof caption, "Convergence ladder of the %s case (peak force from the "
-           "filtered probe force; change from the level above)", c->res->cases[i].name[0] ? c->res->cases[i].name : wl_report_case_name(i));
+           "filtered probe force; change from the level above; the finest level's error is "
+           "its uncertainty)", c->res->cases[i].name[0] ? c->res->cases[i].name : wl_report_case_name(i));
   struct wl_report_table t = {caption, cols, NC, cells, cv->n_levels};
   return wl_report_add_table(c->doc, &t, err);
 }
@@ -585,7 +598,7 @@ static enum wl_status convergence_summary_table(struct wl_report_ctx *c, int dg,
       {"quantity", NULL, WL_REPORT_ALIGN_LEFT, 0},
       {"order p", NULL, WL_REPORT_ALIGN_AUTO, 3},
       {"extrapolated", NULL, WL_REPORT_ALIGN_AUTO, 0},
-      {"error estimate", "%", WL_REPORT_ALIGN_AUTO, 2},
+      {"uncertainty", "%", WL_REPORT_ALIGN_AUTO, 2},
       {"from", NULL, WL_REPORT_ALIGN_LEFT, 0},
       {"target", "%", WL_REPORT_ALIGN_AUTO, 2},
       {"met", NULL, WL_REPORT_ALIGN_LEFT, 0},
@@ -610,11 +623,11 @@ static enum wl_status convergence_summary_table(struct wl_report_ctx *c, int dg,
     a[3] = (struct wl_report_cell){NULL, cv->force_extrapolated / KILO};
     a[4] = (struct wl_report_cell){NULL, 100.0 * cv->force_error};
     a[5] = (struct wl_report_cell){cv->force_basis[0] ? cv->force_basis : "?", 0};
-    b[1] = (struct wl_report_cell){"positive-phase impulse [kN s/m]", 0};
-    b[2] = (struct wl_report_cell){NULL, cv->phase_order};
-    b[3] = (struct wl_report_cell){NULL, cv->phase_extrapolated / KILO};
-    b[4] = (struct wl_report_cell){NULL, 100.0 * cv->phase_error};
-    b[5] = (struct wl_report_cell){cv->phase_basis[0] ? cv->phase_basis : "?", 0};
+    b[1] = (struct wl_report_cell){"positive impulse [kN s/m]", 0};
+    b[2] = (struct wl_report_cell){NULL, cv->pos_order};
+    b[3] = (struct wl_report_cell){NULL, cv->pos_extrapolated / KILO};
+    b[4] = (struct wl_report_cell){NULL, 100.0 * cv->pos_error};
+    b[5] = (struct wl_report_cell){cv->pos_basis[0] ? cv->pos_basis : "?", 0};
     e[1] = (struct wl_report_cell){"case (the larger)", 0};
     e[4] = (struct wl_report_cell){NULL, 100.0 * cv->error_estimate};
     e[6] = (struct wl_report_cell){NULL, 100.0 * cv->target};
@@ -689,7 +702,7 @@ static enum wl_status convergence_plot(struct wl_report_ctx *c, struct wl_error 
     st = wl_report_end_figure(
         c->doc,
         "Speed against error: the relative error of each coarser level (the larger of peak "
-        "force and positive-phase impulse, against the Richardson value where the order is "
+        "force and positive impulse, against the Richardson value where the order is "
         "meaningful, else against the finest level) and the finest level's uncertainty, against "
         "the wall-clock runtime of that level, log-log.",
         err);
@@ -727,9 +740,10 @@ enum wl_status wl_report_render_convergence(struct wl_report_ctx *c,
           "least 1.25 times the range of the three values; for a smaller p the smaller of "
           "1.25 |f3 - f_ext| and 3 times the range; where the values oscillate, 3 times their "
           "range; with two levels 3 |f3 - f2| / (r^2 - 1). It is given relative to f3. A case's "
-          "uncertainty is the larger of those of the peak force and the impulse of the peak's "
-          "positive phase (an oscillating wave train's net impulse is too small a difference "
-          "to converge).",
+          "uncertainty is the larger of those of the peak force and the positive impulse (an "
+          "oscillating wave train's net impulse is too small a difference to converge, and "
+          "which crest carries its peak, whose positive phase would be integrated, changes "
+          "with resolution).",
           asked[0] ? " " : "", asked);
     for (int i = 0; !st && i < WL_REPORT_N_CASES; i++)
       if (r->conv[i].present)
