@@ -34,7 +34,8 @@ pack)
   cd "$root"
   cmake -S . -B build-e2e -DWL_CUDA=ON -DCMAKE_BUILD_TYPE=Release >/dev/null
   cmake --build build-e2e -j2 --target wallload >/dev/null
-  grep -qx '/.e2e/' .git/info/exclude || echo /.e2e/ >>.git/info/exclude
+  ex=$(git rev-parse --git-path info/exclude) && mkdir -p "$(dirname "$ex")"
+  grep -qx '/.e2e/' "$ex" 2>/dev/null || echo /.e2e/ >>"$ex"
   rm -rf "$E" && mkdir -p "$E/lib" "$E/fonts"
   cmake --build build-e2e -j2 --target test_cuda_backend >/dev/null
   cp build-e2e/wallload build-e2e/tests/test_cuda_backend "$E/"

@@ -146,6 +146,10 @@ int main(void) {
                 "0.0125 m: 5 rows on the platform, 0.0625 m (by hand)");
       CHECK_ABS(wl_plan_modelled_depth(0.36, 0.0, 0.0, 0.0125), 0.3625, 1e-12,
                 "0.0125 m: 29 rows offshore, 0.3625 m (by hand)");
+      /* 0.06/7 m written to 12 digits (0.008571428571, 3e-11 m short of it)
+       * is 7 rows on the platform, as the user meant, not 6 */
+      CHECK_ABS(wl_plan_modelled_depth(0.36, 0.0, 0.30, 0.008571428571), 7 * 0.008571428571, 1e-12,
+                "0.008571428571 m: 7 rows on the platform");
       /* the ladder's levels: 0.025 x 0.71 = 0.01775 m asked, 0.015 m (4
        * rows); 0.025 x 0.5 = 0.0125 m asked, 0.012 m (5 rows) */
       CHECK_ABS(wl_plan_level_dp(&sw, &pw, 0.71), 0.015, 1e-12, "ladder level x 0.71: 0.06/4 m");

@@ -36,6 +36,14 @@
 #include "wallload/sph/params.h"
 #include "wallload/sph/particles.h"
 
+/* Tolerance of the lattice tests, relative to dp: a lattice point within
+ * WL_SCENE_LATTICE_TOL dp of a face (a row exactly on the free surface, on
+ * the bed's half-spacing clearance) is decided the same way whatever the
+ * rounding of its coordinates or of a dp written to 7 or more digits
+ * (0.008571428571 m is 0.06/7 m: 7 whole rows, not 6). The plan counts
+ * rows with it too (wl_plan_modelled_depth). */
+#define WL_SCENE_LATTICE_TOL 1e-6
+
 /* Particle lists under construction (caller-owned: _init / _clear). */
 struct wl_scene {
   struct wl_sph_const k; /* constants of the run (rho0, B, g, dp) */

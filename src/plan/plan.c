@@ -7,6 +7,7 @@
 #include <stdarg.h>
 #include <string.h>
 
+#include "wallload/scene.h"
 #include "wallload/units.h"
 
 /* Wave lengths (at the celerity offshore) that must pass the wall after the
@@ -534,9 +535,9 @@ double wl_plan_bed_min(const struct wl_scenario *s) {
 
 double wl_plan_modelled_depth(double h, double z_min, double z_bed, double dp) {
   /* rows j >= 0 with z_min + (j + 1/2) dp < h, and from the first at least
-   * dp/2 above z_bed (scene.c; its lattice tolerance 1e-9) */
-  const double top = ceil((h - z_min) / dp - 0.5 - 1e-9);
-  const double first = ceil((z_bed - z_min) / dp - 1e-9);
+   * dp/2 above z_bed, as the scene lays them (scene.c, its tolerance) */
+  const double top = ceil((h - z_min) / dp - 0.5 - WL_SCENE_LATTICE_TOL);
+  const double first = ceil((z_bed - z_min) / dp - WL_SCENE_LATTICE_TOL);
   return fmax(top - first, 0.0) * dp;
 }
 

@@ -9,10 +9,6 @@
 #include "internal.h"
 #include "wallload/sph.h"
 
-/* Tolerance of lattice tests, relative to dp: points exactly on a face are
- * decided the same way whatever the rounding of their coordinates. */
-#define LATTICE_TOL 1e-9
-
 void wl_scene_init(struct wl_scene *sc, const struct wl_sph_const *k, double y0, double y1) {
   memset(sc, 0, sizeof *sc);
   sc->k = *k;
@@ -77,7 +73,7 @@ enum wl_status wl_scene_push(struct wl_scene *sc, int g, const double *x, double
 
 /* Lattice count of (i + 1/2) dp points in [a, b] and the first point. */
 static int lattice(double a, double b, double dp, double *first) {
-  const long n = (long)floor((b - a) / dp + LATTICE_TOL);
+  const long n = (long)floor((b - a) / dp + WL_SCENE_LATTICE_TOL);
   *first = a + 0.5 * dp;
   return n > 0 ? (int)n : 0;
 }
@@ -196,12 +192,12 @@ enum wl_status wl_scene_fluid_surface(struct wl_scene *sc, double x0, double x1,
     const double e = eta(px, user);
     const double zb = bed_at(bed_x, bed_z, n_bed, px);
     long first = -1, count = 0;
-    for (long j = 0; zmin + (j + 0.5) * dp < e; j++) {
+    for (long j = 0; zmin + (j + 0.5) * dp < e - WL_SCENE_LATTICE_TOL * dp; j++) {
       const double pz = zmin + (j + 0.5) * dp;
       if (pz <= zb) continue;
-      if (n_bed > 1 && wl_scene_polyline_dist(bed_x, bed_z, n_bed, px, pz) < 0.5 * dp * (1 - LATTICE_TOL))
+      if (n_bed > 1 && wl_scene_polyline_dist(bed_x, bed_z, n_bed, px, pz) < 0.5 * dp * (1 - WL_SCENE_LATTICE_TOL))
         continue;
-      if (n_bed == 1 && pz - zb < 0.5 * dp * (1 - LATTICE_TOL)) continue;
+      if (n_bed == 1 && pz - zb < 0.5 * dp * (1 - WL_SCENE_LATTICE_TOL)) continue;
       if (first < 0) first = j;
       count = j - first + 1;
     }
