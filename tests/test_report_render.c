@@ -467,7 +467,8 @@ static enum wl_status write_particles(const char *dir, struct wl_error *err) {
  *   peak force  F0 + A = 196.2 + 1234.5 = 1430.7 N/m        -> 1.43 kN/m
  *   at          1.00 s
  *   impulse     A s sqrt(pi) (erf(20) + erf(20))/2 = 109.405 N s/m -> 0.109 kN s/m
- *   positive-phase impulse: the same (the pulse is positive throughout)
+ *   positive-phase impulse and positive impulse: the same (the pulse is
+ *               positive throughout)
  *   moment      M0 + 0.1 A = 13.08 + 123.45 = 136.53 N m/m  -> 0.137 kN m/m
  *   run-up      0.0789 m
  *   rise time   s sqrt(ln 10) = 0.075871 s                   -> 0.0759 s
@@ -478,7 +479,7 @@ static enum wl_status write_particles(const char *dir, struct wl_error *err) {
  * s = 0.01 s:
  *   peak force  196.2 + 2345.6 = 2541.8 N/m -> 2.54 kN/m, at 0.300 s
  *   impulse     2345.6 * 0.01 * sqrt(pi) = 41.5746 N s/m -> 0.0416 kN s/m
- *   positive-phase impulse: the same
+ *   positive-phase impulse and positive impulse: the same
  *   moment      13.08 + 234.56 = 247.64 N m/m -> 0.248 kN m/m
  *   run-up      0.0456 m; rise 0.0151743 s -> 0.0152; duration 0.0303486 s -> 0.0303 */
 static const struct pulse SOL = {1234.5, 1.0, 0.05, 2.0, 0.0789, 0.95, "complete", NULL};
@@ -563,6 +564,8 @@ static void test_full_report(void) {
               "positive-phase impulse = A s sqrt(pi) (the whole Gaussian)");
     CHECK_TRUE(s->impulse_peak_from < SOL.t0 - 5 * SOL.s && s->impulse_peak_to > SOL.t0 + 5 * SOL.s,
                "the positive phase spans the pulse");
+    CHECK_REL(s->impulse_positive, SOL.A * SOL.s * sqrt(PI), 1e-6,
+              "positive impulse = A s sqrt(pi) (the pulse lies wholly above the force at rest)");
     CHECK_REL(s->moment_peak.value, M_STATIC + LEVER * SOL.A, 1e-12, "peak moment = M0 + A lever");
     CHECK_REL(s->force_peak.rise_time, SOL.s * sqrt(log(10.0)), 1e-4,
               "rise time s sqrt(ln 10) (10 % of the Gaussian)");
@@ -607,18 +610,19 @@ static void test_full_report(void) {
   check_text(text, "synthetic-wall", "scenario name");
   check_text(text, digest, "SHA-256 of the scenario text (checked above against NIST vectors)");
   /* peaks table rows as hand-computed above, 3 significant digits */
-  check_text(text, "solitary 1.43 1.00 0.109 0.109 0.137 0.0789 0.0759 0.152",
+  check_text(text, "solitary 1.43 1.00 0.109 0.109 0.109 0.137 0.0789 0.0759 0.152",
              "peaks table, solitary row: analytic pulse");
-  check_text(text, "explosion 2.54 0.300 0.0416 0.0416 0.248 0.0456 0.0152 0.0303",
+  check_text(text, "explosion 2.54 0.300 0.0416 0.0416 0.0416 0.248 0.0456 0.0152 0.0303",
              "peaks table, explosion row: analytic pulse");
-  check_text(text, "governs explosion solitary solitary explosion solitary",
-             "governs row: larger force, impulse, positive-phase impulse, moment, run-up");
+  check_text(text, "governs explosion solitary solitary solitary explosion solitary",
+             "governs row: larger force, positive, positive-phase and net impulse, moment, "
+             "run-up");
   check_text(text, "filtered series", "peaks say they come from the filtered series");
   check_text(text, "1.43 1.37 -4.3",
              "probe vs boundary: 1430.7 N/m, 1368.975 N/m (-61.725 N/m), -4.3 % of the probe's");
   check_text(text, "the explosion case has the larger peak force, 2.54 kN/m",
              "summary: force governed by the explosion");
-  check_text(text, "the solitary case the larger positive-phase impulse, 0.109 kN s/m",
+  check_text(text, "the solitary case the larger positive impulse, 0.109 kN s/m",
              "summary: impulse governed by the solitary wave");
   check_text(text, "-4.3 % from the probe value", "summary: error indicator");
   check_text(text, "The explosion case did not complete (unstable",
@@ -683,8 +687,8 @@ static void test_full_report(void) {
   check_text(text, "Probe pressures, solitary case", "loads: pressure histories");
   check_text(text, "Water level at the wall face", "loads: run-up history");
   check_no_text(text, "Impulse on the wall", "loads: impulse not asked for");
-  check_text(text, "solitary 1.431 1.000 0.1094 0.1094 0.1365",
-             "peaks with 4 digits: 1430.7, 109.405 (net and positive phase), 136.53");
+  check_text(text, "solitary 1.431 1.000 0.1094 0.1094 0.1094 0.1365",
+             "peaks with 4 digits: 1430.7, 109.405 (positive, positive phase, net), 136.53");
   check_no_text(text, "goda-takahashi", "design: only the hydrostatic rows");
   check_no_text(text, "Scenario file as run", "metadata: scenario_text false");
   check_text(text, "Test Engineering Ltd", "company in the footer");
