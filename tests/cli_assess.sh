@@ -145,6 +145,17 @@ pid=$!
 for _ in $(seq 1 200); do [ -e locked/.wallload.lock ] && break; sleep 0.1; done
 msg=$("$bin" assess tiny.yaml --quiet --end-time 0.1 -o locked --force 2>&1); rc=$?
 [ $rc = 2 ] && grep -q "being written by wallload process $pid" <<<"$msg" && ok "a second writer is refused (exit 2): $msg" || bad "second writer -> $rc: $msg"
+# OpenMP threads wait passively unless the user chose (main.c): the running
+# process (the same id after its re-execution) has OMP_WAIT_POLICY=PASSIVE
+# in its environment when the caller set none
+if [ -r /proc/$pid/environ ]; then
+  pol=$(tr '\0' '\n' </proc/$pid/environ | grep '^OMP_WAIT_POLICY=' || true)
+  if [ -n "${OMP_WAIT_POLICY+x}" ]; then
+    [ "$pol" = "OMP_WAIT_POLICY=$OMP_WAIT_POLICY" ] && ok "the caller's OMP_WAIT_POLICY is kept: $pol" || bad "caller's policy changed: '$pol'"
+  else
+    [ "$pol" = "OMP_WAIT_POLICY=PASSIVE" ] && ok "OpenMP waits passively by default: $pol" || bad "default wait policy: '$pol'"
+  fi
+fi
 kill -9 "$pid"; wait "$pid" 2>/dev/null
 touch locked/results.h5.tmp locked/report.pdf.part
 msg=$("$bin" assess tiny.yaml --quiet --end-time 0.1 -o locked --force 2>&1); rc=$?

@@ -1,9 +1,13 @@
 /* main.c: the wallload command line. The only place that prints errors and
  * picks exit codes (0 ok, 1 run failure, 2 bad input or usage). */
+#define _POSIX_C_SOURCE 200809L /* setenv */
+
 #include <errno.h>
 #include <signal.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include <gsl/gsl_errno.h>
 
@@ -40,7 +44,23 @@ static void usage(FILE *out) {
           "exit codes: 0 success, 1 run failure, 2 bad input or usage\n");
 }
 
+/* OpenMP threads that wait at a barrier sleep instead of spinning, unless
+ * the user chose otherwise: on a machine other jobs share, spinning threads
+ * fight them for the cores. On the 2-core development machine beside one
+ * busy process a run took 50.7 s spinning and 25.8 s sleeping (19.1 s
+ * either way on the idle machine; BENCHMARKS.md "OpenMP on a shared
+ * machine"). The runtime reads the policy once, when it loads, before
+ * main: so the process sets it and runs itself again (same process id,
+ * arguments and environment otherwise). If that fails it goes on as it
+ * is. */
+static void wait_passively(char **argv) {
+  if (getenv("OMP_WAIT_POLICY")) return;
+  if (setenv("OMP_WAIT_POLICY", "PASSIVE", 1) != 0) return;
+  execv("/proc/self/exe", argv);
+}
+
 int main(int argc, char **argv) {
+  wait_passively(argv);
   /* GSL must report errors as status codes; the library checks every one. */
   gsl_set_error_handler_off();
   /* a file-size limit is a refused write ("File too large", exit 1), not a
