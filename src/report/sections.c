@@ -199,7 +199,7 @@ static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
         wl_report_fmt(cs[first].cutoff, 3, cut, sizeof cut),
         wl_report_fmt(cs[first].rest_force / KILO, dg, fs, sizeof fs),
         wl_report_fmt(cs[first].static_force / KILO, dg, fs0, sizeof fs0));
-    put(&b, "Error indicator: the force summed on the wall's boundary particles peaks at");
+    put(&b, "Second measurement: the force summed on the wall's boundary particles peaks at");
     int k = 0;
     for (int i = 0; i < WL_REPORT_N_CASES; i++) {
       if (!cs[i].present || !cs[i].n)
