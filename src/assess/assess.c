@@ -317,6 +317,16 @@ static enum wl_status pick_backend(const struct wl_scenario *s, const struct wl_
   return WL_OK;
 }
 
+double assess_gpu_memory(const struct wl_scenario *s, const struct wl_assess_opts *opts) {
+  const struct wl_backend_ops *ops;
+  struct wl_error perr;
+  wl_error_clear(&perr);
+  if (pick_backend(s, opts, &ops, &perr) != WL_OK || ops != &wl_backend_cuda_ops) return 0.0;
+  struct wl_cuda_device dev;
+  wl_error_clear(&perr);
+  return wl_cuda_device_query(&dev, &perr) == WL_OK ? (double)dev.memory_total : 0.0;
+}
+
 void wl_assess_machine(const struct wl_scenario *s, const struct wl_assess_opts *opts,
                        struct wl_plan_machine *m) {
   memset(m, 0, sizeof *m);

@@ -21,6 +21,10 @@ enum wl_status assess_case(const struct wl_scenario *s, const struct wl_plan *pl
                            const char *snapshots, int defer, struct wl_case_result *c,
                            struct wl_error *err);
 
+/* The GPU's memory [bytes] when this scenario's run goes to the CUDA backend
+ * (opts->backend, else run.backend; auto: a GPU found), else 0. */
+double assess_gpu_memory(const struct wl_scenario *s, const struct wl_assess_opts *opts);
+
 /* ladder.c */
 /* Run load case `load` on the scenario's convergence ladder into c (the last
  * level run, as wl_assess_case fills it) and cv (every level, the estimate

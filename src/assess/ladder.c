@@ -4,6 +4,7 @@
  * of peak force and impulse after each level (wl_loads_convergence),
  * and the early stop at resolution.target_error. Definitions in assess.h. */
 #include <math.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -112,6 +113,110 @@ static void ladder_note(struct wl_assess_convergence *cv, const char *stop_word)
              cv->n_levels, e, basis, cv->target_met ? "below" : "above", t);
 }
 
+/* Levels side by side on one GPU: at most this share of its memory for all
+ * of them together (the plan's estimates), else one after the other. */
+#define LADDER_GPU_MEMORY_SHARE 0.5
+
+/* A coarser level run beside the finest (ladder_side_by_side). */
+struct level_job {
+  struct wl_scenario s; /* shallow copy with the level's dp; never cleared */
+  struct wl_plan p;
+  enum wl_load_case load;
+  struct wl_assess_opts opts; /* no progress: only the finest level reports */
+  struct wl_case_result c;
+  struct wl_error err;
+  enum wl_status st;
+};
+
+static void *level_thread(void *arg) {
+  struct level_job *j = arg;
+  j->st = assess_case(&j->s, &j->p, j->load, &j->opts, NULL, 1, &j->c, &j->err);
+  return NULL;
+}
+
+/* Plan level k of the ladder into *ls, *lp (the scenario with the level's dp). */
+static enum wl_status plan_level(const struct wl_scenario *s, const struct wl_assess_level *lv,
+                                 int k, int n, struct wl_scenario *ls, struct wl_plan *lp,
+                                 struct wl_error *err) {
+  *ls = *s; /* shallow: the text stays the caller's; ls is never cleared */
+  ls->resolution.dp.is_auto = 0;
+  ls->resolution.dp.given = 1;
+  ls->resolution.dp.q.si = lv->dp;
+  enum wl_status st = wl_plan_make(ls, lp, err);
+  if (st) wl_error_prefix(err, "convergence level %d/%d (dp = %g m): ", k + 1, n, lv->dp);
+  return st;
+}
+
+/* Every level of the ladder at once on the GPU: a small flume's step is
+ * mostly fixed cost (launches, the per-step synchronisation), so levels in
+ * their own threads, each with its own CUDA stream, fill the GPU that one
+ * leaves idle (issue 21). The coarser levels run in threads without
+ * progress or snapshots (HDF5 is not thread-safe); the finest in this
+ * thread, as the sequential ladder's last level. A level's results are
+ * those it gives alone: each run is deterministic on its own stream.
+ * Returns 1 (with *st) when it ran the ladder, 0 when the levels do not
+ * fit the GPU's memory together (or cannot be allocated) and the caller
+ * runs them one after the other. */
+static int ladder_side_by_side(const struct wl_scenario *s, enum wl_load_case load,
+                               const struct wl_assess_opts *opts, double gpu_bytes,
+                               const char *snapshots, struct wl_case_result *c,
+                               struct wl_assess_convergence *cv, enum wl_status *st_out,
+                               struct wl_error *err) {
+  const int n = cv->n_planned;
+  struct level_job *jobs = calloc((size_t)n, sizeof *jobs);
+  if (!jobs) return 0;
+  double bytes = 0;
+  enum wl_status st = WL_OK;
+  for (int k = 0; k < n && !st; k++) {
+    st = plan_level(s, &cv->lv[k], k, n, &jobs[k].s, &jobs[k].p, err);
+    bytes += jobs[k].p.gpu_memory_bytes;
+  }
+  if (st || !(bytes <= LADDER_GPU_MEMORY_SHARE * gpu_bytes)) {
+    free(jobs);
+    return 0; /* the sequential ladder plans again and says why a level fails */
+  }
+  pthread_t tid[WL_ASSESS_MAX_LEVELS];
+  int started[WL_ASSESS_MAX_LEVELS] = {0};
+  for (int k = 0; k + 1 < n; k++) {
+    struct level_job *j = &jobs[k];
+    j->load = load;
+    j->opts = *opts;
+    j->opts.progress = NULL;
+    wl_error_clear(&j->err);
+    started[k] = pthread_create(&tid[k], NULL, level_thread, j) == 0;
+  }
+  struct ladder_progress lp = {opts, ""};
+  snprintf(lp.label, sizeof lp.label, "%s, level %d/%d, dp = %.4g m (levels 1-%d beside it)",
+           wl_flume_case_name(load), n, n, cv->lv[n - 1].dp, n - 1);
+  struct wl_assess_opts lo = *opts;
+  if (opts->progress) {
+    lo.progress = ladder_on_progress;
+    lo.user = &lp;
+  }
+  st = assess_case(&jobs[n - 1].s, &jobs[n - 1].p, load, &lo, snapshots, 1, c, err);
+  for (int k = 0; k + 1 < n; k++) {
+    if (started[k])
+      pthread_join(tid[k], NULL);
+    else
+      level_thread(&jobs[k]); /* no thread to be had: here, after the finest */
+    level_from_case(&cv->lv[k], &jobs[k].c);
+    if (jobs[k].st != WL_OK && cv->lv[k].status == WL_OK) cv->lv[k].status = jobs[k].st;
+    wl_assess_case_clear(&jobs[k].c);
+  }
+  level_from_case(&cv->lv[n - 1], c);
+  cv->n_levels = n;
+  ladder_estimate(cv);
+  const char *stop_word = NULL;
+  if (st && (c->rec.n > 0 || st == WL_EUNSTABLE || st == WL_EINTERRUPTED))
+    stop_word = st == WL_EUNSTABLE      ? "went unstable"
+                : st == WL_EINTERRUPTED ? "was interrupted"
+                                        : "failed";
+  ladder_note(cv, stop_word);
+  free(jobs);
+  *st_out = st;
+  return 1;
+}
+
 enum wl_status ladder_run(const struct wl_scenario *s, const struct wl_plan *plan,
                           enum wl_load_case load, const struct wl_assess_opts *opts,
                           const char *snapshots, struct wl_case_result *c,
@@ -128,6 +233,12 @@ enum wl_status ladder_run(const struct wl_scenario *s, const struct wl_plan *pla
     cv->lv[k].factor = s->resolution.levels[k].q.si;
     cv->lv[k].dp = wl_plan_level_dp(s, plan, cv->lv[k].factor);
   }
+  /* side by side on a GPU, unless refining stops at a target error (the
+   * next level depends on the last) */
+  const double gpu_bytes = cv->target_given || n < 2 ? 0.0 : assess_gpu_memory(s, opts);
+  enum wl_status side_st;
+  if (gpu_bytes > 0 && ladder_side_by_side(s, load, opts, gpu_bytes, snapshots, c, cv, &side_st, err))
+    return side_st;
   /* each level is the scenario with dp set to the level's (plan.h
    * wl_plan_level_dp), planned again */
   struct wl_scenario *sl = malloc(sizeof *sl);
@@ -140,14 +251,7 @@ enum wl_status ladder_run(const struct wl_scenario *s, const struct wl_plan *pla
   const char *stop_word = NULL;
   for (int k = 0; k < n; k++) {
     struct wl_assess_level *lv = &cv->lv[k];
-    *sl = *s; /* shallow: the text stays the caller's; sl is never cleared */
-    sl->resolution.dp.is_auto = 0;
-    sl->resolution.dp.given = 1;
-    sl->resolution.dp.q.si = lv->dp;
-    if ((st = wl_plan_make(sl, pl, err))) {
-      wl_error_prefix(err, "convergence level %d/%d (dp = %g m): ", k + 1, n, lv->dp);
-      break;
-    }
+    if ((st = plan_level(s, lv, k, n, sl, pl, err))) break;
     struct ladder_progress lp = {opts, ""};
     snprintf(lp.label, sizeof lp.label, "%s, level %d/%d, dp = %.4g m", wl_flume_case_name(load),
              k + 1, n, lv->dp);
