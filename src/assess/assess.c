@@ -317,33 +317,31 @@ static enum wl_status pick_backend(const struct wl_scenario *s, const struct wl_
   return WL_OK;
 }
 
-double assess_gpu_memory(const struct wl_scenario *s, const struct wl_assess_opts *opts) {
+/* 1 with the GPU in *dev when the scenario's run goes to the CUDA backend. */
+static int run_device(const struct wl_scenario *s, const struct wl_assess_opts *opts,
+                      struct wl_cuda_device *dev) {
   const struct wl_backend_ops *ops;
   struct wl_error perr;
   wl_error_clear(&perr);
-  if (pick_backend(s, opts, &ops, &perr) != WL_OK || ops != &wl_backend_cuda_ops) return 0.0;
-  struct wl_cuda_device dev;
+  if (pick_backend(s, opts, &ops, &perr) != WL_OK || ops != &wl_backend_cuda_ops) return 0;
   wl_error_clear(&perr);
-  return wl_cuda_device_query(&dev, &perr) == WL_OK ? (double)dev.memory_total : 0.0;
+  return wl_cuda_device_query(dev, &perr) == WL_OK;
+}
+
+double assess_gpu_memory(const struct wl_scenario *s, const struct wl_assess_opts *opts) {
+  struct wl_cuda_device dev;
+  return run_device(s, opts, &dev) ? (double)dev.memory_total : 0.0;
 }
 
 void wl_assess_machine(const struct wl_scenario *s, const struct wl_assess_opts *opts,
                        struct wl_plan_machine *m) {
   memset(m, 0, sizeof *m);
-  const struct wl_backend_ops *ops;
-  struct wl_error perr;
-  wl_error_clear(&perr);
-  if (pick_backend(s, opts, &ops, &perr) != WL_OK) ops = &wl_backend_cpu_ops; /* the run says why */
   const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
   if (pages > 0 && page > 0) m->host_bytes = (double)pages * (double)page;
-  if (ops == &wl_backend_cuda_ops) {
-    struct wl_cuda_device dev;
-    struct wl_error qerr;
-    wl_error_clear(&qerr);
-    if (wl_cuda_device_query(&dev, &qerr) == WL_OK) {
-      m->device_bytes = (double)dev.memory_total;
-      snprintf(m->device_name, sizeof m->device_name, "%s", dev.name);
-    }
+  struct wl_cuda_device dev; /* a backend that cannot be had: the run says why */
+  if (run_device(s, opts, &dev)) {
+    m->device_bytes = (double)dev.memory_total;
+    snprintf(m->device_name, sizeof m->device_name, "%s", dev.name);
   }
   m->threads = opts->threads > 0                 ? opts->threads
                : s->run.threads.is_auto          ? omp_get_max_threads()
