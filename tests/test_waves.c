@@ -4,7 +4,10 @@
  * from int sech^2 = 2/K, int sech^4 = 4/(3K), int sech^6 = 16/(15K), exact
  * identities of steady irrotational waves (mass flux c eta, continuity,
  * kinematic surface condition), finite differences, and an RK4 integration of
- * the paddle ODE written here. */
+ * the paddle ODE written here. The exact wave's tabulated field
+ * (WL_SOLITARY_EXACT) is checked against the table's integrals by a
+ * quadrature written here, and against the conditions that define a steady
+ * irrotational wave (mass flux, both surface conditions, bed, curl). */
 #include "wallload/waves.h"
 
 #include <gsl/gsl_errno.h>
@@ -336,6 +339,123 @@ static void test_exact_solver(void) {
             "REFERENCES 3.4 E at eps 0.1, dimensional on h = 0.5 m");
 }
 
+/* ---- the exact wave's tabulated field ---------------------------------------- */
+
+/* Integrals of the tabulated field by composite Simpson quadrature written
+ * here: X over [-40 h, 40 h] in steps of h/200, z over the local depth with
+ * 40 intervals. Returns M, I, KE, PE dimensionless (rho = g = h = 1). */
+static void field_integrals(const struct wl_solitary *sw, double *M, double *I, double *KE,
+                            double *PE) {
+  const double h = sw->h, g = sw->g, dX = h / 200;
+  const int NX = 16000, NZ = 40;
+  double m = 0, im = 0, ke = 0, pe = 0;
+  for (int i = 0; i <= NX; i++) {
+    const double X = -40 * h + i * dX, wx = (i == 0 || i == NX) ? 1 : (i % 2 ? 4 : 2);
+    const double eta = wl_waves_solitary_eta(sw, X), d = h + eta;
+    double su = 0, sk = 0;
+    for (int j = 0; j <= NZ; j++) {
+      double u, w;
+      wl_waves_solitary_velocity(sw, X, d * j / NZ, &u, &w);
+      const double wz = (j == 0 || j == NZ) ? 1 : (j % 2 ? 4 : 2);
+      su += wz * u;
+      sk += wz * (u * u + w * w);
+    }
+    m += wx * eta;
+    pe += wx * 0.5 * g * eta * eta;
+    im += wx * su * d / (3 * NZ);
+    ke += wx * 0.5 * sk * d / (3 * NZ);
+  }
+  const double f = dX / 3, sgh = sqrt(g * h);
+  *M = m * f / (h * h);
+  *I = im * f / (h * h * sgh);
+  *KE = ke * f / (g * h * h * h);
+  *PE = pe * f / (g * h * h * h);
+}
+
+static void test_exact_field(void) {
+  struct wl_error err;
+  wl_error_clear(&err);
+  const double h = 0.4;
+  const double epss[] = {0.1, 0.3, 0.6};
+  for (int e = 0; e < 3; e++) {
+    const double eps = epss[e];
+    struct wl_solitary sw;
+    enum wl_status st = wl_waves_solitary_init(&sw, WL_SOLITARY_EXACT, h, eps * h, G, &err);
+    CHECK_TRUE(st == WL_OK, "exact field: the wave tabulates");
+    if (st) {
+      printf("  %s\n", err.msg);
+      continue;
+    }
+    const double c = wl_waves_solitary_celerity(&sw), H = sw.H;
+    CHECK_REL(wl_waves_solitary_eta(&sw, 0.0), H, 1e-10, "exact field: crest height H (Newton to 1e-13 h)");
+    /* the integrals: REFERENCES 3.4's table at 0.1 and 0.3 (6 decimals),
+     * the conformal solution's own (exact.c) at 0.6 */
+    double M, I, KE, PE;
+    field_integrals(&sw, &M, &I, &KE, &PE);
+    printf("  exact field eps %.1f: M %.7f I %.7f KE %.8f PE %.8f\n", eps, M, I, KE, PE);
+    const struct table_row *r = e == 0 ? &TABLE[1] : e == 1 ? &TABLE[3] : NULL;
+    if (r) {
+      CHECK_ABS(c / sqrt(G * h), r->F_exact, TABLE_HALF_ULP8 + 1e-10, "exact field: celerity F");
+      CHECK_ABS(M, r->M, TABLE_HALF_ULP6 + 2e-7, "exact field: quadrature of eta, REFERENCES 3.4 M");
+      CHECK_ABS(I, r->I, TABLE_HALF_ULP6 + 2e-7, "exact field: quadrature of u, REFERENCES 3.4 I");
+      CHECK_ABS(KE, r->KE, TABLE_HALF_ULP8 + 2e-7, "exact field: quadrature of u^2 + w^2, KE");
+      CHECK_ABS(PE, r->PE, TABLE_HALF_ULP8 + 2e-7, "exact field: quadrature of eta^2, PE");
+    } else {
+      CHECK_REL(M, sw.exact.mass, 1e-6, "exact field H/h 0.6: M against the conformal solution");
+      CHECK_REL(I, sw.exact.impulse, 1e-5, "exact field H/h 0.6: I against the conformal solution");
+      CHECK_REL(KE, sw.exact.kinetic, 1e-5, "exact field H/h 0.6: KE against the conformal solution");
+    }
+    /* a steady irrotational wave, pointwise over the wave: mass flux c eta
+     * through every section, Bernoulli (p = 0) and the kinematic condition
+     * at the surface, w = 0 at the bed, no curl inside */
+    double flux = 0, bern = 0, kin = 0, bed = 0, curl = 0, slope_max = 0;
+    for (int i = -200; i <= 200; i++) {
+      const double X = i * 0.015 * h, eta = wl_waves_solitary_eta(&sw, X), d = h + eta;
+      double s = 0, u, w;
+      for (int j = 0; j <= 200; j++) {
+        wl_waves_solitary_velocity(&sw, X, d * j / 200, &u, &w);
+        s += (j == 0 || j == 200 ? 1 : (j % 2 ? 4 : 2)) * u;
+      }
+      flux = fmax(flux, fabs(s * d / 600 - c * eta) / (c * H));
+      wl_waves_solitary_velocity(&sw, X, d, &u, &w);
+      bern = fmax(bern, fabs(0.5 * ((u - c) * (u - c) + w * w) + G * eta - 0.5 * c * c) / (c * c));
+      const double dx = 1e-4 * h;
+      const double eta_x = (wl_waves_solitary_eta(&sw, X + dx) - wl_waves_solitary_eta(&sw, X - dx)) / (2 * dx);
+      slope_max = fmax(slope_max, fabs(eta_x));
+      kin = fmax(kin, fabs(w - (u - c) * eta_x) / c);
+      wl_waves_solitary_velocity(&sw, X, 0.0, &u, &w);
+      bed = fmax(bed, fabs(w) / c);
+      double u1, u2, w1, w2, t;
+      wl_waves_solitary_velocity(&sw, X, 0.5 * d + dx, &u1, &t);
+      wl_waves_solitary_velocity(&sw, X, 0.5 * d - dx, &u2, &t);
+      wl_waves_solitary_velocity(&sw, X + dx, 0.5 * d, &t, &w1);
+      wl_waves_solitary_velocity(&sw, X - dx, 0.5 * d, &t, &w2);
+      curl = fmax(curl, fabs((u1 - u2) - (w1 - w2)) / (2 * dx) / (c / h));
+    }
+    printf("  exact field eps %.1f: flux %.1e, Bernoulli %.1e, kinematic %.1e of c max|eta_x| "
+           "%.1e, bed %.1e, curl %.1e\n", eps, flux, bern, kin / slope_max, slope_max, bed, curl);
+    /* bounds: the table's interpolation error, measured 2e-6 (flux), 2e-7
+     * (Bernoulli), 1.5e-5 (curl) at H/h 0.6 and less below; allowed 10x */
+    CHECK_TRUE(flux < 2e-5, "exact field: mass flux int u dz = c eta");
+    CHECK_TRUE(bern < 2e-6, "exact field: Bernoulli at the surface (p = 0)");
+    CHECK_TRUE(kin < 1e-3 * slope_max, "exact field: kinematic surface condition");
+    CHECK_TRUE(bed < 1e-12, "exact field: w = 0 at the bed");
+    CHECK_TRUE(curl < 2e-4, "exact field: irrotational");
+    /* Grimshaw's third order within O(eps^4) h of the exact profile
+     * (REFERENCES 3.2: ~0.18 eps^4 h) */
+    struct wl_solitary gr;
+    wl_waves_solitary_init(&gr, WL_SOLITARY_GRIMSHAW, h, eps * h, G, &err);
+    double dev = 0;
+    for (int i = 0; i <= 100; i++) {
+      const double X = i * 0.05 * h;
+      dev = fmax(dev, fabs(wl_waves_solitary_eta(&sw, X) - wl_waves_solitary_eta(&gr, X)));
+    }
+    printf("  exact vs Grimshaw eps %.1f: max |eta difference| = %.3f eps^4 h\n", eps,
+           dev / (h * pow(eps, 4)));
+    CHECK_TRUE(dev < 0.5 * pow(eps, 4) * h, "exact field: Grimshaw's profile within O(eps^4) h");
+  }
+}
+
 /* ---- Longuet-Higgins (1974), seed 001 -------------------------------------- */
 static void test_lh74_and_seawall(void) {
   struct wl_error err;
@@ -517,6 +637,7 @@ int main(void) {
   test_boussinesq_closed_forms();
   test_grimshaw_integrals_vs_exact();
   test_exact_solver();
+  test_exact_field();
   test_lh74_and_seawall();
   test_energy_inversion();
   test_goring();

@@ -45,7 +45,7 @@ struct wl_scenario_value {
 };
 
 /* Choices of the enumerated keys; the order matches the schema's names. */
-enum wl_solitary_theory_choice { WL_THEORY_GRIMSHAW, WL_THEORY_BOUSSINESQ };
+enum wl_solitary_theory_choice { WL_THEORY_GRIMSHAW, WL_THEORY_BOUSSINESQ, WL_THEORY_EXACT };
 enum wl_generation_choice { WL_GENERATION_PADDLE, WL_GENERATION_INITIAL };
 enum wl_shape_choice { WL_SHAPE_QUADRATIC, WL_SHAPE_QUADRATIC_LIP, WL_SHAPE_QUARTIC_LIP };
 enum wl_lip_form_choice { WL_LIP_AUTO, WL_LIP_PLANE, WL_LIP_AXISYMMETRIC };

@@ -87,6 +87,20 @@
  *  - Which theory for what: Grimshaw for eps <= 0.5 (within 0.5 % of the exact
  *    energy up to 0.2, 1.5 % at 0.3, 7 % at 0.5); the exact solver
  *    (wl_waves_exact_solitary, ~0.1-1 s) wherever accuracy matters above that.
+ *    A Grimshaw wave started in an Euler solver is not steady there: it
+ *    sheds a tail and settles to a lower crest (the SPH flume's H/h = 0.6
+ *    wave), and its momentum is 1.2 % short of the exact wave's 2I at H/h
+ *    0.3; WL_SOLITARY_EXACT gives the flume the exact wave instead.
+ *
+ *  - The exact wave's field (WL_SOLITARY_EXACT), for initial conditions:
+ *    the conformal map of the strip -1 <= sigma <= 0 (zeta = xi + i sigma,
+ *    bed sigma = -1) onto the fluid is z(zeta) = zeta + c_0 (zeta + i) +
+ *    sum_{k != 0} -i c_k e^{-k} e^{i k zeta} / sinh k, c_k the Fourier
+ *    coefficients of the Babenko solution eta(xi) (so Im z = eta on sigma =
+ *    0 and -1 on the bed); in the frame of the crest the flow is uniform in
+ *    the strip, complex potential -F zeta, so u - c - i w = -F / z'(zeta)
+ *    (Dutykh & Clamond 2014, section 2). Each tabulated point is found by
+ *    Newton's method on z(zeta) = x + i y.
  *
  *  - Inversion energy -> height on the integrated Grimshaw energy (GSL Brent).
  *    Grimshaw's E(eps) increases monotonically up to eps = 0.78 (0.953 rho g
@@ -144,29 +158,7 @@
 enum wl_solitary_theory {
   WL_SOLITARY_BOUSSINESQ, /* first order (KdV): REFERENCES 3.1 */
   WL_SOLITARY_GRIMSHAW,   /* third order: Grimshaw 1971, seed 003 eqs 21-24 */
-};
-
-/* A solitary wave: inputs and derived constants. Filled by
- * wl_waves_solitary_init; read-only afterwards. */
-struct wl_solitary {
-  enum wl_solitary_theory theory;
-  double h;       /* still-water depth [m] */
-  double H;       /* wave height above still water [m] */
-  double g;       /* gravity [m/s^2] */
-  double eps;     /* H/h [-] */
-  double K;       /* decay rate [1/m]: argument of sech is K X. Boussinesq
-                     sqrt(3H/(4h^3)); Grimshaw alpha/h (eq 22) */
-  double c;       /* celerity [m/s]: Boussinesq sqrt(g(h+H)); Grimshaw eq 23 */
-  double sqrt_gh; /* sqrt(g h) [m/s] */
-};
-
-/* Integral properties per unit crest width. */
-struct wl_wave_integrals {
-  double mass;      /* M = rho int eta dx [kg/m] */
-  double momentum;  /* I = rho int int u dz dx [kg/s] (kg m/s per m of crest) */
-  double kinetic;   /* T = rho/2 int int (u^2 + w^2) dz dx [J/m] */
-  double potential; /* V = rho g/2 int eta^2 dx [J/m] */
-  double energy;    /* E = T + V [J/m] */
+  WL_SOLITARY_EXACT,      /* the exact (Euler) wave: Clamond & Dutykh 2013, REFERENCES 3.4 */
 };
 
 /* Exact (Euler) solitary wave, dimensionless with rho = g = h = 1:
@@ -186,6 +178,48 @@ struct wl_solitary_exact {
                        wave, larger means more modes are needed [-] */
   int n_iter;       /* Petviashvili iterations used */
 };
+
+/* The exact wave's field is tabulated on WL_WAVES_EXACT_NX abscissae from
+ * the crest (X >= 0; the wave is symmetric) out to where eta has fallen
+ * below 1e-9 H, and WL_WAVES_EXACT_NZ levels from the bed to the surface;
+ * read back by 4-point Lagrange interpolation in both (error ~1e-7 of the
+ * crest values, measured in test_waves against the conformal solution). */
+enum { WL_WAVES_EXACT_NX = 384, WL_WAVES_EXACT_NZ = 13 };
+
+/* A solitary wave: inputs and derived constants. Filled by
+ * wl_waves_solitary_init; read-only afterwards. */
+struct wl_solitary {
+  enum wl_solitary_theory theory;
+  double h;       /* still-water depth [m] */
+  double H;       /* wave height above still water [m] */
+  double g;       /* gravity [m/s^2] */
+  double eps;     /* H/h [-] */
+  double K;       /* decay rate [1/m]: argument of sech is K X. Boussinesq
+                     sqrt(3H/(4h^3)); Grimshaw alpha/h (eq 22); exact beta/(2h),
+                     the far-field decay eta ~ e^{-2 K |X|} */
+  double c;       /* celerity [m/s]: Boussinesq sqrt(g(h+H)); Grimshaw eq 23;
+                     exact F sqrt(g h) */
+  double sqrt_gh; /* sqrt(g h) [m/s] */
+  /* WL_SOLITARY_EXACT only (zero otherwise), dimensionless (lengths / h,
+   * speeds / sqrt(g h)): the solution's integrals, and its field at X_i =
+   * i exact_dX: the surface eta_i, and u (even in X) and w (odd in X) at
+   * the heights z = s_j (1 + eta_i) above the bed, s_j = j / (NZ - 1). */
+  struct wl_solitary_exact exact;
+  double exact_dX;
+  double exact_eta[WL_WAVES_EXACT_NX];
+  double exact_u[WL_WAVES_EXACT_NX][WL_WAVES_EXACT_NZ];
+  double exact_w[WL_WAVES_EXACT_NX][WL_WAVES_EXACT_NZ];
+};
+
+/* Integral properties per unit crest width. */
+struct wl_wave_integrals {
+  double mass;      /* M = rho int eta dx [kg/m] */
+  double momentum;  /* I = rho int int u dz dx [kg/s] (kg m/s per m of crest) */
+  double kinetic;   /* T = rho/2 int int (u^2 + w^2) dz dx [J/m] */
+  double potential; /* V = rho g/2 int eta^2 dx [J/m] */
+  double energy;    /* E = T + V [J/m] */
+};
+
 
 /* Goring (1978) piston paddle for a first-order solitary wave. Filled by
  * wl_waves_goring_init; read-only afterwards. */
@@ -224,6 +258,10 @@ void wl_waves_solitary_velocity(const struct wl_solitary *sw, double X, double z
 
 /* Celerity c [m/s]. */
 double wl_waves_solitary_celerity(const struct wl_solitary *sw);
+
+/* The theory's name ("Grimshaw third order") and, with source = 1, where its
+ * profile and celerity come from, for reports; "?" for an unknown value. */
+const char *wl_waves_solitary_theory_text(enum wl_solitary_theory theory, int source);
 
 /* Integral properties of *sw per unit crest width for water density rho
  * [kg/m^3], by adaptive GSL quadrature (outer over x on [0, inf) with the

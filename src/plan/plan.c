@@ -172,9 +172,10 @@ static enum wl_status plan_solitary(const struct wl_scenario *s, struct wl_plan 
                                     struct wl_error *err) {
   struct wl_plan_solitary *ps = &p->solitary;
   ps->present = 1;
-  enum wl_solitary_theory theory = s->solitary.theory.choice == WL_THEORY_BOUSSINESQ
-                                       ? WL_SOLITARY_BOUSSINESQ
-                                       : WL_SOLITARY_GRIMSHAW;
+  const enum wl_solitary_theory theory =
+      s->solitary.theory.choice == WL_THEORY_BOUSSINESQ ? WL_SOLITARY_BOUSSINESQ
+      : s->solitary.theory.choice == WL_THEORY_EXACT    ? WL_SOLITARY_EXACT
+                                                        : WL_SOLITARY_GRIMSHAW;
   enum wl_status st =
       wl_waves_solitary_init(&ps->wave, theory, p->h, s->solitary.height.q.si, p->g, err);
   if (st) return st;
@@ -237,7 +238,7 @@ static enum wl_status plan_solitary(const struct wl_scenario *s, struct wl_plan 
       ps->quiet_until = x_front > ps->crest_x0 ? travel_time(s, p->h, H, c, ps->crest_x0, x_front) : 0.0;
     ps->quiet_until = fmin(ps->quiet_until, ps->arrival_time);
   }
-  if (ps->wave.eps > WL_WAVES_EPS_GRIMSHAW_ACCURATE) {
+  if (ps->wave.eps > WL_WAVES_EPS_GRIMSHAW_ACCURATE && theory != WL_SOLITARY_EXACT) {
     /* Beyond its accurate range, say by how much the third-order energy
      * misses the exact solitary wave's (Clamond & Dutykh method). */
     struct wl_solitary_exact ex;
@@ -249,7 +250,8 @@ static enum wl_status plan_solitary(const struct wl_scenario *s, struct wl_plan 
     if (wl_waves_exact_solitary(ps->wave.eps, 4096, &ex, &xerr) == WL_OK) {
       wl_waves_exact_integrals(&ex, p->rho, p->g, p->h, &exi);
       note(p, "H/h = %.3g is beyond Grimshaw's accurate range (0.5): its energy %.4g J/m is "
-              "%.1f %% off the exact solitary wave's %.4g J/m",
+              "%.1f %% off the exact solitary wave's %.4g J/m (loads.solitary.theory: exact "
+              "starts the exact wave)",
            ps->wave.eps, ps->integrated.energy,
            100.0 * (ps->integrated.energy - exi.energy) / exi.energy, exi.energy);
     }
@@ -737,9 +739,8 @@ void wl_plan_write(const struct wl_plan *p, FILE *out) {
   if (p->solitary.present) {
     const struct wl_plan_solitary *ps = &p->solitary;
     const struct wl_wave_integrals *wi = &ps->integrated, *fo = &ps->first_order;
-    fprintf(out, "  solitary wave (%s)\n",
-            ps->wave.theory == WL_SOLITARY_GRIMSHAW ? "Grimshaw third order, seed 003 eqs 21-24"
-                                                     : "first order (Boussinesq)");
+    fprintf(out, "  solitary wave (%s: %s)\n", wl_waves_solitary_theory_text(ps->wave.theory, 0),
+            wl_waves_solitary_theory_text(ps->wave.theory, 1));
     fprintf(out, "    %-34s %12.5g m      (H/h = %.4g)\n", "height H", ps->wave.H,
             ps->wave.H / p->h);
     fprintf(out, "    %-34s %12.5g m/s    (sqrt(g h) = %.4g m/s)\n", "celerity c",

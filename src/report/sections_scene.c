@@ -229,13 +229,15 @@ static enum wl_status initial_conditions(struct wl_report_ctx *c, struct wl_erro
   ic_row(t, "still-water depth h", p->h, NULL, "m", "scenario water.depth");
   if (p->solitary.present) {
     const struct wl_plan_solitary *ps = &p->solitary;
-    int grim = ps->wave.theory == WL_SOLITARY_GRIMSHAW;
-    ic_row(t, "solitary wave: theory", 0, grim ? "Grimshaw, 3rd order" : "Boussinesq, 1st order",
-           NULL, grim ? "Grimshaw (1971); seed 003 eqs 21-24" : "KdV first order");
+    const int grim = ps->wave.theory == WL_SOLITARY_GRIMSHAW;
+    ic_row(t, "solitary wave: theory", 0, wl_waves_solitary_theory_text(ps->wave.theory, 0), NULL,
+           wl_waves_solitary_theory_text(ps->wave.theory, 1));
     ic_row(t, "  height H", ps->wave.H, NULL, "m", "scenario loads.solitary.height");
     ic_row(t, "  H/h", ps->wave.H / p->h, NULL, "", "valid to 0.78 (3rd order to ~0.5)");
     ic_row(t, "  celerity c", wl_waves_solitary_celerity(&ps->wave), NULL, "m/s",
-           grim ? "seed 003 eq 23" : "sqrt(g (h + H))");
+           grim ? "seed 003 eq 23"
+           : ps->wave.theory == WL_SOLITARY_EXACT ? "exact: F sqrt(g h)"
+                                                  : "sqrt(g (h + H))");
     ic_row(t, "  energy (integrated)", ps->integrated.energy, NULL, "J/m",
            "quadrature of the wave's field");
     ic_row(t, "  energy, first order", ps->first_order.energy, NULL, "J/m", "KdV closed form");

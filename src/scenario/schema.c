@@ -15,7 +15,7 @@
 #define NONE NAN
 #define NO_FLAG ((size_t)-1)
 
-static const char *const theory_choices[] = {"grimshaw", "boussinesq", NULL};
+static const char *const theory_choices[] = {"grimshaw", "boussinesq", "exact", NULL};
 static const char *const generation_choices[] = {"paddle", "initial", NULL};
 static const char *const shape_choices[] = {"quadratic", "quadratic-lip", "quartic-lip", NULL};
 static const char *const lip_choices[] = {"auto", "plane", "axisymmetric", NULL};

@@ -117,6 +117,12 @@ enum wl_status wl_waves_solitary_integrals(const struct wl_solitary *sw, double 
     return wl_error_set(err, WL_EINPUT,
                         "solitary wave integrals: the wave was not initialised "
                         "(call wl_waves_solitary_init first)");
+  if (sw->theory == WL_SOLITARY_EXACT) {
+    /* the conformal solution's own integrals (exact.c), not a quadrature of
+     * its interpolated table; test_waves compares the two */
+    wl_waves_exact_integrals(&sw->exact, rho, sw->g, sw->h, out);
+    return WL_OK;
+  }
   gsl_integration_workspace *wx = gsl_integration_workspace_alloc(QUAD_LIMIT);
   gsl_integration_workspace *wz = gsl_integration_workspace_alloc(QUAD_LIMIT);
   enum wl_status st;

@@ -1,8 +1,9 @@
-/* solitary.c: first-order (Boussinesq/KdV) and third-order (Grimshaw 1971,
- * seed 003 eqs 21-24) solitary waves: constructor, surface, velocity,
- * celerity. See include/wallload/waves.h for the sources and for why z is
+/* solitary.c: first-order (Boussinesq/KdV), third-order (Grimshaw 1971,
+ * seed 003 eqs 21-24) and exact (tabulated, exact.c) solitary waves:
+ * constructor, surface, velocity, celerity. See include/wallload/waves.h for the sources and for why z is
  * measured up from the bed. */
 #include "wallload/waves.h"
+#include "internal.h"
 
 #include <math.h>
 #include <string.h>
@@ -37,10 +38,11 @@ static enum wl_status check_height(double h, double H, double g, const char *wha
 enum wl_status wl_waves_solitary_init(struct wl_solitary *sw, enum wl_solitary_theory theory,
                                       double h, double H, double g, struct wl_error *err) {
   memset(sw, 0, sizeof *sw);
-  if (theory != WL_SOLITARY_BOUSSINESQ && theory != WL_SOLITARY_GRIMSHAW)
+  if (theory != WL_SOLITARY_BOUSSINESQ && theory != WL_SOLITARY_GRIMSHAW &&
+      theory != WL_SOLITARY_EXACT)
     return wl_error_set(err, WL_EINPUT,
                         "solitary wave: theory %d; valid: WL_SOLITARY_BOUSSINESQ (first "
-                        "order) or WL_SOLITARY_GRIMSHAW (third order)",
+                        "order), WL_SOLITARY_GRIMSHAW (third order) or WL_SOLITARY_EXACT",
                         (int)theory);
   enum wl_status st = check_height(h, H, g, "solitary wave", err);
   if (st != WL_OK) return st;
@@ -55,6 +57,14 @@ enum wl_status wl_waves_solitary_init(struct wl_solitary *sw, enum wl_solitary_t
   if (theory == WL_SOLITARY_BOUSSINESQ) {
     sw->K = sqrt(3.0 * H / (4.0 * h * h * h)); /* REFERENCES 3.1 */
     sw->c = sqrt(g * (h + H));
+  } else if (theory == WL_SOLITARY_EXACT) {
+    st = wl_waves__exact_tabulate(sw, err);
+    if (st) {
+      memset(sw, 0, sizeof *sw);
+      return st;
+    }
+    sw->K = 0.5 * sw->exact.beta / h;
+    sw->c = sw->sqrt_gh * sw->exact.F;
   } else {
     /* seed 003 eq 22: alpha = sqrt(3 eps/4)(1 - 5/8 eps + 71/128 eps^2), argument alpha X/h */
     double alpha = sqrt(0.75 * eps) * (1.0 - 0.625 * eps + (71.0 / 128.0) * eps * eps);
@@ -67,6 +77,16 @@ enum wl_status wl_waves_solitary_init(struct wl_solitary *sw, enum wl_solitary_t
 
 double wl_waves_solitary_celerity(const struct wl_solitary *sw) { return sw->c; }
 
+const char *wl_waves_solitary_theory_text(enum wl_solitary_theory theory, int source) {
+  switch (theory) {
+  case WL_SOLITARY_BOUSSINESQ: return source ? "KdV first order, c = sqrt(g (h + H))" : "Boussinesq first order";
+  case WL_SOLITARY_GRIMSHAW: return source ? "Grimshaw (1971); seed 003 eqs 21-24" : "Grimshaw third order";
+  case WL_SOLITARY_EXACT:
+    return source ? "Euler equations, Clamond & Dutykh (2013) conformal solution" : "exact (Euler)";
+  }
+  return "?";
+}
+
 /* sech^2 and tanh of K X, safe for any X (cosh overflows to inf, 1/inf = 0). */
 static void sech2_tanh(double KX, double *s2, double *q) {
   double ch = cosh(KX);
@@ -74,7 +94,77 @@ static void sech2_tanh(double KX, double *s2, double *q) {
   *q = tanh(KX);
 }
 
+/* 4-point Lagrange weights at fractional position t in [0, 1] between the
+ * second and third of four equally spaced nodes. */
+static void lagrange4(double t, double *w) {
+  w[0] = -t * (t - 1) * (t - 2) / 6;
+  w[1] = (t + 1) * (t - 1) * (t - 2) / 2;
+  w[2] = -(t + 1) * t * (t - 2) / 2;
+  w[3] = (t + 1) * t * (t - 1) / 6;
+}
+
+/* The four abscissa nodes of the exact wave's table around |X| (in h) and
+ * their weights; nodes before the crest mirror (the table holds X >= 0) and
+ * come back with parity[] = -1 where the quantity is odd. Returns 0 beyond
+ * the table (the wave has decayed to nothing there). */
+static int exact_nodes(const struct wl_solitary *sw, double Xh, int *node, double *wt,
+                       double *parity) {
+  const double a = fabs(Xh) / sw->exact_dX;
+  if (!(a < WL_WAVES_EXACT_NX - 2)) return 0;
+  const int i = (int)a;
+  lagrange4(a - i, wt);
+  for (int r = 0; r < 4; r++) {
+    const int k = i - 1 + r;
+    node[r] = k < 0 ? -k : k;
+    parity[r] = k < 0 ? -1.0 : 1.0;
+  }
+  return 1;
+}
+
+/* Weights of the 4 table levels around s in [0, 1] (clamped), one-sided at
+ * the bed and the surface; *j0 the first level. */
+static void exact_levels(double s, int *j0, double *wt) {
+  const double b = (s < 0 ? 0 : s > 1 ? 1 : s) * (WL_WAVES_EXACT_NZ - 1);
+  int j = (int)b - 1;
+  if (j < 0) j = 0;
+  if (j > WL_WAVES_EXACT_NZ - 4) j = WL_WAVES_EXACT_NZ - 4;
+  lagrange4(b - (j + 1), wt);
+  *j0 = j;
+}
+
+static double exact_eta(const struct wl_solitary *sw, double X) {
+  int node[4];
+  double wt[4], par[4];
+  if (!exact_nodes(sw, X / sw->h, node, wt, par)) return 0.0;
+  double e = 0;
+  for (int r = 0; r < 4; r++) e += wt[r] * sw->exact_eta[node[r]];
+  return sw->h * e;
+}
+
+/* u and w of the tabulated exact wave; z above the bed, clamped to the
+ * water column (the table holds the bed to the surface). */
+static void exact_velocity(const struct wl_solitary *sw, double X, double z, double *u,
+                           double *w) {
+  int node[4], j0;
+  double wt[4], par[4], wz[4];
+  *u = *w = 0.0;
+  if (!exact_nodes(sw, X / sw->h, node, wt, par)) return;
+  const double sign = X < 0 ? -1.0 : 1.0;
+  double eta = 0;
+  for (int r = 0; r < 4; r++) eta += wt[r] * sw->exact_eta[node[r]];
+  exact_levels(z / (sw->h * (1.0 + eta)), &j0, wz);
+  double uu = 0, ww = 0;
+  for (int r = 0; r < 4; r++)
+    for (int q = 0; q < 4; q++) {
+      uu += wt[r] * wz[q] * sw->exact_u[node[r]][j0 + q];
+      ww += wt[r] * wz[q] * par[r] * sw->exact_w[node[r]][j0 + q];
+    }
+  *u = sw->sqrt_gh * uu;
+  *w = sw->sqrt_gh * sign * ww;
+}
+
 double wl_waves_solitary_eta(const struct wl_solitary *sw, double X) {
+  if (sw->theory == WL_SOLITARY_EXACT) return exact_eta(sw, X);
   double s2, q;
   sech2_tanh(sw->K * X, &s2, &q);
   if (sw->theory == WL_SOLITARY_BOUSSINESQ) return sw->H * s2;
@@ -86,6 +176,13 @@ double wl_waves_solitary_eta(const struct wl_solitary *sw, double X) {
 
 void wl_waves_solitary_velocity(const struct wl_solitary *sw, double X, double z, double *u,
                                 double *w) {
+  if (sw->theory == WL_SOLITARY_EXACT) {
+    double uu, ww;
+    exact_velocity(sw, X, z, &uu, &ww);
+    if (u) *u = uu;
+    if (w) *w = ww;
+    return;
+  }
   double s2, q;
   sech2_tanh(sw->K * X, &s2, &q);
   double uu, ww;
