@@ -256,7 +256,7 @@ int wl_sph_probe_interp(const struct wl_sph_probe *pr, const double *x, double *
 /* Free-surface elevation [m] on the vertical line at (x, y) (y ignored in
  * 2D), scanning z upward from z_lo to z_hi in steps of dz [m] (<= 0:
  * dp/10, DualSPHysics' default): the top of the highest stretch where S is
- * at least coefmasslimit (0.4 in 2D, 0.5 in 3D, see sph/probe.h), linearly
+ * at least WL_SPH_SURFACE_SHEPARD (0.5, see sph/probe.h), linearly
  * interpolated between samples. z_lo when the line is dry (S never above
  * the limit); z_hi when still wet there. */
 double wl_sph_probe_elevation(const struct wl_sph_probe *pr, double x, double y, double z_lo,

@@ -135,7 +135,7 @@ int wl_sph_probe_interp(const struct wl_sph_probe *pr, const double *x, double *
 double wl_sph_probe_elevation(const struct wl_sph_probe *pr, double x, double y, double z_lo,
                               double z_hi, double dz) {
   const int dim = pr->dim;
-  const double limit = dim == 2 ? 0.4 : 0.5; /* DualSPHysics coefmasslimit */
+  const double limit = WL_SPH_SURFACE_SHEPARD;
   if (!(dz > 0)) dz = 0.1 * pr->k.dp;
   double pt[WL_SPH_DIM_MAX] = {x, y, 0};
   const int az = dim - 1;

@@ -10,6 +10,7 @@
 
 #include "internal.h"
 #include "wallload/sph.h"
+#include "wallload/sph/probe.h"
 
 void wl_val_table_clear(struct wl_val_table *t) {
   free(t->x);
@@ -233,8 +234,7 @@ double wl_val_window_max(const double *t, const double *y, int n, int stride, do
 
 double wl_val_wetted_length(const struct wl_sph_probe *pr, int dim, double x, double y,
                             double z_hi, double dp) {
-  /* sph/probe.h: coefmasslimit 0.4 in 2D, 0.5 in 3D (REFERENCES.md 6) */
-  const double lim = dim == 3 ? 0.5 : 0.4, dz = 0.1 * dp;
+  const double lim = WL_SPH_SURFACE_SHEPARD, dz = 0.1 * dp; /* sph/probe.h */
   double q[3] = {x, dim == 3 ? y : 0.0, 0.0};
   const int iz = dim - 1;
   double len = 0, z = 0.0;

@@ -4,18 +4,22 @@
  *   S(x) = sum_j V_j W(x - x_j),  V_j = m_j / rho_j   (Shepard sum, ~1 inside)
  *   f(x) = sum_j V_j f_j W(x - x_j) / S(x)           (Shepard-normalised field)
  *
- * Free surface (DualSPHysics gauges "SWL" and AWAS): along a vertical line
- * the surface is where m0 S(x), which DualSPHysics calls the interpolated
- * mass, falls below coefmasslimit * m0, m0 = rho0 dp^dim the particle mass;
- * coefmasslimit = 0.4 in 2D and 0.5 in 3D (REFERENCES.md section 6:
- * "0.4 dp^2 rho0 in 2D, 0.5 dp^3 rho0 in 3D"). So the criterion is
- * S(x) < 0.4 (2D) or 0.5 (3D): a flat, settled surface gives S = 0.5 at
- * about the height where the fluid's volume ends. */
+ * Free surface: along a vertical line the surface is where S(x) falls
+ * below WL_SPH_SURFACE_SHEPARD = 0.5, in 2D and 3D. A settled half-space
+ * lattice gives S = 0.5 at the height where the fluid's volume ends (to
+ * 0.002 dp at h = 1.7 dp, computed for the square lattice), so a gauge
+ * reads the depth the fluid's mass fills. DualSPHysics' gauges use 0.4 in
+ * 2D (its coefmasslimit, REFERENCES.md section 6, an empirical match of 2D
+ * to 3D runs): at h = 1.7 dp that reads a flat surface 0.22 dp high, which
+ * made validate's solitary crests (H = 2-4 dp) read 6-40 % high. */
 #ifndef WALLLOAD_SPH_PROBE_H
 #define WALLLOAD_SPH_PROBE_H
 
 #include "wallload/sph/cells.h"
 #include "wallload/sph/kernel.h"
+
+/* The Shepard sum at which a vertical line leaves the fluid (above). */
+#define WL_SPH_SURFACE_SHEPARD 0.5
 
 struct wl_sph_point_sums {
   double s;                 /* sum V_j W [-] */
