@@ -55,7 +55,7 @@ static void case_end(void *user, const struct wl_sweep *sw, int i) {
 }
 
 /* One line per case on stdout: the loads to quote (kN/m, kN s/m). */
-static void print_rows(const struct wl_sweep *sw, const char *dir) {
+static void print_rows(const struct wl_sweep *sw, const char *dir, int pdf) {
   static const char *const load_name[WL_SWEEP_N_LOADS] = {"solitary", "explosion"};
   printf("\n%4s  %-36s %-11s", "case", "id", "status");
   for (int l = 0; l < WL_SWEEP_N_LOADS; l++)
@@ -76,11 +76,13 @@ static void print_rows(const struct wl_sweep *sw, const char *dir) {
       printf(" %18.5g %22.5g", have ? ld->peak_force / 1e3 : NAN,
              have ? ld->impulse_positive / 1e3 : NAN);
     }
-    printf("  %8.1fs%s\n", r->state == WL_SWEEP_PENDING ? NAN : r->runtime_s,
-           r->state == WL_SWEEP_REUSED ? " (reused)" : "");
+    if (r->state == WL_SWEEP_PENDING)
+      printf("  %9s\n", "-");
+    else
+      printf("  %8.1fs%s\n", r->runtime_s, r->state == WL_SWEEP_REUSED ? " (reused)" : "");
   }
-  printf("\nresults in %s/ (sweep.csv, sweep.h5, sweep.pdf; each case's results in cases/)\n",
-         dir);
+  printf("\nresults in %s/ (sweep.csv, sweep.h5%s; each case's results in cases/)\n", dir,
+         pdf ? ", sweep.pdf" : "; sweep.pdf once every case has run");
 }
 
 static enum wl_status sweep_stoppable(void *user, volatile sig_atomic_t *stop,
@@ -110,7 +112,7 @@ static enum wl_status sweep_stoppable(void *user, volatile sig_atomic_t *stop,
     }
     struct wl_sweep_events ev = {case_begin, case_end, &view};
     st = wl_sweep_run(&sw, dir, &opts, &ev, err);
-    if (st != WL_EINPUT && sw.rows) print_rows(&sw, dir);
+    if (st != WL_EINPUT && sw.rows) print_rows(&sw, dir, st != WL_EINTERRUPTED);
   }
   wl_sweep_clear(&sw);
   wl_scenario_clear(&s);

@@ -377,11 +377,11 @@ static enum wl_status sweep_locked(struct wl_sweep *sw, const char *dir,
   }
   if (stop)
     return wl_error_set(err, WL_EINTERRUPTED,
-                        "interrupted by %s: %d of %d cases done (%s; %d read back from an earlier "
-                        "run); %s/sweep.csv and sweep.h5 hold them; the same command continues "
-                        "with the others",
+                        "interrupted by %s: %d of %d cases done (%s%s; %d of them read back from an "
+                        "earlier run); %s/sweep.csv and sweep.h5 hold them; the same command "
+                        "continues with the others",
                         wl_assess_stop_signal_name(stop), n_done, sw->n_cases,
-                        n_done ? done : "none", n_reused, dir);
+                        n_done == 1 ? "case " : "cases ", n_done ? done : "none", n_reused, dir);
   st = sweep_write_pdf(sw, dir, err);
   if (st) return st;
   if (n_bad) {
