@@ -5,7 +5,9 @@
  * explosion from the wall, water depth, solitary-wave height. Each
  * combination is one case: the scenario's own text with the swept keys'
  * values replaced in place (loads.explosion.charge or .energy, .at =
- * wall.x - standoff, water.depth, loads.solitary.height) and the sweep
+ * wall.x - standoff in m to 12 significant digits, water.depth,
+ * loads.solitary.height; a range's values are also written to 12
+ * significant digits) and the sweep
  * section commented out, line for line, so that the case's text is a
  * scenario `wallload assess` runs alone with the same results (bit for bit
  * on one backend), and its error messages point at the lines of the sweep's

@@ -225,7 +225,8 @@ enum wl_status wl_cli_sweep_price(const struct wl_sweep *sw, const struct wl_ass
             "GPU runtime (estimate) %.6g s\n",
             total.cpu_seconds, total.cpu_seconds / 3600.0, total.gpu_seconds);
   /* the machine and the budget judge the sweep as one run */
-  if (!st) st = judge_run(first, first_plan, &total, opts, budget_s, force_large, out, err);
+  if (!st && (st = judge_run(first, first_plan, &total, opts, budget_s, force_large, out, err)))
+    wl_error_prefix(err, "the sweep's %d cases, one after the other: ", sw->n_cases);
   if (first) wl_scenario_clear(first);
   free(cs), free(first), free(plan), free(first_plan);
   return st;

@@ -378,9 +378,22 @@ const char *wl_scenario_sweep_param_name(enum wl_sweep_param p) {
 /* The shortest decimal text that reads back as v (a range's generated
  * values are written into each case's scenario as text). */
 static void shortest_text(double v, char *buf, size_t size) {
+  /* 12 significant digits: a generated value's last bits (19.999999999999996
+   * from a log spacing, 12.000000000000002 from 19.2 - 7.2) are noise */
+  char r[40];
+  snprintf(r, sizeof r, "%.12g", v);
+  v = strtod(r, NULL);
   for (int prec = 1; prec <= 17; prec++) {
     snprintf(buf, size, "%.*g", prec, v);
-    if (strtod(buf, NULL) == v) return;
+    if (strtod(buf, NULL) == v) break;
+  }
+  const double a = fabs(v);
+  if (strchr(buf, 'e') && a >= 1e-4 && a < 1e15) { /* 1e+01: written out, 10 */
+    const int decimals = (int)fmax(0.0, 16.0 - floor(log10(a)));
+    for (int d = 0; d <= decimals; d++) {
+      snprintf(buf, size, "%.*f", d, v);
+      if (strtod(buf, NULL) == v) break;
+    }
   }
 }
 
@@ -488,12 +501,13 @@ static enum wl_status parse_sweep(struct ctx *c, struct wl_scenario *s, const ch
     } else if (pv->type == YAML_MAPPING_NODE) {
       st = parse_sweep_range(c, k, ppath, pv, pk, a);
     } else {
+      const char *u = k->dim == WL_DIM_MASS ? "kg" : k->dim == WL_DIM_ENERGY ? "kJ" : "m";
       snprintf(msg, sizeof msg,
-               "found %s; expected a list of values, e.g. [1 kg, 2 kg], or a range, e.g. "
-               "{from: 1 kg, to: 4 kg, count: 4} (%s)",
+               "found %s; expected a list of values, e.g. [1 %s, 2 %s], or a range, e.g. "
+               "{from: 1 %s, to: 4 %s, count: 4} (%s)",
                pv->type == YAML_SCALAR_NODE && pv->data.scalar.length == 0 ? "nothing"
                                                                             : node_kind(pv),
-               k->help);
+               u, u, u, u, k->help);
       return fail_at(c, pv, ppath, msg, NULL);
     }
     if (st) return st;
