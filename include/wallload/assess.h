@@ -209,6 +209,10 @@ struct wl_assess_opts {
                                          SIGTERM, SIGHUP) once one came, else 0; may be NULL */
   wl_assess_progress_fn progress;     /* may be NULL */
   void *user;
+  /* For runs that keep only the loads (`wallload sweep`); neither changes
+   * what is computed. */
+  int no_snapshots;          /* 1: write no particle snapshots */
+  int no_report;             /* 1: render no report.pdf (`wallload report DIR/results.h5` can) */
 };
 
 /* Run all load cases and write the outputs. Returns WL_OK when every case
@@ -222,6 +226,15 @@ enum wl_status wl_assess_run(const struct wl_scenario *s, const struct wl_plan *
                              struct wl_error *err);
 
 void wl_assess_result_clear(struct wl_assess_result *res);
+
+/* Take the writer's lock of directory `dir` (which must exist), as
+ * wl_assess_run does for its output directory: DIR/.wallload.lock, created
+ * exclusively, holds this process's id; `lock` (size bytes) gets its path,
+ * to unlink when done. A lock whose process is gone is taken over, and the
+ * temporary files its killed writer left in dir (*.tmp, *.part) are
+ * removed. Returns WL_OK; WL_EINPUT when a live process holds it (the
+ * message names it); WL_EIO. */
+enum wl_status wl_assess_lock_dir(const char *dir, char *lock, size_t size, struct wl_error *err);
 
 /* How messages name a stop signal: "SIGTERM", "SIGHUP", "the user (SIGINT)". */
 const char *wl_assess_stop_signal_name(int sig);

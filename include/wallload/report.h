@@ -191,4 +191,49 @@ const char *wl_report_section_default_title(enum wl_report_section_type type);
 enum wl_status wl_report_render(const char *results_h5, const char *template_path,
                                 const char *pdf_path, struct wl_error *err);
 
+/* ---- the envelopes of a sweep (`wallload sweep`) ------------------------------- */
+
+enum { WL_REPORT_SWEEP_MAX_PARAMS = 5 };
+
+struct wl_report_sweep_param {
+  const char *name;    /* "charge", "standoff", ... */
+  const char *unit;    /* SI unit of the values ("kg", "m", "J") */
+  const double *value; /* n_cases */
+};
+
+/* One load case's loads per sweep case (NaN: none). */
+struct wl_report_sweep_load {
+  int present;
+  const double *peak_force, *peak_force_boundary; /* [N/m] */
+  const double *impulse_positive;                 /* [N s/m] */
+  const double *peak_moment;                      /* [N m/m] */
+  const double *max_runup;                        /* [m] */
+  const double *uncertainty;                      /* the ladder's, relative; NaN: none */
+};
+
+struct wl_report_sweep {
+  const char *scenario;            /* name */
+  const char *file;                /* the sweep's scenario file */
+  int n_cases;
+  int n_params;
+  struct wl_report_sweep_param params[WL_REPORT_SWEEP_MAX_PARAMS];
+  const char *const *case_id;      /* n_cases */
+  const char *const *status;       /* n_cases: "complete", "unstable", "failed", ... */
+  const char *const *results;      /* n_cases: the case's results.h5, NULL when it has none */
+  struct wl_report_sweep_load load[2]; /* solitary, explosion */
+};
+
+/* Render the envelopes of a sweep to pdf_path: for each swept parameter,
+ * the peak force, positive impulse, peak moment and run-up of every case
+ * against it, with each load case's envelope (the largest over the other
+ * parameters) and the explosion beside the solitary wave; the design
+ * formulae's total forces (the design_formulae section's, evaluated on
+ * each case's results.h5) beside the simulated peak force; and where the
+ * governing load case changes along each parameter. Cases without results
+ * are listed, not drawn. Returns WL_OK, WL_EIO (PDF not writable),
+ * WL_ENOMEM; pdf_path is written as pdf_path.part and renamed when
+ * complete. Nothing prints. */
+enum wl_status wl_report_sweep_render(const struct wl_report_sweep *sw, const char *pdf_path,
+                                      struct wl_error *err);
+
 #endif

@@ -32,6 +32,11 @@ enum {
   WL_SCENARIO_MAX_BYTES = 1 << 20,
   WL_SCENARIO_MAX_DEPTH = 64,
   WL_SCENARIO_MAX_ANCHORS = 256,
+  /* A sweep (the `sweep:` section): values per swept parameter, and cases in
+   * all (their product). 32 values span a parameter finely enough for an
+   * envelope; 4096 cases are days of GPU time. */
+  WL_SCENARIO_MAX_SWEEP_VALUES = 32,
+  WL_SCENARIO_MAX_SWEEP_CASES = 4096,
 };
 
 /* One scalar of the scenario: number with unit, enumeration choice or text. */
@@ -74,6 +79,28 @@ struct wl_scenario_bed {
 struct wl_scenario_gauge {
   struct wl_scenario_value name;
   struct wl_scenario_value x; /* [m] from the paddle */
+};
+
+/* The parameters a sweep can vary, in the order of the schema's sweep keys. */
+enum wl_sweep_param {
+  WL_SWEEP_CHARGE,          /* loads.explosion.charge [kg] */
+  WL_SWEEP_ENERGY,          /* loads.explosion.energy [J/m or J] */
+  WL_SWEEP_STANDOFF,        /* wall.x - loads.explosion.at: the explosion's distance from the
+                               wall's face [m] */
+  WL_SWEEP_DEPTH,           /* water.depth [m] */
+  WL_SWEEP_SOLITARY_HEIGHT, /* loads.solitary.height [m] */
+  WL_SWEEP_N_PARAMS
+};
+
+/* One swept parameter: its values as written in a list, or generated from
+ * a range ({from, to, count, spacing}); each value's text is what a case's
+ * scenario gets, and its q what that text parses to. */
+struct wl_scenario_sweep_axis {
+  int present;
+  int line, col; /* of the parameter's key in the file */
+  int is_range;  /* 1: generated from {from, to, count, spacing} */
+  int n_values;
+  struct wl_scenario_value values[WL_SCENARIO_MAX_SWEEP_VALUES];
 };
 
 struct wl_scenario {
@@ -124,7 +151,21 @@ struct wl_scenario {
   struct {
     struct wl_scenario_value template_name;
   } report;
+  /* `wallload sweep`: every combination of the swept values is one case,
+   * the scenario with those values (src/sweep). The first parameter written
+   * varies slowest: order[0..n_params) lists them as written. */
+  struct {
+    int present;
+    int line, col; /* of the `sweep` key */
+    int n_params;
+    enum wl_sweep_param order[WL_SWEEP_N_PARAMS];
+    struct wl_scenario_sweep_axis axis[WL_SWEEP_N_PARAMS];
+    int n_cases; /* product of the axes' n_values (0 without a sweep) */
+  } sweep;
 };
+
+/* The schema name of a swept parameter ("charge", "standoff", ...). */
+const char *wl_scenario_sweep_param_name(enum wl_sweep_param p);
 
 /* Highest solitary-wave height that wallload accepts, H/h. The highest
  * solitary wave has H/h ~ 0.833 (Longuet-Higgins & Fenton 1974); third-order

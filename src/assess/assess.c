@@ -540,7 +540,7 @@ static enum wl_status prepare_dir(const char *dir, int force, struct wl_error *e
  * inside HDF5's own lock). A lock whose process is gone is stale: taken
  * over, and the temporary files the killed run left (*.tmp, *.part: the
  * atomic writes' halves) are removed. */
-static enum wl_status lock_dir(const char *dir, char *lock, size_t size, struct wl_error *err) {
+enum wl_status wl_assess_lock_dir(const char *dir, char *lock, size_t size, struct wl_error *err) {
   snprintf(lock, size, "%s/.wallload.lock", dir);
   for (int attempt = 0; attempt < 2; attempt++) {
     const int fd = open(lock, O_CREAT | O_EXCL | O_WRONLY, 0644);
@@ -610,7 +610,7 @@ enum wl_status wl_assess_run(const struct wl_scenario *s, const struct wl_plan *
   if (plan->solitary.present && (st = wl_plan_solitary_runnable(s, plan, err))) return st;
   if ((st = prepare_dir(res->out_dir, opts->force, err))) return st;
   char lock[1100];
-  if ((st = lock_dir(res->out_dir, lock, sizeof lock, err))) return st;
+  if ((st = wl_assess_lock_dir(res->out_dir, lock, sizeof lock, err))) return st;
   st = assess_locked(s, plan, opts, res, err);
   unlink(lock);
   return st;
@@ -670,9 +670,10 @@ static enum wl_status assess_locked(const struct wl_scenario *s, const struct wl
     snprintf(snap, sizeof snap, "%s/particles_%s.h5", res->out_dir, wl_flume_case_name(todo[i]));
     struct wl_error cerr;
     wl_error_clear(&cerr);
+    const char *snaps = opts->no_snapshots ? NULL : snap;
     enum wl_status cst = s->resolution.n_levels > 0
-                             ? ladder_run(s, plan, todo[i], opts, snap, c, &res->conv[i], &cerr)
-                             : assess_case(s, plan, todo[i], opts, snap, 1, c, &cerr);
+                             ? ladder_run(s, plan, todo[i], opts, snaps, c, &res->conv[i], &cerr)
+                             : assess_case(s, plan, todo[i], opts, snaps, 1, c, &cerr);
     res->threads = c->flume.cfg.n_threads > 0 ? c->flume.cfg.n_threads : omp_get_max_threads();
     if (cst != WL_OK && cst != WL_EUNSTABLE && cst != WL_EINTERRUPTED &&
         (c->rec.n == 0 || cst == WL_EIO)) {
@@ -720,6 +721,10 @@ static enum wl_status assess_locked(const struct wl_scenario *s, const struct wl
       }
       break;
     }
+  }
+  if (opts->no_report) {
+    if (overall != WL_OK) *err = first;
+    return overall;
   }
   /* The design report, from the stored results alone (as `wallload
    * report` would); a report failure never hides a run failure. */

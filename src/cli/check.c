@@ -14,14 +14,15 @@
 #include "wallload/scenario.h"
 #include "wallload/units.h"
 
-/* Load and plan a scenario, and find and parse its report template (so
- * that a missing or malformed one is refused now, not after the run); on
- * failure everything is freed. */
-static enum wl_status load_and_plan(const char *path, struct wl_scenario *s, struct wl_plan *plan,
+/* Load a scenario and find and parse its report template (so that a
+ * missing or malformed one is refused now, not after the run); `plan`
+ * (may be NULL: a sweep plans its cases) is made too. On failure
+ * everything is freed. */
+static enum wl_status load_scenario(const char *path, struct wl_scenario *s, struct wl_plan *plan,
                                     struct wl_error *err) {
   wl_scenario_init(s);
   enum wl_status st = wl_scenario_load(path, s, err);
-  if (st == WL_OK) st = wl_plan_make(s, plan, err);
+  if (st == WL_OK && plan) st = wl_plan_make(s, plan, err);
   if (st == WL_OK) {
     struct wl_report_template t;
     wl_report_template_init(&t);
@@ -31,6 +32,34 @@ static enum wl_status load_and_plan(const char *path, struct wl_scenario *s, str
     wl_report_template_clear(&t);
   }
   if (st != WL_OK) wl_scenario_clear(s);
+  return st;
+}
+
+/* A scenario for `assess`: one without a sweep section, planned. */
+static enum wl_status load_and_plan(const char *path, struct wl_scenario *s, struct wl_plan *plan,
+                                    struct wl_error *err) {
+  wl_scenario_init(s);
+  enum wl_status st = wl_scenario_load(path, s, err);
+  if (st == WL_OK && s->sweep.present)
+    st = wl_error_set(err, WL_EINPUT,
+                      "%s:%d:%d: sweep: the scenario has a sweep section (%d cases), which "
+                      "`wallload sweep %s` runs; `assess` runs one scenario: remove the section, "
+                      "or assess one case's scenario.yaml from the sweep's cases/ directory",
+                      path, s->sweep.line, s->sweep.col, s->sweep.n_cases, path);
+  wl_scenario_clear(s);
+  if (st) return st;
+  return load_scenario(path, s, plan, err);
+}
+
+enum wl_status wl_cli_load_sweep(const char *path, struct wl_scenario *s, struct wl_sweep *sw,
+                                 struct wl_error *err) {
+  wl_sweep_init(sw);
+  enum wl_status st = load_scenario(path, s, NULL, err);
+  if (st) return st;
+  if ((st = wl_sweep_make(s, sw, err))) {
+    wl_sweep_clear(sw);
+    wl_scenario_clear(s);
+  }
   return st;
 }
 
@@ -97,7 +126,7 @@ static void ladder_cost(const struct wl_scenario *s, const struct wl_plan *plan,
 /* --budget HOURS and --force-large, shared by check and assess: 1 when
  * argv[*i] is one of them (consumed, *i advanced past a value), 0 when it
  * is not, -1 on a bad value (err set). */
-static int budget_option(const char *cmd, int argc, char **argv, int *i, double *budget_s,
+int wl_cli_budget_option(const char *cmd, int argc, char **argv, int *i, double *budget_s,
                          int *force_large, struct wl_error *err) {
   const char *a = argv[*i];
   if (!strcmp(a, "--force-large")) {
@@ -146,13 +175,101 @@ static enum wl_status judge_run(const struct wl_scenario *s, const struct wl_pla
   return st;
 }
 
+enum wl_status wl_cli_sweep_price(const struct wl_sweep *sw, const struct wl_assess_opts *opts,
+                                  double budget_s, int force_large, FILE *out,
+                                  struct wl_error *err) {
+  struct wl_scenario *cs = malloc(sizeof *cs), *first = malloc(sizeof *first);
+  struct wl_plan *plan = malloc(sizeof *plan), *first_plan = malloc(sizeof *first_plan);
+  enum wl_status st = WL_OK;
+  if (first) wl_scenario_init(first);
+  if (!cs || !first || !plan || !first_plan)
+    st = wl_error_set(err, WL_ENOMEM, "%s: no memory to price the sweep", sw->path);
+  struct wl_plan_cost total = {0, 0, 0, 0, 0};
+  if (!st && out) {
+    fprintf(out, "\nSweep: %d cases (", sw->n_cases);
+    for (int k = 0; k < sw->n_params; k++)
+      fprintf(out, "%s%s", k ? " x " : "", wl_scenario_sweep_param_name(sw->order[k]));
+    fprintf(out, "), each priced as `check` prices it alone\n  %4s  %-40s %10s %16s %16s\n",
+            "case", "id", "particles", "CPU (est.) [s]", "GPU (est.) [s]");
+  }
+  for (int i = 0; !st && i < sw->n_cases; i++) {
+    struct wl_scenario *c = i == 0 ? first : cs;
+    struct wl_plan *p = i == 0 ? first_plan : plan;
+    struct wl_error e;
+    wl_error_clear(&e);
+    st = wl_sweep_case_scenario(sw, i, c, &e);
+    if (!st) st = wl_plan_make(c, p, &e);
+    if (!st && p->solitary.present) st = wl_plan_solitary_runnable(c, p, &e);
+    if (st) {
+      char label[512];
+      wl_sweep_case_label(sw, i, label, sizeof label);
+      wl_error_set(err, st, "%s: sweep case %d (%s): %s", sw->path, i, label, e.msg);
+      if (i) wl_scenario_clear(c);
+      break;
+    }
+    struct wl_plan_cost cost;
+    ladder_cost(c, p, 1, NULL, &cost);
+    total.dims = cost.dims > total.dims ? cost.dims : total.dims;
+    total.host_bytes = fmax(total.host_bytes, cost.host_bytes);
+    total.device_bytes = fmax(total.device_bytes, cost.device_bytes);
+    total.cpu_seconds += cost.cpu_seconds;
+    total.gpu_seconds += cost.gpu_seconds;
+    if (out)
+      fprintf(out, "  %4d  %-40s %10ld %16.6g %16.6g\n", i, sw->cases[i].id,
+              p->n_fluid + p->n_boundary, cost.cpu_seconds, cost.gpu_seconds);
+    if (i) wl_scenario_clear(c);
+  }
+  if (!st && out)
+    fprintf(out,
+            "  sweep CPU runtime (estimate) %.6g s (%.3g h), the cases one after the other; "
+            "GPU runtime (estimate) %.6g s\n",
+            total.cpu_seconds, total.cpu_seconds / 3600.0, total.gpu_seconds);
+  /* the machine and the budget judge the sweep as one run */
+  if (!st && (st = judge_run(first, first_plan, &total, opts, budget_s, force_large, out, err)))
+    wl_error_prefix(err, "the sweep's %d cases, one after the other: ", sw->n_cases);
+  if (first) wl_scenario_clear(first);
+  free(cs), free(first), free(plan), free(first_plan);
+  return st;
+}
+
+/* check of a sweep: the resolved scenario, the first case's plan in full,
+ * and the price of every case. */
+static enum wl_status check_sweep(const char *path, const struct wl_assess_opts *opts,
+                                  double budget_s, int force_large, struct wl_error *err) {
+  struct wl_scenario s;
+  struct wl_sweep sw;
+  enum wl_status st = wl_cli_load_sweep(path, &s, &sw, err);
+  if (st) return st;
+  printf("Scenario %s (%s): valid, a sweep of %d cases\n\nResolved scenario (SI; the value as "
+         "written beside it)\n",
+         s.name.text, s.path, sw.n_cases);
+  wl_scenario_write_resolved(&s, stdout);
+  struct wl_scenario *c0 = malloc(sizeof *c0);
+  struct wl_plan *p0 = malloc(sizeof *p0);
+  if (c0) wl_scenario_init(c0);
+  if (!c0 || !p0) st = wl_error_set(err, WL_ENOMEM, "%s: no memory", path);
+  if (!st) st = wl_sweep_case_scenario(&sw, 0, c0, err);
+  if (!st && (st = wl_plan_make(c0, p0, err)) == WL_OK) {
+    char label[512];
+    wl_sweep_case_label(&sw, 0, label, sizeof label);
+    printf("\nCase 0 (%s), as each case is planned\n", label);
+    wl_plan_write(p0, stdout);
+  }
+  if (c0) wl_scenario_clear(c0);
+  free(c0), free(p0);
+  if (!st) st = wl_cli_sweep_price(&sw, opts, budget_s, force_large, stdout, err);
+  wl_sweep_clear(&sw);
+  wl_scenario_clear(&s);
+  return st;
+}
+
 enum wl_status wl_cli_check(int argc, char **argv, struct wl_error *err) {
   const char *path = NULL;
   struct wl_assess_opts opts = {0};
   double budget_s = 0;
   int force_large = 0;
   for (int i = 1; i < argc; i++) {
-    const int used = budget_option("check", argc, argv, &i, &budget_s, &force_large, err);
+    const int used = wl_cli_budget_option("check", argc, argv, &i, &budget_s, &force_large, err);
     if (used < 0) return WL_EUSAGE;
     if (used) continue;
     if (!strcmp(argv[i], "--backend")) {
@@ -175,7 +292,13 @@ enum wl_status wl_cli_check(int argc, char **argv, struct wl_error *err) {
                         "HOURS] [--force-large]");
   struct wl_scenario s;
   struct wl_plan plan;
-  enum wl_status st = load_and_plan(path, &s, &plan, err);
+  wl_scenario_init(&s);
+  enum wl_status st = wl_scenario_load(path, &s, err);
+  const int sweep = st == WL_OK && s.sweep.present;
+  wl_scenario_clear(&s);
+  if (st) return st;
+  if (sweep) return check_sweep(path, &opts, budget_s, force_large, err);
+  st = load_scenario(path, &s, &plan, err);
   if (st) return st;
   printf("Scenario %s (%s): valid\n\nResolved scenario (SI; the value as written beside it)\n",
          s.name.text, s.path);
@@ -199,10 +322,6 @@ static volatile sig_atomic_t interrupted = 0;
 
 static void on_stop_signal(int sig) { interrupted = sig; }
 
-struct progress_state {
-  int tty;
-  double last_print;
-};
 
 static void fmt_eta(double s, char *buf, size_t size) {
   if (!isfinite(s) || s < 0)
@@ -215,8 +334,8 @@ static void fmt_eta(double s, char *buf, size_t size) {
     snprintf(buf, size, "%dh%02dm", (int)(s / 3600), (int)fmod(s / 60, 60));
 }
 
-static void show_progress(void *user, const char *name, const struct wl_sph_progress *pr) {
-  struct progress_state *ps = user;
+void wl_cli_show_progress(void *user, const char *name, const struct wl_sph_progress *pr) {
+  struct wl_cli_progress *ps = user;
   double frac = pr->t_end > 0 ? pr->t / pr->t_end : 0;
   double eta_s = frac > 0 ? pr->wall_s * (1 - frac) / frac : NAN;
   char eta[32];
@@ -299,8 +418,15 @@ static void print_convergence(const struct wl_case_result *c,
   printf("    %s: %s\n", c->name, cv->note);
 }
 
-static enum wl_status assess_planned(const char *path, struct wl_assess_opts *opts_in, int quiet,
-                                     double budget_s, int force_large, struct wl_error *err);
+struct assess_args {
+  const char *path;
+  struct wl_assess_opts *opts;
+  int quiet;
+  double budget_s;
+  int force_large;
+};
+static enum wl_status assess_stoppable(void *user, volatile sig_atomic_t *stop,
+                                       struct wl_error *err);
 
 enum wl_status wl_cli_assess(int argc, char **argv, struct wl_error *err) {
   const char *path = NULL;
@@ -332,7 +458,7 @@ enum wl_status wl_cli_assess(int argc, char **argv, struct wl_error *err) {
       } else {
         opts.backend = v;
       }
-    } else if ((used = budget_option("assess", argc, argv, &i, &budget_s, &force_large, err))) {
+    } else if ((used = wl_cli_budget_option("assess", argc, argv, &i, &budget_s, &force_large, err))) {
       if (used < 0) return WL_EUSAGE;
     } else if (!strcmp(a, "--quiet")) {
       quiet = 1;
@@ -351,6 +477,11 @@ enum wl_status wl_cli_assess(int argc, char **argv, struct wl_error *err) {
     }
   }
   if (!path) return wl_error_set(err, WL_EUSAGE, "usage: wallload assess FILE.yaml [options]");
+  struct assess_args a = {path, &opts, quiet, budget_s, force_large};
+  return wl_cli_with_stop_signals(assess_stoppable, &a, err);
+}
+
+enum wl_status wl_cli_with_stop_signals(wl_cli_stoppable_fn fn, void *user, struct wl_error *err) {
   /* The stop signals are caught from here to the last line printed, so
    * that no moment of a run is left to the default action (death with
    * exit 143 and nothing said). */
@@ -359,16 +490,21 @@ enum wl_status wl_cli_assess(int argc, char **argv, struct wl_error *err) {
   memset(&sa, 0, sizeof sa);
   sa.sa_handler = on_stop_signal;
   for (int k = 0; k < 3; k++) sigaction(stop_signals[k], &sa, &old[k]);
-  opts.interrupted = &interrupted;
-  enum wl_status st = assess_planned(path, &opts, quiet, budget_s, force_large, err);
+  const enum wl_status st = fn(user, &interrupted, err);
   for (int k = 0; k < 3; k++) sigaction(stop_signals[k], &old[k], NULL);
   return st;
 }
 
 /* wl_cli_assess after its options, with the stop signals caught. */
-static enum wl_status assess_planned(const char *path, struct wl_assess_opts *opts_in, int quiet,
-                                     double budget_s, int force_large, struct wl_error *err) {
-  struct wl_assess_opts opts = *opts_in;
+static enum wl_status assess_stoppable(void *user, volatile sig_atomic_t *stop,
+                                       struct wl_error *err) {
+  const struct assess_args *a = user;
+  const char *path = a->path;
+  const int quiet = a->quiet;
+  struct wl_assess_opts opts = *a->opts;
+  opts.interrupted = stop;
+  const double budget_s = a->budget_s;
+  const int force_large = a->force_large;
   struct wl_scenario s;
   struct wl_plan plan;
   enum wl_status st = load_and_plan(path, &s, &plan, err);
@@ -379,15 +515,15 @@ static enum wl_status assess_planned(const char *path, struct wl_assess_opts *op
     wl_scenario_clear(&s);
     return st;
   }
-  if (interrupted) {
+  if (*stop) {
     wl_scenario_clear(&s);
     return wl_error_set(err, WL_EINTERRUPTED,
                         "interrupted by %s before the run started; nothing written",
-                        wl_assess_stop_signal_name(interrupted));
+                        wl_assess_stop_signal_name(*stop));
   }
-  struct progress_state ps = {isatty(2), 0.0};
+  struct wl_cli_progress ps = {isatty(2), 0.0};
   if (!quiet) {
-    opts.progress = show_progress;
+    opts.progress = wl_cli_show_progress;
     opts.user = &ps;
     fprintf(stderr, "wallload: %s: dp = %g m, about %ld particles, est. %.0f s on the CPU\n",
             path, plan.dp, plan.n_fluid + plan.n_boundary, plan.cpu_seconds);
@@ -409,10 +545,10 @@ static enum wl_status assess_planned(const char *path, struct wl_assess_opts *op
     print_convergence(&res.cases[i], &res.conv[i]);
   }
   if (res.n_cases) printf("\nresults in %s/ (results.h5, summary.json, CSV, particle snapshots)\n", res.out_dir);
-  if (st == WL_OK && interrupted)
+  if (st == WL_OK && *stop)
     st = wl_error_set(err, WL_EINTERRUPTED,
                       "interrupted by %s after the results were written (they are complete)",
-                      wl_assess_stop_signal_name(interrupted));
+                      wl_assess_stop_signal_name(*stop));
   wl_assess_result_clear(&res);
   wl_scenario_clear(&s);
   return st;

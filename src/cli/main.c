@@ -28,6 +28,12 @@ static void usage(FILE *out) {
           "                      conditions and what a run would cost; a run beyond this\n"
           "                      machine's memory, or beyond the runtime budget (24 h unless\n"
           "                      --budget; --force-large lifts it), is refused\n"
+          "  sweep FILE.yaml [-o DIR] [--backend cpu|cuda|auto] [--threads N] [--quiet]\n"
+          "                [--end-time SECONDS] [--budget HOURS] [--force-large]\n"
+          "                      every case of the scenario's sweep section, each as assess\n"
+          "                      runs it; sweep.csv, sweep.h5, sweep.pdf (envelopes) in DIR\n"
+          "                      (default <scenario>-sweep); a killed sweep continues where it\n"
+          "                      stopped when run again\n"
           "  convert OPTIONS     charge weight <-> crater <-> energy <-> equal-energy solitary\n"
           "                      wave (wallload convert --help)\n"
           "  report RESULTS.h5 [-o FILE.pdf] [--template FILE]\n"
@@ -86,6 +92,8 @@ int main(int argc, char **argv) {
     st = wl_cli_convert(argc - 1, argv + 1, &err);
   } else if (!strcmp(cmd, "assess")) {
     st = wl_cli_assess(argc - 1, argv + 1, &err);
+  } else if (!strcmp(cmd, "sweep")) {
+    st = wl_cli_sweep(argc - 1, argv + 1, &err);
   } else if (!strcmp(cmd, "report")) {
     st = wl_cli_report(argc - 1, argv + 1, &err);
   } else if (!strcmp(cmd, "bench")) {

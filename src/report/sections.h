@@ -119,4 +119,13 @@ enum wl_status wl_report_template_resolve(const struct wl_report_results *r,
 int wl_report_leading_wave(const double *t, const double *eta, size_t n, double *height,
                            double *period, double *t_crest);
 
+struct wl_design_scenario;
+/* The design formulae's inputs for case ci of r (the wall as simulated,
+ * the wave that reached it; sections_design.c says from where), with one
+ * line each on where H and T came from. 0 when the case has no wall
+ * geometry or record (ds then unset). */
+int wl_report_design_inputs(const struct wl_report_results *r, int ci,
+                            struct wl_design_scenario *ds, char *h_src, char *t_src,
+                            size_t src_size);
+
 #endif

@@ -99,6 +99,66 @@ static int gauge_near_wall(const struct wl_report_case *k) {
   return best;
 }
 
+int wl_report_design_inputs(const struct wl_report_results *r, int ci,
+                            struct wl_design_scenario *out, char *h_src, char *t_src,
+                            size_t src_size) {
+  const struct wl_report_case *k = &r->cases[ci];
+  if (!isfinite(k->still_water_z) || !isfinite(k->wall_toe_z) || !k->n)
+    return 0;
+  struct wl_design_scenario ds;
+  wl_design_scenario_init(&ds);
+  if (r->have_plan)
+    ds.rho = r->plan.rho, ds.g = r->plan.g;
+  else
+    ds.rho = RHO_DEFAULT;
+  double still = k->still_water_z;
+  ds.d = fmax(0.0, still - k->wall_toe_z);
+  ds.z_toe = ds.d > 0 ? 0.0 : k->wall_toe_z - still;
+  ds.hc = isfinite(k->wall_crest_z) ? fmax(0.0, k->wall_crest_z - still) : INFINITY;
+
+  /* the wave at the wall */
+  h_src[0] = t_src[0] = '\0';
+  int gi = gauge_near_wall(k);
+  double Hm = NAN, Tm = NAN, tc = NAN;
+  if (gi >= 0)
+    wl_report_leading_wave(k->t, k->gauges[gi].eta, k->n, &Hm, &Tm, &tc);
+  const struct wl_plan_solitary *ps = r->have_plan ? &r->plan.solitary : NULL;
+  if (ci == WL_REPORT_CASE_SOLITARY && ps && ps->present) {
+    ds.H = ps->wave.H;
+    snprintf(h_src, src_size, "the solitary wave's height (scenario)");
+  } else if (isfinite(Hm)) {
+    ds.H = Hm;
+    snprintf(h_src, src_size, "leading wave at %s (x = %.4g m), crest to trough",
+             k->gauges[gi].name, k->gauges[gi].x);
+  } else {
+    snprintf(h_src, src_size, "%s",
+             gi < 0 ? "no gauge seaward of the wall" : "no wave crest in the gauge record");
+  }
+  if (isfinite(Tm) && Tm > 0) {
+    ds.T = Tm;
+    snprintf(t_src, src_size, "twice the time the crest at %s stays above 10 %% of its height",
+             k->gauges[gi].name);
+  } else if (ci == WL_REPORT_CASE_SOLITARY && ps && ps->present && ps->wave.K > 0 &&
+             ps->wave.c > 0) {
+    ds.T = 4.0 * acosh(sqrt(1.0 / WL_LOADS_THRESHOLD)) / (ps->wave.K * ps->wave.c);
+    snprintf(t_src, src_size,
+             "the same measure on the theoretical profile, 4 acosh(sqrt 10)/(K c)");
+  } else {
+    snprintf(t_src, src_size, "%s",
+             gi < 0 ? "no gauge seaward of the wall"
+                    : "the leading crest does not pass within the record");
+  }
+  double runup = k->runup;
+  if (isfinite(runup) && runup > 0) {
+    ds.eta = runup;
+    ds.R = WL_DESIGN_FEMA_RUNUP_FACTOR * runup;
+    if (ds.d == 0 && runup > ds.z_toe)
+      ds.h_bore = runup - ds.z_toe;
+  }
+  *out = ds;
+  return 1;
+}
+
 static enum wl_status design_case(struct wl_report_ctx *c, const struct wl_report_section *s,
                                   int ci, struct wl_error *err) {
   const struct wl_report_results *r = c->res;
@@ -114,55 +174,9 @@ static enum wl_status design_case(struct wl_report_ctx *c, const struct wl_repor
                                 "no comparison.",
                                 k->name);
   struct wl_design_scenario ds;
-  wl_design_scenario_init(&ds);
-  if (r->have_plan)
-    ds.rho = r->plan.rho, ds.g = r->plan.g;
-  else
-    ds.rho = RHO_DEFAULT;
-  double still = k->still_water_z;
-  ds.d = fmax(0.0, still - k->wall_toe_z);
-  ds.z_toe = ds.d > 0 ? 0.0 : k->wall_toe_z - still;
-  ds.hc = isfinite(k->wall_crest_z) ? fmax(0.0, k->wall_crest_z - still) : INFINITY;
-
-  /* the wave at the wall */
-  char h_src[256] = "", t_src[256] = "";
-  int gi = gauge_near_wall(k);
-  double Hm = NAN, Tm = NAN, tc = NAN;
-  if (gi >= 0)
-    wl_report_leading_wave(k->t, k->gauges[gi].eta, k->n, &Hm, &Tm, &tc);
-  const struct wl_plan_solitary *ps = r->have_plan ? &r->plan.solitary : NULL;
-  if (ci == WL_REPORT_CASE_SOLITARY && ps && ps->present) {
-    ds.H = ps->wave.H;
-    snprintf(h_src, sizeof h_src, "the solitary wave's height (scenario)");
-  } else if (isfinite(Hm)) {
-    ds.H = Hm;
-    snprintf(h_src, sizeof h_src, "leading wave at %s (x = %.4g m), crest to trough",
-             k->gauges[gi].name, k->gauges[gi].x);
-  } else {
-    snprintf(h_src, sizeof h_src, "%s",
-             gi < 0 ? "no gauge seaward of the wall" : "no wave crest in the gauge record");
-  }
-  if (isfinite(Tm) && Tm > 0) {
-    ds.T = Tm;
-    snprintf(t_src, sizeof t_src, "twice the time the crest at %s stays above 10 %% of its height",
-             k->gauges[gi].name);
-  } else if (ci == WL_REPORT_CASE_SOLITARY && ps && ps->present && ps->wave.K > 0 &&
-             ps->wave.c > 0) {
-    ds.T = 4.0 * acosh(sqrt(1.0 / WL_LOADS_THRESHOLD)) / (ps->wave.K * ps->wave.c);
-    snprintf(t_src, sizeof t_src,
-             "the same measure on the theoretical profile, 4 acosh(sqrt 10)/(K c)");
-  } else {
-    snprintf(t_src, sizeof t_src, "%s",
-             gi < 0 ? "no gauge seaward of the wall"
-                    : "the leading crest does not pass within the record");
-  }
-  double runup = k->runup;
-  if (isfinite(runup) && runup > 0) {
-    ds.eta = runup;
-    ds.R = WL_DESIGN_FEMA_RUNUP_FACTOR * runup;
-    if (ds.d == 0 && runup > ds.z_toe)
-      ds.h_bore = runup - ds.z_toe;
-  }
+  char h_src[256], t_src[256];
+  wl_report_design_inputs(r, ci, &ds, h_src, t_src, sizeof h_src);
+  const double runup = k->runup;
   double L = NAN;
   if (ds.d > 0 && ds.T > 0) {
     struct wl_error e;

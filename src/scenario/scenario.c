@@ -191,7 +191,8 @@ static enum wl_status fill_defaults(struct ctx *c, const struct wl_key *keys, vo
       if (st) return st;
       continue;
     }
-    if (k->type == KT_BED || k->type == KT_GAUGES || k->type == KT_LEVELS) continue;
+    if (k->type == KT_BED || k->type == KT_GAUGES || k->type == KT_LEVELS || k->type == KT_SWEEP)
+      continue;
     if (k->required && where) {
       char msg[512];
       snprintf(msg, sizeof msg, "missing required key '%s' (%s)", k->name, k->help);
@@ -264,6 +265,29 @@ static enum wl_status parse_level_item(struct ctx *c, const struct wl_key *k, co
                     &s->resolution.levels[index]);
 }
 
+/* "unknown key" at kn, with a suggestion when one of `keys` is close. */
+static enum wl_status unknown_key(struct ctx *c, const struct wl_key *keys, const yaml_node_t *kn,
+                                  const char *path, const char *name) {
+  char msg[768], names[512];
+  list_keys(keys, names, sizeof names);
+  int best = -1, best_d = 99;
+  for (int i = 0; keys[i].name; i++) {
+    int d = wl_error_edit_distance(name, keys[i].name);
+    if (d < best_d) best_d = d, best = i;
+  }
+  if (best >= 0 && wl_error_close_enough(best_d, keys[best].name))
+    snprintf(msg, sizeof msg, "unknown key '%s'; did you mean '%s'? valid keys here: %s", name,
+             keys[best].name, names);
+  else
+    snprintf(msg, sizeof msg, "unknown key '%s'; valid keys here: %s", name, names);
+  return fail_at(c, kn, path, msg, NULL);
+}
+
+static enum wl_status parse_sweep(struct ctx *c, struct wl_scenario *s, const char *path,
+                                  yaml_node_t *map, const yaml_node_t *kn);
+static enum wl_status at_value(struct ctx *c, const struct wl_scenario_value *v, const char *key,
+                               const char *msg);
+
 /* `owner` is the node that names this map (its key), or the map itself at
  * the top: "missing key" messages point there. */
 static enum wl_status parse_map(struct ctx *c, const struct wl_key *keys, void *base,
@@ -289,22 +313,7 @@ static enum wl_status parse_map(struct ctx *c, const struct wl_key *keys, void *
     int idx = -1;
     for (int i = 0; i < n_keys; i++)
       if (strcmp(keys[i].name, name) == 0) idx = i;
-    if (idx < 0) {
-      char msg[768], names[512];
-      list_keys(keys, names, sizeof names);
-      int best = -1, best_d = 99;
-      for (int i = 0; i < n_keys; i++) {
-        int d = wl_error_edit_distance(name, keys[i].name);
-        if (d < best_d) best_d = d, best = i;
-      }
-      int close = best >= 0 && wl_error_close_enough(best_d, keys[best].name);
-      if (close)
-        snprintf(msg, sizeof msg, "unknown key '%s'; did you mean '%s'? valid keys here: %s", name,
-                 keys[best].name, names);
-      else
-        snprintf(msg, sizeof msg, "unknown key '%s'; valid keys here: %s", name, names);
-      return fail_at(c, kn, path, msg, NULL);
-    }
+    if (idx < 0) return unknown_key(c, keys, kn, path, name);
     if (seen[idx])
       return fail_at(c, kn, path, "this key appears twice in the same mapping", NULL);
     seen[idx] = 1;
@@ -335,6 +344,9 @@ static enum wl_status parse_map(struct ctx *c, const struct wl_key *keys, void *
       s->resolution.levels_given = 1;
       break;
     }
+    case KT_SWEEP:
+      st = parse_sweep(c, base, path, vn, kn);
+      break;
     default:
       if (vn->type != YAML_SCALAR_NODE) {
         char msg[512];
@@ -353,6 +365,221 @@ static enum wl_status parse_map(struct ctx *c, const struct wl_key *keys, void *
     if (st) return st;
   }
   return fill_defaults(c, keys, base, parent, owner, seen);
+}
+
+/* ---- the sweep section ---------------------------------------------------- */
+
+const char *wl_scenario_sweep_param_name(enum wl_sweep_param p) {
+  for (const struct wl_key *k = wl_schema_sweep_keys; k->name; k++)
+    if (k->off == (size_t)p) return k->name;
+  return "?";
+}
+
+/* The shortest decimal text that reads back as v (a range's generated
+ * values are written into each case's scenario as text). */
+static void shortest_text(double v, char *buf, size_t size) {
+  /* 12 significant digits: a generated value's last bits (19.999999999999996
+   * from a log spacing, 12.000000000000002 from 19.2 - 7.2) are noise */
+  char r[40];
+  snprintf(r, sizeof r, "%.12g", v);
+  v = strtod(r, NULL);
+  for (int prec = 1; prec <= 17; prec++) {
+    snprintf(buf, size, "%.*g", prec, v);
+    if (strtod(buf, NULL) == v) break;
+  }
+  const double a = fabs(v);
+  if (strchr(buf, 'e') && a >= 1e-4 && a < 1e15) { /* 1e+01: written out, 10 */
+    const int decimals = (int)fmax(0.0, 16.0 - floor(log10(a)));
+    for (int d = 0; d <= decimals; d++) {
+      snprintf(buf, size, "%.*f", d, v);
+      if (strtod(buf, NULL) == v) break;
+    }
+  }
+}
+
+static enum wl_status parse_sweep_item(struct ctx *c, const struct wl_key *k, const char *ipath,
+                                       yaml_node_t *item, int index, void *out) {
+  struct wl_scenario_sweep_axis *a = out;
+  char msg[512];
+  if (item->type != YAML_SCALAR_NODE) {
+    snprintf(msg, sizeof msg, "found %s; expected one value (%s)", node_kind(item), k->help);
+    return fail_at(c, item, ipath, msg, NULL);
+  }
+  if (item->data.scalar.length == 0) {
+    snprintf(msg, sizeof msg, "the value is empty; expected %s", wl_units_valid(k->dim));
+    return fail_at(c, item, ipath, msg, NULL);
+  }
+  return set_scalar(c, k, ipath, item, (const char *)item->data.scalar.value, &a->values[index]);
+}
+
+/* {from, to, count, spacing} into count values, each written as the text a
+ * case's scenario gets: in from's unit when to has the same one, else SI. */
+static enum wl_status parse_sweep_range(struct ctx *c, const struct wl_key *k, const char *path,
+                                        yaml_node_t *map, const yaml_node_t *owner,
+                                        struct wl_scenario_sweep_axis *a) {
+  struct wl_key keys[5];
+  memcpy(keys, wl_schema_sweep_range_keys, sizeof keys);
+  for (int i = 0; i < 2; i++) { /* from and to: the parameter's dimension and limits */
+    keys[i].dim = k->dim;
+    keys[i].lo = k->lo, keys[i].hi = k->hi;
+    keys[i].lo_open = k->lo_open, keys[i].hi_open = k->hi_open;
+    keys[i].help = k->help;
+  }
+  struct wl_sweep_range r;
+  memset(&r, 0, sizeof r);
+  enum wl_status st = parse_map(c, keys, &r, path, map, owner);
+  if (st) return st;
+  const int n = (int)r.count.q.si;
+  char key[300];
+  if (n == 1 && r.from.q.si != r.to.q.si) {
+    snprintf(key, sizeof key, "%s.count", path);
+    return at_value(c, &r.count, key,
+                    "found 1, which gives the one value `from` and never reaches `to`; expected a "
+                    "count of at least 2, or the same value for from and to");
+  }
+  const int same_unit = strcmp(r.from.q.unit, r.to.q.unit) == 0;
+  const double lo = same_unit ? r.from.q.value : r.from.q.si;
+  const double hi = same_unit ? r.to.q.value : r.to.q.si;
+  const char *unit = same_unit ? r.from.q.unit : wl_units_si_symbol(k->dim);
+  const int log_spacing = r.spacing.choice == WL_SWEEP_LOG;
+  for (int j = 0; j < n; j++) {
+    const double t = n > 1 ? (double)j / (n - 1) : 0.0;
+    double v = log_spacing ? lo * pow(hi / lo, t) : lo + (hi - lo) * t;
+    if (j == 0) v = lo; /* the ends exactly as written */
+    if (j == n - 1 && n > 1) v = hi;
+    char num[40], text[64];
+    shortest_text(v, num, sizeof num);
+    snprintf(text, sizeof text, "%s%s%s", num, *unit ? " " : "", unit);
+    snprintf(key, sizeof key, "%s[%d]", path, j);
+    if ((st = set_scalar(c, k, key, map, text, &a->values[j]))) return st;
+  }
+  a->n_values = n;
+  a->is_range = 1;
+  return WL_OK;
+}
+
+static enum wl_status parse_sweep(struct ctx *c, struct wl_scenario *s, const char *path,
+                                  yaml_node_t *map, const yaml_node_t *kn) {
+  char msg[768], names[256];
+  list_keys(wl_schema_sweep_keys, names, sizeof names);
+  s->sweep.present = 1;
+  s->sweep.line = line_of(kn);
+  s->sweep.col = col_of(kn);
+  if (map->type != YAML_MAPPING_NODE || map->data.mapping.pairs.start == map->data.mapping.pairs.top) {
+    snprintf(msg, sizeof msg,
+             "found %s; expected a mapping of the parameters to vary (%s), each a list of values "
+             "or a range {from, to, count}",
+             map->type == YAML_MAPPING_NODE ? "an empty mapping" : node_kind(map), names);
+    return fail_at(c, map, path, msg, NULL);
+  }
+  s->sweep.n_cases = 1;
+  for (yaml_node_pair_t *p = map->data.mapping.pairs.start; p < map->data.mapping.pairs.top; p++) {
+    yaml_node_t *pk = yaml_document_get_node(c->doc, p->key);
+    yaml_node_t *pv = yaml_document_get_node(c->doc, p->value);
+    if (pk->type != YAML_SCALAR_NODE) return fail_at(c, pk, path, "a key must be a plain word", NULL);
+    const char *name = (const char *)pk->data.scalar.value;
+    char ppath[256];
+    join_path(ppath, sizeof ppath, path, name);
+    const struct wl_key *k = NULL;
+    for (const struct wl_key *q = wl_schema_sweep_keys; q->name; q++)
+      if (!strcmp(q->name, name)) k = q;
+    if (!k) return unknown_key(c, wl_schema_sweep_keys, pk, ppath, name);
+    struct wl_scenario_sweep_axis *a = &s->sweep.axis[k->off];
+    if (a->present) return fail_at(c, pk, ppath, "this key appears twice in the same mapping", NULL);
+    a->present = 1;
+    a->line = line_of(pk);
+    a->col = col_of(pk);
+    s->sweep.order[s->sweep.n_params++] = (enum wl_sweep_param)k->off;
+    enum wl_status st;
+    if (pv->type == YAML_SEQUENCE_NODE) {
+      if (pv->data.sequence.items.start == pv->data.sequence.items.top) {
+        snprintf(msg, sizeof msg, "the list is empty; expected at least one value (%s)", k->help);
+        return fail_at(c, pv, ppath, msg, NULL);
+      }
+      st = parse_list(c, k, ppath, pv, WL_SCENARIO_MAX_SWEEP_VALUES, parse_sweep_item, a,
+                      &a->n_values);
+    } else if (pv->type == YAML_MAPPING_NODE) {
+      st = parse_sweep_range(c, k, ppath, pv, pk, a);
+    } else {
+      const char *u = k->dim == WL_DIM_MASS ? "kg" : k->dim == WL_DIM_ENERGY ? "kJ" : "m";
+      snprintf(msg, sizeof msg,
+               "found %s; expected a list of values, e.g. [1 %s, 2 %s], or a range, e.g. "
+               "{from: 1 %s, to: 4 %s, count: 4} (%s)",
+               pv->type == YAML_SCALAR_NODE && pv->data.scalar.length == 0 ? "nothing"
+                                                                            : node_kind(pv),
+               u, u, u, u, k->help);
+      return fail_at(c, pv, ppath, msg, NULL);
+    }
+    if (st) return st;
+    for (int i = 1; i < a->n_values; i++)
+      for (int j = 0; j < i; j++)
+        if (a->values[i].q.si == a->values[j].q.si) {
+          char key[300];
+          snprintf(key, sizeof key, "%s[%d]", ppath, i);
+          snprintf(msg, sizeof msg,
+                   "found '%s', the same value as %s[%d]; expected each value once (each gives "
+                   "one case)",
+                   a->values[i].text, ppath, j);
+          return at_value(c, &a->values[i], key, msg);
+        }
+    s->sweep.n_cases *= a->n_values;
+    if (s->sweep.n_cases > WL_SCENARIO_MAX_SWEEP_CASES) {
+      snprintf(msg, sizeof msg, "%d cases or more (the product of the values per parameter); "
+               "expected at most %d", s->sweep.n_cases, WL_SCENARIO_MAX_SWEEP_CASES);
+      return fail_at(c, pk, ppath, msg, NULL);
+    }
+  }
+  return WL_OK;
+}
+
+/* The sweep's parameters against the scenario: each one must have its key
+ * to vary (no charge without an explosion), and the explosion one source. */
+static enum wl_status check_sweep(struct ctx *c, const struct wl_scenario *s) {
+  const struct wl_scenario_sweep_axis *ax = s->sweep.axis;
+  char msg[768], usable[256] = "";
+  static const enum wl_sweep_param all[] = {WL_SWEEP_CHARGE, WL_SWEEP_ENERGY, WL_SWEEP_STANDOFF,
+                                            WL_SWEEP_DEPTH, WL_SWEEP_SOLITARY_HEIGHT};
+  for (int i = 0; i < WL_SWEEP_N_PARAMS; i++) {
+    const enum wl_sweep_param p = all[i];
+    const int ok = p == WL_SWEEP_DEPTH || (p == WL_SWEEP_SOLITARY_HEIGHT ? s->solitary.present
+                                                                         : s->explosion.present);
+    if (ok) {
+      size_t u = strlen(usable);
+      snprintf(usable + u, sizeof usable - u, "%s%s", u ? ", " : "", wl_scenario_sweep_param_name(p));
+    }
+  }
+  for (int i = 0; i < s->sweep.n_params; i++) {
+    const enum wl_sweep_param p = s->sweep.order[i];
+    const struct wl_scenario_sweep_axis *a = &ax[p];
+    const char *name = wl_scenario_sweep_param_name(p);
+    const char *needs = NULL;
+    if ((p == WL_SWEEP_CHARGE || p == WL_SWEEP_ENERGY || p == WL_SWEEP_STANDOFF) &&
+        !s->explosion.present)
+      needs = "loads.explosion";
+    if (p == WL_SWEEP_SOLITARY_HEIGHT && !s->solitary.present) needs = "loads.solitary";
+    if (needs) {
+      snprintf(msg, sizeof msg, "the scenario has no %s for this parameter to vary; valid here: %s",
+               needs, usable);
+      return wl_error_set(c->err, WL_EINPUT, "%s:%d:%d: sweep.%s: %s", c->path, a->line, a->col,
+                          name, msg);
+    }
+    if ((p == WL_SWEEP_CHARGE || p == WL_SWEEP_ENERGY) && s->explosion.eta0.given)
+      return wl_error_set(c->err, WL_EINPUT,
+                          "%s:%d:%d: sweep.%s: the explosion's source is a crater (eta0, r0), "
+                          "which a %s cannot replace; expected loads.explosion to give a charge "
+                          "or an energy",
+                          c->path, a->line, a->col, name, name);
+  }
+  if (ax[WL_SWEEP_CHARGE].present && ax[WL_SWEEP_ENERGY].present) {
+    const struct wl_scenario_sweep_axis *later =
+        ax[WL_SWEEP_ENERGY].line > ax[WL_SWEEP_CHARGE].line ? &ax[WL_SWEEP_ENERGY]
+                                                            : &ax[WL_SWEEP_CHARGE];
+    return wl_error_set(c->err, WL_EINPUT,
+                        "%s:%d:%d: sweep.%s: charge and energy both given; the explosion has one "
+                        "source: sweep one of them",
+                        c->path, later->line, later->col, later == &ax[WL_SWEEP_ENERGY] ? "energy" : "charge");
+  }
+  return WL_OK;
 }
 
 /* ---- rules that span several keys --------------------------------------- */
@@ -580,6 +807,7 @@ static enum wl_status check_rules(struct ctx *c, struct wl_scenario *s) {
       return at_value(c, &s->resolution.levels[i], key,
                       "levels must decrease (each one finer than the one before)");
   }
+  if (s->sweep.present) return check_sweep(c, s);
   return WL_OK;
 }
 
@@ -781,6 +1009,17 @@ static void write_keys(FILE *out, const struct wl_key *keys, const void *base, c
         level.type = KT_QTY;
         level.dim = WL_DIM_RATIO;
         write_value(out, ip, &level, &s->resolution.levels[i]);
+      }
+      break;
+    case KT_SWEEP:
+      for (int i = 0; s->sweep.present && i < s->sweep.n_params; i++) {
+        const enum wl_sweep_param p = s->sweep.order[i];
+        const struct wl_key *sk = &k->sub[p];
+        for (int j = 0; j < s->sweep.axis[p].n_values; j++) {
+          char ip[256];
+          snprintf(ip, sizeof ip, "%s.%s[%d]", path, sk->name, j);
+          write_value(out, ip, sk, &s->sweep.axis[p].values[j]);
+        }
       }
       break;
     default: {

@@ -184,6 +184,39 @@ static const struct wl_key report_keys[] = {
      NULL, NO_FLAG, 0, "report template in report_templates/"},
     {0}};
 
+/* Each parameter's limits are its target key's (loads.explosion.charge,
+ * ...); what a value does to the rest of the scenario (a standoff beyond
+ * the paddle, a depth that floods the wall) is checked on each case
+ * (src/sweep). */
+const struct wl_key wl_schema_sweep_keys[] = {
+    {"charge", KT_QTY, WL_DIM_MASS, WL_SWEEP_CHARGE, NULL, 0, NONE, 1, 0, NULL, NULL, NO_FLAG, 0,
+     "charge weights (TNT) for loads.explosion.charge"},
+    {"energy", KT_QTY, WL_DIM_ENERGY, WL_SWEEP_ENERGY, NULL, 0, NONE, 1, 0, NULL, NULL, NO_FLAG, 0,
+     "crater (wave) energies for loads.explosion.energy"},
+    {"standoff", KT_QTY, WL_DIM_LENGTH, WL_SWEEP_STANDOFF, NULL, 0, NONE, 1, 0, NULL, NULL, NO_FLAG,
+     0, "distances of the explosion centre seaward of the wall's face (loads.explosion.at = "
+        "wall.x - standoff)"},
+    {"depth", KT_QTY, WL_DIM_LENGTH, WL_SWEEP_DEPTH, NULL, 0, NONE, 1, 0, NULL, NULL, NO_FLAG, 0,
+     "still-water depths for water.depth"},
+    {"solitary_height", KT_QTY, WL_DIM_LENGTH, WL_SWEEP_SOLITARY_HEIGHT, NULL, 0, NONE, 1, 0, NULL,
+     NULL, NO_FLAG, 0, "solitary-wave heights for loads.solitary.height"},
+    {0}};
+
+static const char *const spacing_choices[] = {"linear", "log", NULL}; /* wl_sweep_spacing */
+
+#define RANGE(member) offsetof(struct wl_sweep_range, member)
+const struct wl_key wl_schema_sweep_range_keys[] = {
+    {"from", KT_QTY, WL_DIM_NONE, RANGE(from), NULL, NONE, NONE, 0, 0, NULL, NULL, NO_FLAG, 1,
+     "first value"},
+    {"to", KT_QTY, WL_DIM_NONE, RANGE(to), NULL, NONE, NONE, 0, 0, NULL, NULL, NO_FLAG, 1,
+     "last value"},
+    {"count", KT_INT, WL_DIM_NONE, RANGE(count), NULL, 1, WL_SCENARIO_MAX_SWEEP_VALUES, 0, 0, NULL,
+     NULL, NO_FLAG, 1, "number of values from `from` to `to`, both included"},
+    {"spacing", KT_ENUM, WL_DIM_NONE, RANGE(spacing), spacing_choices, NONE, NONE, 0, 0, "linear",
+     NULL, NO_FLAG, 0, "linear (equal steps) or log (equal ratios)"},
+    {0}};
+#undef RANGE
+
 const struct wl_key wl_schema_bed_keys[] = {
     {"from", KT_QTY, WL_DIM_LENGTH, BED(from), NULL, 0, NONE, 0, 0, NULL, NULL, NO_FLAG, 1,
      "where the segment starts, from the paddle"},
@@ -223,4 +256,7 @@ const struct wl_key wl_schema_top[] = {
      "SPH settings"},
     {"report", KT_MAP, WL_DIM_NONE, 0, NULL, NONE, NONE, 0, 0, NULL, report_keys, NO_FLAG, 0,
      "design report"},
+    {"sweep", KT_SWEEP, WL_DIM_NONE, 0, NULL, NONE, NONE, 0, 0, NULL, wl_schema_sweep_keys, NO_FLAG,
+     0, "parameters to vary for `wallload sweep`: each a list of values or a range {from, to, "
+        "count, spacing}"},
     {0}};

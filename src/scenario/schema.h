@@ -18,6 +18,7 @@ enum wl_key_type {
   KT_BED,         /* the bathymetry list */
   KT_GAUGES,      /* the gauges list */
   KT_LEVELS,      /* the convergence list of numbers */
+  KT_SWEEP,       /* the sweep section: a mapping of parameters, each a list or a range */
 };
 
 struct wl_key {
@@ -35,7 +36,18 @@ struct wl_key {
   const char *help;            /* what the key means, for messages and check */
 };
 
+/* A sweep parameter's range, {from, to, count, spacing} (scenario.c turns
+ * it into values; from and to take the parameter's dimension and limits). */
+struct wl_sweep_range {
+  struct wl_scenario_value from, to, count, spacing;
+};
+enum wl_sweep_spacing { WL_SWEEP_LINEAR, WL_SWEEP_LOG };
+
 extern const struct wl_key wl_schema_top[];
+/* The sweep's parameters; `off` is the parameter (enum wl_sweep_param). */
+extern const struct wl_key wl_schema_sweep_keys[];
+/* A range's keys; offsets into struct wl_sweep_range. */
+extern const struct wl_key wl_schema_sweep_range_keys[];
 extern const struct wl_key wl_schema_bed_keys[];
 extern const struct wl_key wl_schema_gauge_keys[];
 

@@ -1,0 +1,169 @@
+/* sweep.c: `wallload sweep FILE.yaml`: every case of the scenario's sweep
+ * section, run as `assess` runs one scenario (sweep.h). */
+#define _POSIX_C_SOURCE 200809L /* isatty */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "cli.h"
+#include "wallload/sweep.h"
+
+#define SWEEP_USAGE                                                                               \
+  "usage: wallload sweep FILE.yaml [-o DIR] [--backend cpu|cuda|auto] [--threads N] [--quiet]\n" \
+  "                      [--end-time SECONDS] [--budget HOURS] [--force-large]"
+
+struct sweep_args {
+  const char *path, *out_dir;
+  struct wl_assess_opts opts;
+  int quiet, force_large;
+  double budget_s;
+};
+
+/* What the terminal shows: which case of how many, then assess's own
+ * progress line for the running case. */
+struct sweep_view {
+  const struct sweep_args *a;
+  struct wl_cli_progress progress;
+  int current, n_cases;
+};
+
+static void case_progress(void *user, const char *name, const struct wl_sph_progress *pr) {
+  struct sweep_view *v = user;
+  char label[160];
+  snprintf(label, sizeof label, "[%d/%d] %s", v->current + 1, v->n_cases, name);
+  wl_cli_show_progress(&v->progress, label, pr);
+}
+
+static void case_begin(void *user, const struct wl_sweep *sw, int i, int reused) {
+  struct sweep_view *v = user;
+  v->current = i;
+  v->progress.last_print = 0.0;
+  if (v->a->quiet) return;
+  char label[512];
+  wl_sweep_case_label(sw, i, label, sizeof label);
+  fprintf(stderr, "wallload: case %d/%d (%s): %s\n", i + 1, sw->n_cases, label,
+          reused ? "reused: finished by an earlier run with the same inputs" : "running");
+}
+
+static void case_end(void *user, const struct wl_sweep *sw, int i) {
+  struct sweep_view *v = user;
+  const struct wl_sweep_row *r = &sw->rows[i];
+  if (v->a->quiet || r->status == WL_OK) return;
+  fprintf(stderr, "wallload: case %d/%d: %s\n", i + 1, sw->n_cases, r->message);
+}
+
+/* One line per case on stdout: the loads to quote (kN/m, kN s/m). */
+static void print_rows(const struct wl_sweep *sw, const char *dir, int pdf) {
+  static const char *const load_name[WL_SWEEP_N_LOADS] = {"solitary", "explosion"};
+  printf("\n%4s  %-36s %-11s", "case", "id", "status");
+  for (int l = 0; l < WL_SWEEP_N_LOADS; l++)
+    if (sw->has_load[l]) printf(" %9.9s F [kN/m] %9.9s I+ [kN s/m]", load_name[l], load_name[l]);
+  printf("  %9s\n", "runtime");
+  for (int i = 0; i < sw->n_cases; i++) {
+    const struct wl_sweep_row *r = &sw->rows[i];
+    const char *status = r->state == WL_SWEEP_PENDING ? "not run"
+                         : r->status == WL_OK         ? "complete"
+                         : r->status == WL_EUNSTABLE  ? "unstable"
+                         : r->status == WL_EINTERRUPTED ? "interrupted"
+                                                        : "failed";
+    printf("%4d  %-36s %-11s", i, sw->cases[i].id, status);
+    for (int l = 0; l < WL_SWEEP_N_LOADS; l++) {
+      if (!sw->has_load[l]) continue;
+      const struct wl_sweep_loads *ld = &r->load[l];
+      const int have = r->state != WL_SWEEP_PENDING && ld->present;
+      printf(" %18.5g %22.5g", have ? ld->peak_force / 1e3 : NAN,
+             have ? ld->impulse_positive / 1e3 : NAN);
+    }
+    if (r->state == WL_SWEEP_PENDING)
+      printf("  %9s\n", "-");
+    else
+      printf("  %8.1fs%s\n", r->runtime_s, r->state == WL_SWEEP_REUSED ? " (reused)" : "");
+  }
+  printf("\nresults in %s/ (sweep.csv, sweep.h5%s; each case's results in cases/)\n", dir,
+         pdf ? ", sweep.pdf" : "; sweep.pdf once every case has run");
+}
+
+static enum wl_status sweep_stoppable(void *user, volatile sig_atomic_t *stop,
+                                      struct wl_error *err) {
+  struct sweep_args *a = user;
+  struct wl_scenario s;
+  struct wl_sweep sw;
+  enum wl_status st = wl_cli_load_sweep(a->path, &s, &sw, err);
+  if (st) return st;
+  char dir[600];
+  if (a->out_dir) snprintf(dir, sizeof dir, "%s", a->out_dir);
+  else snprintf(dir, sizeof dir, "%s-sweep", s.name.text);
+  /* the whole sweep priced and judged before anything runs, as check does */
+  st = wl_cli_sweep_price(&sw, &a->opts, a->budget_s, a->force_large, NULL, err);
+  if (st == WL_OK && *stop)
+    st = wl_error_set(err, WL_EINTERRUPTED,
+                      "interrupted by %s before the sweep started; nothing written",
+                      wl_assess_stop_signal_name(*stop));
+  if (st == WL_OK) {
+    struct sweep_view view = {a, {isatty(2), 0.0}, 0, sw.n_cases};
+    struct wl_assess_opts opts = a->opts;
+    opts.interrupted = stop;
+    if (!a->quiet) {
+      opts.progress = case_progress;
+      opts.user = &view;
+      fprintf(stderr, "wallload: %s: a sweep of %d cases into %s/\n", a->path, sw.n_cases, dir);
+    }
+    struct wl_sweep_events ev = {case_begin, case_end, &view};
+    st = wl_sweep_run(&sw, dir, &opts, &ev, err);
+    if (st != WL_EINPUT && sw.rows) print_rows(&sw, dir, st != WL_EINTERRUPTED);
+  }
+  wl_sweep_clear(&sw);
+  wl_scenario_clear(&s);
+  return st;
+}
+
+enum wl_status wl_cli_sweep(int argc, char **argv, struct wl_error *err) {
+  struct sweep_args a;
+  memset(&a, 0, sizeof a);
+  int used;
+  for (int i = 1; i < argc; i++) {
+    const char *o = argv[i];
+    if (!strcmp(o, "-o") || !strcmp(o, "--backend") || !strcmp(o, "--threads") ||
+        !strcmp(o, "--end-time")) {
+      if (i + 1 >= argc) return wl_error_set(err, WL_EUSAGE, "sweep: %s needs a value", o);
+      const char *v = argv[++i];
+      char *end;
+      if (!strcmp(o, "-o")) {
+        a.out_dir = v;
+      } else if (!strcmp(o, "--threads")) {
+        const long n = strtol(v, &end, 10);
+        if (*end || n < 1 || n > 4096)
+          return wl_error_set(err, WL_EUSAGE, "sweep: --threads: found '%s'; expected 1 to 4096", v);
+        a.opts.threads = (int)n;
+      } else if (!strcmp(o, "--end-time")) {
+        const double t = strtod(v, &end);
+        if (*end || !(t > 0))
+          return wl_error_set(err, WL_EUSAGE, "sweep: --end-time: found '%s'; expected seconds > 0",
+                              v);
+        a.opts.end_time = t;
+      } else if (strcmp(v, "cpu") && strcmp(v, "cuda") && strcmp(v, "auto")) {
+        return wl_error_set(err, WL_EUSAGE, "sweep: --backend: found '%s'; valid: cpu, cuda, auto", v);
+      } else {
+        a.opts.backend = v;
+      }
+    } else if ((used = wl_cli_budget_option("sweep", argc, argv, &i, &a.budget_s, &a.force_large,
+                                            err))) {
+      if (used < 0) return WL_EUSAGE;
+    } else if (!strcmp(o, "--quiet")) {
+      a.quiet = 1;
+    } else if (o[0] == '-') {
+      return wl_error_set(err, WL_EUSAGE,
+                          "sweep: unknown option '%s'; valid: -o DIR, --backend cpu|cuda|auto, "
+                          "--threads N, --quiet, --end-time SECONDS, --budget HOURS, --force-large",
+                          o);
+    } else if (!a.path) {
+      a.path = o;
+    } else {
+      return wl_error_set(err, WL_EUSAGE, "sweep: one scenario file at a time ('%s' extra)", o);
+    }
+  }
+  if (!a.path) return wl_error_set(err, WL_EUSAGE, SWEEP_USAGE);
+  return wl_cli_with_stop_signals(sweep_stoppable, &a, err);
+}
