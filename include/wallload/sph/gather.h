@@ -354,7 +354,7 @@ WL_HD static WL_INLINE void wl_sph_gather_wall_load(const int dim, const int lam
                                                     double *my) {
   const int nc = g->n_cells, az = dim - 1;
   const int cell = (int)e->key[i] - nc;
-  int rf[15], rl[15], rm[15]; /* rows: ordinary (mirror 0), then each plane's */
+  int rf[21], rl[21], rm[21]; /* rows: 9 ordinary (mirror 0), then up to 6 of each plane */
   int nr = wl_sph_cell_rows(dim, g, cell, 0, rf, rl);
   for (int r = 0; r < nr; r++) rm[r] = 0;
   if (dim == 3 && k->mirror) {
