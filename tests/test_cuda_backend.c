@@ -84,10 +84,14 @@ extern const struct wl_backend_ops wl_backend_cuda_ref_ops, wl_backend_cuda_fast
 /* The wall load (force and moment on the left wall), relative: on the
  * initial state the same pair terms summed in another order with fused
  * multiply-adds (float rounding of each pair); after the run it follows
- * the densities at the wall, within TOL_RUN_RHO rho0, i.e. 7 B TOL_RUN_RHO
- * ~ 4 Pa of the ~4 kPa at the base of the 2D column (1e-3). */
+ * the pressures at the wall, whose densities may differ by TOL_RUN_RHO
+ * rho0, i.e. by c0^2 TOL_RUN_RHO rho0 in pressure, against the column's
+ * mean hydrostatic pressure rho0 g H / 2; with c0 = 10 sqrt(g H)
+ * (coefsound 10) that is 200 TOL_RUN_RHO. Measured on an H100
+ * (2026-11-26): 2e-7 to 8e-7 initially, at most 6.5e-4 over a run (the
+ * 2D Verlet case). */
 #define TOL_LOAD_INITIAL 1e-5
-#define TOL_RUN_LOAD 1e-3
+#define TOL_RUN_LOAD (200 * TOL_RUN_RHO)
 
 struct scene_case {
   int dim;

@@ -55,6 +55,20 @@ typedef float wl_real;
 #define WL_LDG(ptr) (*(ptr))
 #endif
 
+/* Unrolling of the GPU's one-thread neighbour loop (sph/gather.h
+ * wl_sph_gather_range with the cut): two candidates per trip, so that one's
+ * loads overlap the other's pair. Left to itself nvcc unrolls some of the
+ * loop's instances (fluid-fluid) and not others (fluid-wall), and the 2D
+ * loop runs about 0.7 % slower on the H100 (BENCHMARKS.md). */
+#ifndef WL_GPU_RANGE_UNROLL
+#define WL_GPU_RANGE_UNROLL 2
+#endif
+#if defined(__CUDA_ARCH__) && WL_GPU_RANGE_UNROLL == 2
+#define WL_GPU_UNROLL_RANGE _Pragma("unroll 2")
+#else
+#define WL_GPU_UNROLL_RANGE
+#endif
+
 /* Double product and sum each rounded once, never fused: nvcc contracts
  * a * b + c into one FMA by default, the CPU build (ISO C) never does, and
  * the time step's maxima (gather.h wl_sph_eval_dt_input) must be the same

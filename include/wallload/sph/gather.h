@@ -153,6 +153,7 @@ WL_HD static WL_INLINE void wl_sph_gather_range(const int dim, const int laminar
   const double *const px = e->pos[0], *const pz = e->pos[az];
   const double *const py = e->pos[dim == 3 ? 1 : 0];
   const double y2 = dim == 3 && mirror ? 2.0 * k->mirror_y[mirror - 1] : 0.0;
+  WL_GPU_UNROLL_RANGE
   for (int j = j0; j < j1; j++) {
     const double xj = WL_LDG(px + j), zj = WL_LDG(pz + j);
     const double yj = dim != 3 ? 0.0 : mirror ? y2 - WL_LDG(py + j) : WL_LDG(py + j);
