@@ -284,15 +284,16 @@ static __device__ __forceinline__ void block_max3(double a, double b, double c, 
  * pays a pair evaluation for nearly every candidate, because one of its 32
  * particles nearly always has it inside the support: the split loop below
  * is the 3D one. */
-/* Resident blocks per multiprocessor k_gather is compiled for: 10 blocks
- * of 128 threads cap it at 48 registers (ptxas: no spills in 2D), the
- * occupancy of the earlier hand-written copy of this loop; left to
- * itself ptxas takes 56-64 and fits 9 or 8 blocks. */
+/* Resident blocks per multiprocessor the 2D k_gather with the skip (the
+ * product's 2D loop) is compiled for: 10 blocks of 128 threads cap it at
+ * 48 registers without spills (ptxas), the occupancy of the earlier
+ * hand-written copy of this loop; left to itself ptxas takes 56-64 and
+ * fits 9 or 8 blocks. In 3D the cap would spill: none there. */
 #ifndef WL_GATHER_MIN_BLOCKS
 #define WL_GATHER_MIN_BLOCKS 10
 #endif
 template <int DIM, int LAM, int CUT>
-__global__ void __launch_bounds__(THREADS, WL_GATHER_MIN_BLOCKS)
+__global__ void __launch_bounds__(THREADS, DIM == 2 && CUT ? WL_GATHER_MIN_BLOCKS : 1)
     k_gather(const struct wl_sph_const kp, const struct wl_sph_grid gp,
              const struct wl_sph_eval ep, int i0, int n, int nb, struct dstats *st) {
   const struct wl_sph_const k = kp;
