@@ -133,6 +133,17 @@ struct wl_backend_ops {
   void (*describe)(void *ctx, char *buf, size_t size);
   /* Free everything; NULL is accepted. */
   void (*free)(void *ctx);
+  /* The load of the fluid on the boundary particles of body `body` (a
+   * fixed structure's tag, particles.h body) in the current state: the
+   * horizontal force [N in 3D, N/m in 2D] into *force and its moment about
+   * the height z_ref [m] into *moment, summed over every fluid-boundary
+   * pair of the solver's momentum equation (sph/gather.h
+   * wl_sph_gather_wall_load; the pressures the EOS of the stored
+   * densities). Rebuilds the cell lists first (the order the next step
+   * would sort into: the run's results are unchanged). Not for a moving
+   * body. WL_OK, or the backend's error (outputs 0). */
+  enum wl_status (*wall_load)(void *ctx, int body, double z_ref, double *force, double *moment,
+                              struct wl_error *err);
 };
 
 /* The OpenMP CPU backend (src/backend_cpu). */

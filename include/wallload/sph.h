@@ -212,6 +212,17 @@ enum wl_status wl_sph_sim_run(struct wl_sph_sim *sim, const struct wl_sph_run_op
  * particle. NULL on failure (err set). */
 const struct wl_particles *wl_sph_sim_particles(struct wl_sph_sim *sim, struct wl_error *err);
 
+/* The load of the fluid on the boundary particles tagged `body` (1 ..
+ * WL_SPH_BODY_TAG_MAX; the flume tags its seawall WL_FLUME_BODY_WALL) in
+ * the current state, computed by the backend with the solver's own pair
+ * term (backend.h wall_load): the horizontal force [N in 3D, N/m in 2D]
+ * and its moment about the height z_ref [m] (N m, N m/m), no lever arm
+ * below z_ref. The host copy of wl_sph_sim_particles stays valid. WL_OK;
+ * WL_EINPUT for a bad body; the backend's error (outputs 0). */
+enum wl_status wl_sph_sim_wall_load(struct wl_sph_sim *sim, int body, double z_ref,
+                                    double *force, double *moment, struct wl_error *err);
+#define WL_SPH_BODY_TAG_MAX 254
+
 /* The backend's one-line description (backend, threads, code path) into
  * buf of size bytes. */
 void wl_sph_sim_describe(const struct wl_sph_sim *sim, char *buf, size_t size);

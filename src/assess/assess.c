@@ -43,9 +43,7 @@ struct run_ctx {
   struct wl_snapshot_ref *refs;
   size_t n_refs, cap_refs;
   double next_snapshot, snapshot_interval;
-  int *near;                       /* fluid indices near the wall (scratch) */
   double prof_z[WL_FLUME_MAX_PROBES + 2], prof_p[WL_FLUME_MAX_PROBES + 2]; /* wet profile */
-  size_t near_cap;
 };
 
 static double now_s(void) {
@@ -54,80 +52,21 @@ static double now_s(void) {
   return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-/* Horizontal force [N/m] of the fluid on the seawall's boundary particles:
- * minus the momentum-equation force of the wall particles on each fluid
- * particle (the solver's own pair term, sph/interact.h), summed. 3D: the
- * sum is the force on the whole wall [N], returned per metre of it (over
- * the modelled width); likewise the moment. */
-static enum wl_status boundary_force(struct run_ctx *rc, const struct wl_particles *p,
-                                     const struct wl_sph_const *k, double *force, double *moment,
-                                     struct wl_error *err) {
+/* Horizontal force [N/m] of the fluid on the seawall's boundary particles
+ * and its moment about the toe [N m/m], from the backend: every
+ * fluid-wall pair of the solver's momentum equation (sph.h
+ * wl_sph_sim_wall_load). 3D: the backend's sum is the force on the whole
+ * modelled wall [N], returned per metre of it; likewise the moment. */
+static enum wl_status boundary_force(struct run_ctx *rc, struct wl_sph_sim *sim, double *force,
+                                     double *moment, struct wl_error *err) {
   const struct wl_flume *f = &rc->c->flume;
-  const double reach = 2.0 * k->h_d;
-  const int d3 = p->dim == 3, az = p->dim - 1;
-  size_t n_near = 0;
-  for (int i = p->n_bound; i < p->n; i++) {
-    double x = p->pos[0][i], z = p->pos[az][i];
-    if (x > f->x_wall - reach && z > f->z_toe - reach) {
-      if (n_near == rc->near_cap) {
-        size_t cap = rc->near_cap ? 2 * rc->near_cap : 4096;
-        int *b = realloc(rc->near, cap * sizeof *b);
-        if (!b) return wl_error_set(err, WL_ENOMEM, "wall force: no memory");
-        rc->near = b;
-        rc->near_cap = cap;
-      }
-      rc->near[n_near++] = i;
-    }
+  const enum wl_status st =
+      wl_sph_sim_wall_load(sim, WL_FLUME_BODY_WALL, f->z_toe, force, moment, err);
+  if (st) return st;
+  if (f->dims == 3) { /* per wall -> per metre */
+    *force /= f->width;
+    *moment /= f->width;
   }
-  const int laminar = k->visc == WL_SPH_VISC_LAMINAR;
-  /* beside a mirror plane (symmetry plane or free-slip side wall) the wall
-   * also feels the mirror images of the fluid: mirror 1 the low plane's,
-   * mirror 2 the high plane's (sph/params.h) */
-  size_t n_pass[3] = {n_near, 0, 0};
-  for (int m = 1; m < 3; m++)
-    if (d3 && (k->mirror & (1 << (m - 1)))) n_pass[m] = n_near;
-  double fx = 0.0, my = 0.0;
-  for (int j = 0; j < p->n_bound; j++) {
-    if (p->body[j] != WL_FLUME_BODY_WALL) continue;
-    wl_real rho_j = p->rho[j], p_j = wl_sph_eos_p(k, rho_j);
-    for (int mirror = 0; mirror < 3; mirror++)
-    for (size_t a = 0; a < n_pass[mirror]; a++) {
-      const int i = rc->near[a];
-      wl_real dx = (wl_real)(p->pos[0][i] - p->pos[0][j]);
-      wl_real dz = (wl_real)(p->pos[az][i] - p->pos[az][j]);
-      wl_real r2 = dx * dx + dz * dz, dy = 0;
-      if (d3) {
-        const double yi = mirror ? 2.0 * k->mirror_y[mirror - 1] - p->pos[1][i] : p->pos[1][i];
-        dy = (wl_real)(yi - p->pos[1][j]);
-        r2 += dy * dy;
-      }
-      if (r2 >= k->support2) continue;
-      wl_real vx = p->vel[0][i] - p->vel[0][j], vz = p->vel[az][i] - p->vel[az][j];
-      wl_real rho_i = p->rho[i], p_i = wl_sph_pair_p_wall(k, wl_sph_eos_p(k, rho_i));
-      wl_real rv = dx * vx + dz * vz;
-      if (d3) rv += dy * ((mirror ? -p->vel[1][i] : p->vel[1][i]) - p->vel[1][j]);
-      wl_real inv_rho_j, vol_j;
-      wl_sph_pair_j_bound(k, rho_j, &inv_rho_j, &vol_j);
-      /* the solver's own fluid-boundary pair term (no density diffusion) */
-      struct wl_sph_pair pr =
-          laminar ? wl_sph_pair_eval(1, 0, k, r2, rv, dz, rho_i, 1 / rho_i, p_i, rho_j, inv_rho_j,
-                                     vol_j, p_j, k->av_fb, k->lam_fb)
-                  : wl_sph_pair_eval(0, 0, k, r2, rv, dz, rho_i, 1 / rho_i, p_i, rho_j, inv_rho_j,
-                                     vol_j, p_j, k->av_fb, 0);
-      double ax = (double)pr.c_r * dx + (double)pr.c_v * vx;
-      double fij = -(double)k->mass * ax;
-      fx += fij;
-      /* the pair force acts between the two particles; what pushes on the
-       * foundation below the toe has no lever arm about it */
-      my += fij * fmax(0.0, 0.5 * (p->pos[az][i] + p->pos[az][j]) - f->z_toe);
-    }
-  }
-  if (d3) { /* per wall -> per metre */
-    fx /= f->width;
-    my /= f->width;
-  }
-  *force = fx;
-  *moment = my;
   return WL_OK;
 }
 
@@ -266,7 +205,7 @@ static enum wl_status on_output(void *user, struct wl_sph_sim *sim, double t,
                      &r->moment[row]);
   }
   const struct wl_sph_const *k = wl_sph_sim_const(sim);
-  if ((st = boundary_force(rc, p, k, &r->force_bound[row], &r->moment_bound[row], err)))
+  if ((st = boundary_force(rc, sim, &r->force_bound[row], &r->moment_bound[row], err)))
     return st;
   double kin = 0.0, pot = 0.0, mom = 0.0;
   const int az = p->dim - 1;
@@ -429,7 +368,6 @@ static enum wl_status run_case(const struct wl_assess_opts *opts,
   wl_sph_probe_free(rc.probe);
   wl_sph_sim_free(sim);
   free(rc.refs);
-  free(rc.near);
   return st;
 }
 

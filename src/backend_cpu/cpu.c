@@ -188,18 +188,13 @@ static WL_INLINE void block_generic(const int dim, const int laminar, const stru
   for (int i0 = e->begin[c0]; i0 < i_stop;) {
     int span;
     const int m = next_block(e, nc, nx, c1, i0, i_stop, &span);
-    wl_sph_gather_block(dim, laminar, WL_SPH_LANES, &c->k, &c->grid, e, nb, i0, m, span);
+    wl_sph_gather_block(dim, laminar, WL_SPH_LANES, 0, &c->k, &c->grid, e, nb, i0, m, span);
     for (int i = i0; i < i0 + m; i++) {
-      visc = visc > e->visc[i] ? visc : e->visc[i];
-      if (i >= nb) {
-        double a2 = 0, v2 = 0;
-        for (int a = 0; a < dim; a++) {
-          a2 += (double)e->ace[a][i] * e->ace[a][i];
-          v2 += (double)e->vel[a][i] * e->vel[a][i];
-        }
-        ace2 = ace2 > a2 ? ace2 : a2;
-        vel2 = vel2 > v2 ? vel2 : v2;
-      }
+      double a2 = 0, v2 = 0, vi = 0;
+      wl_sph_eval_dt_input(dim, e, i, nb, &a2, &v2, &vi);
+      visc = visc > vi ? visc : vi;
+      ace2 = ace2 > a2 ? ace2 : a2;
+      vel2 = vel2 > v2 ? vel2 : v2;
     }
     i0 += m;
   }
@@ -415,6 +410,48 @@ static void guard(struct cpu *c, const struct wl_sph_step_in *in, struct wl_sph_
   out->fault_rho = p->rho[first];
 }
 
+/* ---- the wall load ------------------------------------------------------------ */
+
+/* backend.h wall_load: the cell lists of the current state, every
+ * particle's pressure from its stored density, then each fluid particle's
+ * share (sph/gather.h wl_sph_gather_wall_load) into pos_h, which holds
+ * nothing between steps (the next predictor or Verlet step writes it
+ * before reading), summed in index order. */
+static enum wl_status cpu_wall_load(void *ctx, int body, double z_ref, double *force,
+                                    double *moment, struct wl_error *err) {
+  struct cpu *c = ctx;
+  struct wl_particles *p = &c->p;
+  const struct wl_sph_const *k = &c->k;
+  const int n = p->n, nb = p->n_bound, dim = p->dim;
+  const int laminar = k->visc == WL_SPH_VISC_LAMINAR;
+  (void)err;
+  rebuild(c);
+  const struct wl_sph_eval e0 = wl_sph_eval_inputs(dim, p->pos, p->vel, p->rho, p->key, c->begin);
+  struct wl_sph_eval e = e0;
+  e.press = p->press;
+  double *fx = p->pos_h[0], *my = p->pos_h[1];
+#pragma omp parallel num_threads(threads(c))
+  {
+#pragma omp for schedule(static)
+    for (int i = 0; i < n; i++) p->press[i] = wl_sph_eos_p(k, p->rho[i]);
+#pragma omp for schedule(dynamic, 256)
+    for (int i = nb; i < n; i++) {
+      if (dim == 2 && laminar) wl_sph_gather_wall_load(2, 1, k, &c->grid, &e, p->body, body, z_ref, i, &fx[i], &my[i]);
+      else if (dim == 2) wl_sph_gather_wall_load(2, 0, k, &c->grid, &e, p->body, body, z_ref, i, &fx[i], &my[i]);
+      else if (laminar) wl_sph_gather_wall_load(3, 1, k, &c->grid, &e, p->body, body, z_ref, i, &fx[i], &my[i]);
+      else wl_sph_gather_wall_load(3, 0, k, &c->grid, &e, p->body, body, z_ref, i, &fx[i], &my[i]);
+    }
+  }
+  double sx = 0.0, sm = 0.0;
+  for (int i = nb; i < n; i++) {
+    sx += fx[i];
+    sm += my[i];
+  }
+  *force = sx;
+  *moment = sm;
+  return WL_OK;
+}
+
 /* ---- the backend operations ------------------------------------------------- */
 
 static void cpu_free(void *ctx) {
@@ -546,4 +583,5 @@ const struct wl_backend_ops wl_backend_cpu_ops = {
     .download = cpu_download,
     .describe = cpu_describe,
     .free = cpu_free,
+    .wall_load = cpu_wall_load,
 };

@@ -11,45 +11,39 @@
  *   walls     with the wall condition (the default), k_wall: one thread per
  *             boundary particle samples the fluid (sph/wall.h); the force
  *             loops then start at the first fluid particle
- *   forces    one thread per particle, the pair physics of sph/interact.h
- *             summed as wl_sph_gather (sph/gather.h) does (three loops,
- *             below) at the step start; predictor (sph/integrate.h) and the
- *             forces again at the half step
+ *   forces    the force loop of the dimension (below) at the step start;
+ *             predictor (sph/integrate.h) and the forces again at the half
+ *             step
  *   corrector and guard (sph/guard.h) in one kernel; the first faulty
  *             particle (lowest sorted index) by an atomic min
- *   dt        max |a|^2, max |v|^2 of fluid particles and max h|v.r|/(r^2 +
- *             eta^2): block reductions, one atomic max of the bit pattern per
- *             block (exact: the max of non-negative doubles does not depend
- *             on the order)
+ *   dt        each particle's time-step input (sph/gather.h
+ *             wl_sph_eval_dt_input), then block reductions, one atomic max
+ *             of the bit pattern per block (exact: the max of non-negative
+ *             doubles does not depend on the order); the formula is
+ *             backend.h wl_sph_step_dt, on the host
+ *   wall load at an output (backend.h wall_load): sort, one thread per
+ *             fluid particle (sph/gather.h wl_sph_gather_wall_load), one
+ *             block's sum in a fixed order
  *
  * The host reads back one small record per step (the maxima and the fault)
  * and touches particle data only in download. Everything is allocated in
  * init (no allocation in step); init checks cudaMemGetInfo first.
  *
- * Three force loops, chosen by the environment variable WL_CUDA_GATHER;
- * each sums the same pair terms (sph/interact.h wl_sph_pair_eval) for every
- * particle, and test_cuda_backend checks the default against the reference
- * loop and against the CPU:
- *  - "ref": wl_sph_gather itself, one thread per particle (branch-free:
- *    every candidate j in the 3 or 9 cell rows costs a pair evaluation);
- *  - "fast" (2D default): the same loop, but a candidate farther than 2h
- *    (with a 1e-4 relative margin on r^2) is skipped before the pair
- *    evaluation. Such a pair adds exact zeros in the reference loop (W,
- *    grad W and the viscous dt term are 0 beyond the support), so each sum
- *    gets the same terms in the same order: bit-identical to "ref". In 3D a
- *    warp still pays a pair evaluation for nearly every candidate, because
- *    one of its 32 particles nearly always has it inside the support;
- *  - "split" (3D default): the warp stages its particles' candidates in
+ * The force loops run the shared loop bodies of sph/gather.h and differ
+ * only in how they find each particle's candidates:
+ *  - k_gather (2D; 3D with double wl_real): wl_sph_gather_block itself, one
+ *    thread per particle, with the cut-off skip (a candidate beyond 2h is
+ *    not evaluated; the same bits as without it);
+ *  - k_gather_split (3D): the warp stages its particles' candidates in
  *    shared memory, marks those inside each particle's support, and splits
- *    the marked pairs evenly over its 32 lanes (k_gather_split, below). The
- *    same terms in the same order per particle, summed in runs: equal to
- *    "ref" to float rounding.
- * Every variant ends with the shared finish (sph/gather.h wl_sph_finish:
- * gravity, the DDT2 switch, the time-step input). The order of the sums
- * (fluid then boundary, the mirror planes' passes: mirror_fast) is
- * mirrored in k_gather_fast and k_gather_split: a change in
- * wl_sph_gather_block's order must be made here too (the test's comparison
- * with the reference loop catches a divergence). */
+ *    the marked pairs evenly over its 32 lanes; each pair is
+ *    wl_sph_pair_sum, the mirror planes' rows wl_sph_gather_mirrors, the
+ *    end wl_sph_finish. The same terms in the same order per particle,
+ *    summed in runs: equal to the reference loop to float rounding.
+ * The reference loop (k_gather without the skip, wl_sph_gather) and the
+ * loops of the other dimension are built only in the tests' build of this
+ * file (WL_CUDA_TEST_LOOPS, tests/CMakeLists.txt), where test_cuda_backend
+ * compares every loop with it and with the CPU. */
 #include <cuda_runtime.h>
 #include <math.h>
 #include <stdio.h>
@@ -72,11 +66,36 @@ extern "C" {
 #include "wallload/sph/wall.h"
 #include "wallload/sph/shift.h"
 
+/* Everything but the exported backend tables has internal linkage, so that
+ * the tests' build of this file links beside the product's. */
+namespace {
+
 /* Threads per block of every particle kernel. */
 enum { THREADS = 128 };
 
-/* Force loops (see the file header). */
+/* Force loops (see the file header): the reference loop (tests only),
+ * the one-thread-per-particle loop with the cut-off skip, the split loop. */
 enum { MODE_REF = 0, MODE_FAST = 1, MODE_SPLIT = 2 };
+
+/* 1 in the tests' build of this file (tests/CMakeLists.txt), which has
+ * every loop in both dimensions and exports one backend per loop. */
+#ifndef WL_CUDA_TEST_LOOPS
+#define WL_CUDA_TEST_LOOPS 0
+#endif
+
+/* The product's loop of dimension dim: split in 3D, where staging pays
+ * (cells of ~30 particles); fast in 2D, where a cell holds ~8 and the
+ * warp's rows are too short for it (split ran at half the rate of fast
+ * there on the H100, docs/history/BENCHMARKS-history.md), and in a build
+ * with double wl_real, which split's float staging would narrow. */
+static constexpr int default_mode(int dim) {
+  return dim == 3 && !WL_REAL_DOUBLE ? MODE_SPLIT : MODE_FAST;
+}
+
+/* Whether this build has loop `mode` for dimension dim. */
+static constexpr bool loop_built(int mode, int dim) {
+  return WL_CUDA_TEST_LOOPS ? mode != MODE_SPLIT || !WL_REAL_DOUBLE : mode == default_mode(dim);
+}
 
 /* ---- error checking ----------------------------------------------------- */
 
@@ -105,6 +124,7 @@ struct dstats {
   double pos[WL_SPH_DIM_MAX], vel[WL_SPH_DIM_MAX], rho;
   unsigned long long limited; /* particles the wall limiter moved */
   unsigned long long excluded; /* particles that left the domain box (guard.h wl_sph_exclude) */
+  double load[2];              /* wall_load: force [N or N/m], moment [N m or N m/m] */
 };
 
 /* Read-only configuration on the device (guard). */
@@ -123,7 +143,7 @@ struct gpu {
   struct wl_sph_const k;
   struct wl_sph_grid grid;
   int dim, n, nb, end_bit;
-  int mode; /* force loop: MODE_REF, MODE_FAST or MODE_SPLIT (WL_CUDA_GATHER) */
+  int mode; /* force loop: MODE_FAST or MODE_SPLIT (MODE_REF in the tests' build) */
   /* device arrays (current roles; sorting swaps pos<->pos_h, vel<->vel_h,
    * rho<->rho_h, id<->ar, kind<->kind_alt, body<->body_alt) */
   double *pos[WL_SPH_DIM_MAX], *pos_h[WL_SPH_DIM_MAX];
@@ -256,178 +276,36 @@ static __device__ __forceinline__ void block_max3(double a, double b, double c, 
   }
 }
 
-/* The maxima of particle i after its force evaluation, as the CPU backend
- * takes them (double sums of float squares, no contraction). */
-template <int DIM>
-static __device__ __forceinline__ void particle_max(const struct wl_sph_eval *e, int i, int nb,
-                                                    double *a2, double *v2, double *vi) {
-  *vi = (double)e->visc[i];
-  if (i >= nb) {
-    double sa = 0, sv = 0;
-    for (int c = 0; c < DIM; c++) {
-      sa = __dadd_rn(sa, __dmul_rn((double)e->ace[c][i], (double)e->ace[c][i]));
-      sv = __dadd_rn(sv, __dmul_rn((double)e->vel[c][i], (double)e->vel[c][i]));
-    }
-    *a2 = sa;
-    *v2 = sv;
-  }
-}
-
-/* Reference force loop: the shared wl_sph_gather, one thread per particle. */
-template <int DIM, int LAM>
-__global__ void __launch_bounds__(THREADS)
-    k_gather_ref(const struct wl_sph_const kp, const struct wl_sph_grid gp,
-                 const struct wl_sph_eval ep, int i0, int n, int nb, struct dstats *st) {
+/* The one-thread-per-particle force loop: the shared wl_sph_gather_block
+ * for one particle (lanes = 1). CUT = 1 (the product's loop in 2D, and in
+ * 3D with double wl_real): candidates beyond the support are skipped
+ * before their pair is evaluated, the same bits as CUT = 0, the reference
+ * loop that only the tests build (WL_CUDA_TEST_LOOPS). In 3D a warp still
+ * pays a pair evaluation for nearly every candidate, because one of its 32
+ * particles nearly always has it inside the support: the split loop below
+ * is the 3D one. */
+/* Resident blocks per multiprocessor the 2D k_gather with the skip (the
+ * product's 2D loop) is compiled for: 10 blocks of 128 threads cap it at
+ * 48 registers without spills (ptxas), the occupancy of the earlier
+ * hand-written copy of this loop; left to itself ptxas takes 56-64 and
+ * fits 9 or 8 blocks. In 3D the cap would spill: none there. */
+#ifndef WL_GATHER_MIN_BLOCKS
+#define WL_GATHER_MIN_BLOCKS 10
+#endif
+template <int DIM, int LAM, int CUT>
+__global__ void __launch_bounds__(THREADS, DIM == 2 && CUT ? WL_GATHER_MIN_BLOCKS : 1)
+    k_gather(const struct wl_sph_const kp, const struct wl_sph_grid gp,
+             const struct wl_sph_eval ep, int i0, int n, int nb, struct dstats *st) {
   const struct wl_sph_const k = kp;
   const struct wl_sph_grid g = gp;
   const struct wl_sph_eval e = ep;
   const int i = i0 + tid();
   double a2 = 0, v2 = 0, vi = 0;
   if (i < n) {
-    wl_sph_gather(DIM, LAM, &k, &g, &e, nb, i);
-    particle_max<DIM>(&e, i, nb, &a2, &v2, &vi);
+    wl_sph_gather_block(DIM, LAM, 1, CUT, &k, &g, &e, nb, i, 1, 0);
+    wl_sph_eval_dt_input(DIM, &e, i, nb, &a2, &v2, &vi);
   }
   block_max3(a2, v2, vi, st);
-}
-
-/* Sums of one particle (wl_sph_acc for one lane). */
-struct acc1 {
-  wl_real a[3], cont, ddt, wsum, visc;
-};
-
-/* wl_sph_gather_range for one lane, skipping candidates beyond the support
- * (see the file header: they add exact zeros in the reference loop). */
-template <int DIM, int LAM, int WANT_ACE, int WITH_DDT>
-static __device__ __forceinline__ void range_fast(const struct wl_sph_const *k,
-                                                  const struct wl_sph_eval *e, const double xi[3],
-                                                  const wl_real vi[3], wl_real rho_i,
-                                                  wl_real inv_rho_i, wl_real p_i, int j0, int j1,
-                                                  wl_real av, wl_real lam, wl_real r2_skip,
-                                                  const int mirror, struct acc1 *acc) {
-  const int az = DIM - 1;
-  const double *__restrict__ px = e->pos[0];
-  const double *__restrict__ py = e->pos[DIM == 3 ? 1 : 0];
-  const double *__restrict__ pz = e->pos[az];
-  /* mirror 1 or 2: j's image in the plane y = k->mirror_y[mirror - 1], as
-   * wl_sph_gather_range */
-  const double y2 = DIM == 3 && mirror ? 2.0 * k->mirror_y[mirror - 1] : 0.0;
-  for (int j = j0; j < j1; j++) {
-    const double yj = DIM != 3 ? 0.0 : mirror ? y2 - __ldg(py + j) : __ldg(py + j);
-    const wl_real dx = (wl_real)(xi[0] - __ldg(px + j));
-    const wl_real dy = DIM == 3 ? (wl_real)(xi[1] - yj) : WL_R(0.0);
-    const wl_real dz = (wl_real)(xi[2] - __ldg(pz + j));
-    const wl_real r2 = dx * dx + dy * dy + dz * dz;
-    if (!(r2 < r2_skip)) continue;
-    const wl_real vyj = DIM == 3 ? __ldg(e->vel[1] + j) : WL_R(0.0);
-    const wl_real uxj = __ldg(e->vel[0] + j), uyj = mirror ? -vyj : vyj,
-                  uzj = __ldg(e->vel[az] + j);
-    const wl_real rho_j = __ldg(e->rho + j), p_j = __ldg(e->press + j);
-    wl_real inv_rho_j, vol_j;
-    if (WANT_ACE && !WITH_DDT) wl_sph_pair_j_bound(k, rho_j, &inv_rho_j, &vol_j); /* as gather.h */
-    else wl_sph_pair_j(k, rho_j, &inv_rho_j, &vol_j);
-    const wl_real ux = vi[0] - uxj;
-    const wl_real uy = DIM == 3 ? vi[1] - uyj : WL_R(0.0);
-    const wl_real uz = vi[2] - uzj;
-    const wl_real rv = dx * ux + dy * uy + dz * uz;
-    const wl_real p_ip = WANT_ACE && !WITH_DDT ? wl_sph_pair_p_wall(k, p_i) : p_i; /* gather.h */
-    const struct wl_sph_pair o = wl_sph_pair_eval(LAM, WITH_DDT, k, r2, rv, dz, rho_i, inv_rho_i,
-                                                  p_ip, rho_j, inv_rho_j, vol_j, p_j, av, lam);
-    if (WANT_ACE)
-      wl_sph_pair_add_ace(DIM, LAM, &o, dx, dy, dz, ux, uy, uz, &acc->a[0], &acc->a[1],
-                          &acc->a[2]);
-    acc->cont += o.cont;
-    acc->ddt += o.ddt;
-    acc->wsum += o.wq;
-    acc->visc = wl_sph_max_nonneg(acc->visc, o.visc);
-  }
-}
-
-/* The mirror planes' passes of wl_sph_gather_block for one particle (3D,
- * k->mirror set): the images of the fluid rows beside each plane into f,
- * and for a fluid particle the images of the boundary rows into b. Called
- * after the ordinary rows; f and b are separate sums, so each still gets
- * its terms in the reference loop's order (ordinary rows, low plane, high
- * plane). A particle away from the planes has no mirror rows. */
-template <int DIM, int LAM>
-static __device__ __forceinline__ void mirror_fast(const struct wl_sph_const *k,
-                                                   const struct wl_sph_grid *g,
-                                                   const struct wl_sph_eval *e, int cell,
-                                                   int fluid, const double xi[3],
-                                                   const wl_real vi[3], wl_real rho_i,
-                                                   wl_real inv_rho_i, wl_real p_i,
-                                                   wl_real r2_skip, struct acc1 *f,
-                                                   struct acc1 *b) {
-  if (DIM != 3 || !k->mirror) return;
-  const int *const bf = e->begin + g->n_cells, *const bb = e->begin;
-  int mf[2][6], ml[2][6], nm[2];
-  wl_sph_cell_rows_mirrors(g, k->mirror, cell, 0, mf, ml, nm);
-  for (int side = 0; side < 2; side++)
-    for (int r = 0; r < nm[side]; r++) {
-      if (fluid)
-        range_fast<DIM, LAM, 1, 1>(k, e, xi, vi, rho_i, inv_rho_i, p_i, bf[mf[side][r]],
-                                   bf[ml[side][r] + 1], k->av_ff, k->lam_ff, r2_skip, side + 1, f);
-      else
-        range_fast<DIM, LAM, 0, 0>(k, e, xi, vi, rho_i, inv_rho_i, p_i, bf[mf[side][r]],
-                                   bf[ml[side][r] + 1], k->av_fb, k->lam_fb, r2_skip, side + 1, f);
-    }
-  if (fluid)
-    for (int side = 0; side < 2; side++)
-      for (int r = 0; r < nm[side]; r++)
-        range_fast<DIM, LAM, 1, 0>(k, e, xi, vi, rho_i, inv_rho_i, p_i, bb[mf[side][r]],
-                                   bb[ml[side][r] + 1], k->av_fb, k->lam_fb, r2_skip, side + 1, b);
-}
-
-/* wl_sph_gather_block for one particle (lanes = 1, span 0) with range_fast. */
-template <int DIM, int LAM>
-__global__ void __launch_bounds__(THREADS)
-    k_gather_fast(const struct wl_sph_const kp, const struct wl_sph_grid gp,
-                  const struct wl_sph_eval ep, int i0, int n, int nb, wl_real r2_skip,
-                  struct dstats *st) {
-  const struct wl_sph_const k = kp;
-  const struct wl_sph_grid g = gp;
-  const struct wl_sph_eval e = ep;
-  const int i = i0 + tid();
-  double a2 = 0, v2 = 0, vmax = 0;
-  if (i < n) {
-    const int nc = g.n_cells;
-    const int fluid = i >= nb;
-    const int cell = (int)e.key[i] - (fluid ? nc : 0);
-    int first[9], last[9];
-    const int nr = wl_sph_cell_rows(DIM, &g, cell, 0, first, last);
-    const int *const bf = e.begin + nc;
-    const int *const bb = e.begin;
-    const int az = DIM - 1;
-    double xi[3];
-    wl_real vi[3];
-    xi[0] = e.pos[0][i];
-    xi[1] = DIM == 3 ? e.pos[1][i] : 0.0;
-    xi[2] = e.pos[az][i];
-    vi[0] = e.vel[0][i];
-    vi[1] = DIM == 3 ? e.vel[1][i] : WL_R(0.0);
-    vi[2] = e.vel[az][i];
-    const wl_real rho_i = e.rho[i], inv_rho_i = wl_sph_rcp(rho_i), p_i = e.press[i];
-    struct acc1 f = {{0, 0, 0}, 0, 0, 0, 0};
-    if (fluid) {
-      struct acc1 b = f;
-      for (int r = 0; r < nr; r++)
-        range_fast<DIM, LAM, 1, 1>(&k, &e, xi, vi, rho_i, inv_rho_i, p_i, bf[first[r]],
-                                   bf[last[r] + 1], k.av_ff, k.lam_ff, r2_skip, 0, &f);
-      for (int r = 0; r < nr; r++)
-        range_fast<DIM, LAM, 1, 0>(&k, &e, xi, vi, rho_i, inv_rho_i, p_i, bb[first[r]],
-                                   bb[last[r] + 1], k.av_fb, k.lam_fb, r2_skip, 0, &b);
-      mirror_fast<DIM, LAM>(&k, &g, &e, cell, 1, xi, vi, rho_i, inv_rho_i, p_i, r2_skip, &f, &b);
-      wl_sph_finish(DIM, &k, &e, i, 1, rho_i, f.a, f.cont, f.ddt, f.visc, b.a, b.cont, b.wsum,
-                    b.visc);
-    } else {
-      for (int r = 0; r < nr; r++)
-        range_fast<DIM, LAM, 0, 0>(&k, &e, xi, vi, rho_i, inv_rho_i, p_i, bf[first[r]],
-                                   bf[last[r] + 1], k.av_fb, k.lam_fb, r2_skip, 0, &f);
-      mirror_fast<DIM, LAM>(&k, &g, &e, cell, 0, xi, vi, rho_i, inv_rho_i, p_i, r2_skip, &f, &f);
-      wl_sph_finish(DIM, &k, &e, i, 0, rho_i, f.a, f.cont, 0, f.visc, f.a, 0, 0, 0);
-    }
-    particle_max<DIM>(&e, i, nb, &a2, &v2, &vmax);
-  }
-  block_max3(a2, v2, vmax, st);
 }
 
 /* Candidates a warp stages in shared memory per batch (one 64-bit mask). */
@@ -540,50 +418,44 @@ static __device__ __forceinline__ unsigned split_marks32(const float4 *cr, float
   return __brev(m); /* candidate 0 went in first, so it is bit 31 */
 }
 
-/* Add pair (particle ri, vi, inv_rho_i; staged candidate s) to acc: the
- * body of wl_sph_gather_range for one lane, from float offsets. */
+/* Add pair (particle ri, vi, inv_rho_i; staged candidate s) to lane 0 of
+ * acc: the shared pair body (sph/gather.h wl_sph_pair_sum) from float
+ * offsets. */
 template <int DIM, int LAM, int WANT_ACE, int WITH_DDT>
 static __device__ __forceinline__ void split_pair(const struct wl_sph_const *k,
                                                   const struct split_warp *w, int s, float4 ri,
                                                   float4 vi, wl_real inv_rho_i, wl_real av,
-                                                  wl_real lam, struct acc1 *acc) {
+                                                  wl_real lam, struct wl_sph_acc *acc) {
   const float4 rj = w->cr[s], vj = w->cv[s];
   const float4 pj = w->cj[s];
-  const wl_real dx = ri.x - rj.x;
-  const wl_real dy = DIM == 3 ? ri.y - rj.y : WL_R(0.0);
-  const wl_real dz = ri.z - rj.z;
-  const wl_real ux = vi.x - vj.x;
-  const wl_real uy = DIM == 3 ? vi.y - vj.y : WL_R(0.0);
-  const wl_real uz = vi.z - vj.z;
-  const wl_real r2 = dx * dx + dy * dy + dz * dz;
-  const wl_real rv = dx * ux + dy * uy + dz * uz;
-  const wl_real p_i = WANT_ACE && !WITH_DDT ? wl_sph_pair_p_wall(k, vi.w) : vi.w; /* gather.h */
-  const struct wl_sph_pair o = wl_sph_pair_eval(LAM, WITH_DDT, k, r2, rv, dz, ri.w, inv_rho_i, p_i,
-                                                pj.x, pj.y, pj.z, vj.w, av, lam);
-  if (WANT_ACE)
-    wl_sph_pair_add_ace(DIM, LAM, &o, dx, dy, dz, ux, uy, uz, &acc->a[0], &acc->a[1], &acc->a[2]);
-  acc->cont += o.cont;
-  if (WITH_DDT) acc->ddt += o.ddt;
-  acc->wsum += o.wq;
-  acc->visc = wl_sph_max_nonneg(acc->visc, o.visc);
+  wl_sph_pair_sum(DIM, LAM, WANT_ACE, WITH_DDT, k, ri.x - rj.x,
+                  DIM == 3 ? ri.y - rj.y : WL_R(0.0), ri.z - rj.z, vi.x - vj.x,
+                  DIM == 3 ? vi.y - vj.y : WL_R(0.0), vi.z - vj.z, ri.w, inv_rho_i, vi.w, pj.x,
+                  pj.y, pj.z, vj.w, av, lam, acc, 0);
+}
+
+/* Lane 0 of acc to 0. */
+static __device__ __forceinline__ void split_zero(struct wl_sph_acc *r) {
+  for (int c = 0; c < 3; c++) r->a[c][0] = 0;
+  r->cont[0] = r->ddt[0] = r->wsum[0] = r->visc[0] = 0;
 }
 
 static __device__ __forceinline__ void split_store(struct split_warp *w, int slot,
-                                                   const struct acc1 *r) {
-  for (int c = 0; c < 3; c++) w->run[c][slot] = r->a[c];
-  w->run[3][slot] = r->cont;
-  w->run[4][slot] = r->ddt;
-  w->run[5][slot] = r->wsum > 0 ? r->visc : WL_R(-1.0);
+                                                   const struct wl_sph_acc *r) {
+  for (int c = 0; c < 3; c++) w->run[c][slot] = r->a[c][0];
+  w->run[3][slot] = r->cont[0];
+  w->run[4][slot] = r->ddt[0];
+  w->run[5][slot] = r->wsum[0] > 0 ? r->visc[0] : WL_R(-1.0);
 }
 
 static __device__ __forceinline__ void split_add(const struct split_warp *w, int slot,
-                                                 struct acc1 *acc) {
-  for (int c = 0; c < 3; c++) acc->a[c] += w->run[c][slot];
-  acc->cont += w->run[3][slot];
-  acc->ddt += w->run[4][slot];
+                                                 struct wl_sph_acc *acc) {
+  for (int c = 0; c < 3; c++) acc->a[c][0] += w->run[c][slot];
+  acc->cont[0] += w->run[3][slot];
+  acc->ddt[0] += w->run[4][slot];
   const wl_real v = w->run[5][slot];
-  if (v >= 0) acc->wsum = WL_R(1.0);
-  acc->visc = wl_sph_max_nonneg(acc->visc, v);
+  if (v >= 0) acc->wsum[0] = WL_R(1.0);
+  acc->visc[0] = wl_sph_max_nonneg(acc->visc[0], v);
 }
 
 /* x less its k lowest set bits (0 <= k < popc(x), or k = 0): the position
@@ -609,7 +481,7 @@ static __device__ __forceinline__ void split_batch(const struct wl_sph_const *k,
                                                    struct split_warp *w, int lane,
                                                    unsigned long long m, int mc, int excl,
                                                    int total, wl_real av, wl_real lam,
-                                                   struct acc1 *acc) {
+                                                   struct wl_sph_acc *acc) {
   w->mask[lane] = m;
   w->excl[lane] = excl;
   const unsigned with_marks = __ballot_sync(0xffffffffu, mc > 0);
@@ -639,7 +511,8 @@ static __device__ __forceinline__ void split_batch(const struct wl_sph_const *k,
     int slot = q0 == w->excl[l] ? l : 32 + lane;
     float4 ri = w->sr[l], vi = w->sv[l];
     wl_real inv_rho_i = w->sinv[l];
-    struct acc1 r = {{0, 0, 0}, 0, 0, 0, 0};
+    struct wl_sph_acc r;
+    split_zero(&r);
     for (int left = q1 - q0; left > 0; left--) {
       if (!cur) { /* rare: one of these per particle and half */
         if (nxt) { /* on to the upper half */
@@ -648,7 +521,7 @@ static __device__ __forceinline__ void split_batch(const struct wl_sph_const *k,
           base = 32;
         } else { /* this particle's pairs are done: the next one's */
           split_store(w, slot, &r);
-          r = acc1{{0, 0, 0}, 0, 0, 0, 0};
+          split_zero(&r);
           l = __ffs(with_marks & (0xfffffffeu << l)) - 1; /* next lane with marks */
           mm = w->mask[l];
           cur = (unsigned)mm;
@@ -693,8 +566,8 @@ template <int DIM, int LAM>
 static __device__ __forceinline__ void split_group(const struct wl_sph_const *k,
                                                    struct split_warp *w, int lane, bool in_seg,
                                                    float4 self, int fill, int grp,
-                                                   int seg_fluid, struct acc1 *f,
-                                                   struct acc1 *b) {
+                                                   int seg_fluid, struct wl_sph_acc *f,
+                                                   struct wl_sph_acc *b) {
   __syncwarp();
   unsigned long long m = 0;
   if (in_seg) {
@@ -727,7 +600,7 @@ template <int DIM, int LAM>
 __global__ void __launch_bounds__(WL_SPLIT_THREADS, WL_SPLIT_MIN_BLOCKS)
     k_gather_split(const struct wl_sph_const kp, const struct wl_sph_grid gp,
                    const struct wl_sph_eval ep, int i0, int n, int nb, float skip2,
-                   wl_real r2_skip, struct dstats *st) {
+                   struct dstats *st) {
   __shared__ struct split_warp warps[WL_SPLIT_THREADS / 32];
   const struct wl_sph_const k = kp;
   const struct wl_sph_grid g = gp;
@@ -755,8 +628,9 @@ __global__ void __launch_bounds__(WL_SPLIT_THREADS, WL_SPLIT_MIN_BLOCKS)
     w->sinv[lane] = WL_R(1.0);
     w->sr[lane].w = WL_R(1.0);
   }
-  struct acc1 f = {{0, 0, 0}, 0, 0, 0, 0};
-  struct acc1 b = f;
+  struct wl_sph_acc f, b;
+  split_zero(&f);
+  split_zero(&b);
   const unsigned seg_id = ((unsigned)fluid << 31) | (unsigned)rest;
   unsigned pending = __ballot_sync(0xffffffffu, active);
   while (pending) {
@@ -833,8 +707,7 @@ __global__ void __launch_bounds__(WL_SPLIT_THREADS, WL_SPLIT_MIN_BLOCKS)
             w->cr[slot] = cr;
             w->cv[slot] = cv;
             wl_real inv_rho_j, vol_j;
-            if (grp) wl_sph_pair_j(&k, rho_j, &inv_rho_j, &vol_j);
-            else wl_sph_pair_j_bound(&k, rho_j, &inv_rho_j, &vol_j); /* fluid i, boundary j */
+            wl_sph_pair_j_of(seg_fluid, grp, &k, rho_j, &inv_rho_j, &vol_j);
             w->cj[slot] = make_float4(rho_j, inv_rho_j, vol_j, 0.f);
           }
           fill += __popc(kept);
@@ -850,16 +723,20 @@ __global__ void __launch_bounds__(WL_SPLIT_THREADS, WL_SPLIT_MIN_BLOCKS)
   }
   double a2 = 0, v2 = 0, vmax = 0;
   if (active) {
-    const double xi[3] = {e.pos[0][i], DIM == 3 ? e.pos[1][i] : 0.0, e.pos[az][i]};
-    const float4 sv = w->sv[lane];
-    const wl_real vi[3] = {sv.x, sv.y, sv.z}, rho_i = w->sr[lane].w, inv_rho_i = w->sinv[lane];
     /* the mirror planes' rows, per thread (only the particles beside a
      * plane have any); the walk above did the ordinary rows of f and b */
-    mirror_fast<DIM, LAM>(&k, &g, &e, cx + nx * rest, fluid, xi, vi, rho_i, inv_rho_i, sv.w,
-                          r2_skip, &f, &b);
-    wl_sph_finish(DIM, &k, &e, i, fluid, rho_i, f.a, f.cont, f.ddt, f.visc, b.a, b.cont, b.wsum,
-                  b.visc);
-    particle_max<DIM>(&e, i, nb, &a2, &v2, &vmax);
+    struct wl_sph_lanes in;
+    const float4 sv = w->sv[lane];
+    for (int a = 0; a < DIM; a++) in.x[a][0] = e.pos[a][i];
+    in.v[0][0] = sv.x;
+    if (DIM == 3) in.v[1][0] = sv.y;
+    in.v[az][0] = sv.z;
+    in.rho[0] = w->sr[lane].w;
+    in.inv_rho[0] = w->sinv[lane];
+    in.p[0] = sv.w;
+    wl_sph_gather_mirrors(DIM, LAM, 1, 1, &k, &g, &e, &in, fluid, cx + nx * rest, 0, &f, &b);
+    wl_sph_finish(DIM, &k, &e, i, fluid, in.rho[0], &f, &b, 0);
+    wl_sph_eval_dt_input(DIM, &e, i, nb, &a2, &v2, &vmax);
   }
   block_max3<WL_SPLIT_THREADS>(a2, v2, vmax, st);
 }
@@ -950,6 +827,52 @@ __global__ void k_fault(struct wl_sph_const kp, struct wl_particles p, int n,
     st->vel[a] = a < DIM ? (double)p.vel[a][f] : 0;
   }
   st->rho = p.rho[f];
+}
+
+/* The wall load (backend.h wall_load): each fluid particle's share
+ * (sph/gather.h wl_sph_gather_wall_load) into fx[i], my[i]. */
+template <int DIM, int LAM>
+__global__ void __launch_bounds__(THREADS)
+    k_wall_load(const struct wl_sph_const kp, const struct wl_sph_grid gp,
+                const struct wl_sph_eval ep, const unsigned char *__restrict__ body_of,
+                int body, double z_ref, int nb, int n, double *fx, double *my) {
+  const struct wl_sph_const k = kp;
+  const struct wl_sph_grid g = gp;
+  const struct wl_sph_eval e = ep;
+  const int i = nb + tid();
+  if (i < n) wl_sph_gather_wall_load(DIM, LAM, &k, &g, &e, body_of, body, z_ref, i, &fx[i], &my[i]);
+}
+
+/* Threads of k_load_sum's one block. */
+enum { LOAD_THREADS = 1024 };
+
+/* st->load = the sums of fx and my over [i0, n): thread t adds elements
+ * i0 + t, i0 + t + LOAD_THREADS, ... in order, then a tree over the
+ * threads; a fixed order, so the same bits on every run. */
+__global__ void __launch_bounds__(LOAD_THREADS)
+    k_load_sum(const double *__restrict__ fx, const double *__restrict__ my, int i0, int n,
+               struct dstats *st) {
+  __shared__ double sx[LOAD_THREADS], sm[LOAD_THREADS];
+  const int t = threadIdx.x;
+  double a = 0.0, b = 0.0;
+  for (int i = i0 + t; i < n; i += LOAD_THREADS) {
+    a += fx[i];
+    b += my[i];
+  }
+  sx[t] = a;
+  sm[t] = b;
+  __syncthreads();
+  for (int o = LOAD_THREADS / 2; o > 0; o >>= 1) {
+    if (t < o) {
+      sx[t] += sx[t + o];
+      sm[t] += sm[t + o];
+    }
+    __syncthreads();
+  }
+  if (t == 0) {
+    st->load[0] = sx[0];
+    st->load[1] = sm[0];
+  }
 }
 
 /* ---- host side ---------------------------------------------------------- */
@@ -1071,6 +994,37 @@ static enum wl_status rebuild(struct gpu *c, struct wl_error *err) {
   return WL_OK;
 }
 
+/* The force loop of c->mode for particles i0 .. n - 1 (one of those this
+ * build has, loop_built). */
+template <int DIM, int LAM>
+static void launch_gather(const struct gpu *c, const struct wl_sph_eval &e, int i0,
+                          cudaStream_t s) {
+  const int n = c->n, nb = c->nb;
+  if constexpr (loop_built(MODE_SPLIT, DIM)) {
+    if (c->mode == MODE_SPLIT) {
+      /* the staging filter's and the marks' threshold: (2h)^2 with a
+       * relative margin far above float rounding */
+      const float skip2 = (float)(4.0 * c->k.h_d * c->k.h_d * 1.0001);
+      const int nbs = (n - i0 + WL_SPLIT_THREADS - 1) / WL_SPLIT_THREADS;
+      k_gather_split<DIM, LAM><<<nbs, WL_SPLIT_THREADS, 0, s>>>(c->k, c->grid, e, i0, n, nb,
+                                                                skip2, c->stats);
+      return;
+    }
+  }
+  if constexpr (loop_built(MODE_FAST, DIM)) {
+    if (c->mode == MODE_FAST) {
+      k_gather<DIM, LAM, 1><<<blocks(n - i0), THREADS, 0, s>>>(c->k, c->grid, e, i0, n, nb,
+                                                               c->stats);
+      return;
+    }
+  }
+  if constexpr (loop_built(MODE_REF, DIM)) {
+    if (c->mode == MODE_REF)
+      k_gather<DIM, LAM, 0><<<blocks(n - i0), THREADS, 0, s>>>(c->k, c->grid, e, i0, n, nb,
+                                                               c->stats);
+  }
+}
+
 /* One force evaluation at (pos, vel, rho) with press already filled; with
  * the wall condition, the boundary particles' rho and press are sampled
  * first (body_acc: the moving bodies' accelerations, NULL at rest) and the
@@ -1106,28 +1060,11 @@ static enum wl_status evaluate(struct gpu *c, double *const *pos, wl_real *const
     else k_wall<2><<<blocks(nb), THREADS, 0, s>>>(c->k, c->grid, e, nb, w);
     CKL("wall");
   }
-  const int nbk = blocks(n - i0);
-  /* skip threshold: (2h)^2 with a relative margin far above float rounding */
-  const wl_real r2_skip = c->k.support2 * WL_R(1.0001);
   if (n == i0) return WL_OK;
-  if (c->mode == MODE_SPLIT) {
-    const float skip2 = (float)(4.0 * c->k.h_d * c->k.h_d * 1.0001);
-    const int nbs = (n - i0 + WL_SPLIT_THREADS - 1) / WL_SPLIT_THREADS, ts = WL_SPLIT_THREADS;
-    if (c->dim == 3 && !lam) k_gather_split<3, 0><<<nbs, ts, 0, s>>>(c->k, c->grid, e, i0, n, nb, skip2, r2_skip, c->stats);
-    else if (c->dim == 3) k_gather_split<3, 1><<<nbs, ts, 0, s>>>(c->k, c->grid, e, i0, n, nb, skip2, r2_skip, c->stats);
-    else if (!lam) k_gather_split<2, 0><<<nbs, ts, 0, s>>>(c->k, c->grid, e, i0, n, nb, skip2, r2_skip, c->stats);
-    else k_gather_split<2, 1><<<nbs, ts, 0, s>>>(c->k, c->grid, e, i0, n, nb, skip2, r2_skip, c->stats);
-  } else if (c->mode == MODE_FAST) {
-    if (c->dim == 3 && !lam) k_gather_fast<3, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, i0, n, nb, r2_skip, c->stats);
-    else if (c->dim == 3) k_gather_fast<3, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, i0, n, nb, r2_skip, c->stats);
-    else if (!lam) k_gather_fast<2, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, i0, n, nb, r2_skip, c->stats);
-    else k_gather_fast<2, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, i0, n, nb, r2_skip, c->stats);
-  } else {
-    if (c->dim == 3 && !lam) k_gather_ref<3, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, i0, n, nb, c->stats);
-    else if (c->dim == 3) k_gather_ref<3, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, i0, n, nb, c->stats);
-    else if (!lam) k_gather_ref<2, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, i0, n, nb, c->stats);
-    else k_gather_ref<2, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, i0, n, nb, c->stats);
-  }
+  if (c->dim == 3 && lam) launch_gather<3, 1>(c, e, i0, s);
+  else if (c->dim == 3) launch_gather<3, 0>(c, e, i0, s);
+  else if (lam) launch_gather<2, 1>(c, e, i0, s);
+  else launch_gather<2, 0>(c, e, i0, s);
   CKL("gather");
   return WL_OK;
 }
@@ -1216,6 +1153,38 @@ static enum wl_status cuda_step(void *ctx, const struct wl_sph_step_in *in,
   return finish(c, in, &bv, out, err);
 }
 
+/* backend.h wall_load: the cell lists of the current state (whose sort
+ * also fills press with the EOS of every particle's density), each fluid
+ * particle's share into pos_h (free between steps: rebuild left the old
+ * order's positions there), their sums, back to the host. */
+static enum wl_status cuda_wall_load(void *ctx, int body, double z_ref, double *force,
+                                     double *moment, struct wl_error *err) {
+  struct gpu *c = (struct gpu *)ctx;
+  *force = *moment = 0.0;
+  enum wl_status st = rebuild(c, err);
+  if (st) return st;
+  const int n = c->n, nb = c->nb, lam = c->k.visc == WL_SPH_VISC_LAMINAR;
+  if (n > nb) {
+    struct wl_sph_eval e = wl_sph_eval_inputs(c->dim, c->pos, c->vel, c->rho, c->key, c->begin);
+    e.press = c->press;
+    double *fx = c->pos_h[0], *my = c->pos_h[1];
+    const int nbk = blocks(n - nb);
+    cudaStream_t s = c->stream;
+    if (c->dim == 3 && lam) k_wall_load<3, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, c->body, body, z_ref, nb, n, fx, my);
+    else if (c->dim == 3) k_wall_load<3, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, c->body, body, z_ref, nb, n, fx, my);
+    else if (lam) k_wall_load<2, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, c->body, body, z_ref, nb, n, fx, my);
+    else k_wall_load<2, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, c->body, body, z_ref, nb, n, fx, my);
+    CKL("wall load");
+    k_load_sum<<<1, LOAD_THREADS, 0, s>>>(fx, my, nb, n, c->stats);
+    CKL("wall load sum");
+    CK(cudaMemcpyAsync(c->h_stats, c->stats, sizeof *c->stats, cudaMemcpyDeviceToHost, s));
+    CK(cudaStreamSynchronize(s));
+    *force = c->h_stats->load[0];
+    *moment = c->h_stats->load[1];
+  }
+  return WL_OK;
+}
+
 static void cuda_describe(void *ctx, char *buf, size_t size) {
   const struct gpu *c = (const struct gpu *)ctx;
   snprintf(buf, size,
@@ -1278,9 +1247,24 @@ static size_t bytes_per_particle(int dim, int shifting, int verlet) {
          + (verlet ? 2 * (size_t)(dim + 1) * sizeof(wl_real) : 0);  /* vel_m1, rho_m1, alts */
 }
 
-static enum wl_status cuda_init(void **ctx, const struct wl_sph_config *cfg,
+/* The split loop's kernels of dimension DIM asked for the most shared
+ * memory (cudaSuccess where this build has none). */
+template <int DIM> static cudaError_t split_carveout(void) {
+  if constexpr (loop_built(MODE_SPLIT, DIM)) {
+    const int most = cudaSharedmemCarveoutMaxShared;
+    const cudaFuncAttribute carve = cudaFuncAttributePreferredSharedMemoryCarveout;
+    cudaError_t e = cudaFuncSetAttribute(k_gather_split<DIM, 0>, carve, most);
+    if (e == cudaSuccess) e = cudaFuncSetAttribute(k_gather_split<DIM, 1>, carve, most);
+    return e;
+  }
+  return cudaSuccess;
+}
+
+/* backend.h init with force loop `mode` (-1: the product's for the
+ * dimension); WL_EINPUT for a loop this build does not have. */
+static enum wl_status init_mode(void **ctx, const struct wl_sph_config *cfg,
                                 const struct wl_sph_const *k, const struct wl_particles *host,
-                                struct wl_sph_step_out *out, struct wl_error *err) {
+                                struct wl_sph_step_out *out, int mode, struct wl_error *err) {
   *ctx = NULL;
   const int dim = cfg->prm.dim;
   enum wl_status st = wl_sph_check_particles("cuda", cfg, host, err);
@@ -1296,25 +1280,12 @@ static enum wl_status cuda_init(void **ctx, const struct wl_sph_config *cfg,
   c->dim = dim;
   c->n = host->n;
   c->nb = host->n_bound;
-  const char *mode = getenv("WL_CUDA_GATHER");
-  if (mode && strcmp(mode, "split") && strcmp(mode, "fast") && strcmp(mode, "ref")) {
+  c->mode = mode < 0 ? default_mode(dim) : mode;
+  if (!(dim == 3 ? loop_built(c->mode, 3) : loop_built(c->mode, 2))) {
     cuda_free(c);
-    return wl_error_set(err, WL_EINPUT, "cuda backend: WL_CUDA_GATHER=%s; valid: split (3D default), "
-                        "fast (2D default), ref", mode);
+    return wl_error_set(err, WL_EINPUT, "cuda backend: force loop %d is not in this build for "
+                        "%dD", mode, dim);
   }
-  /* default: split in 3D; fast in 2D, where a cell holds ~8 particles and a
-   * warp's rows are too short for staging to pay (split ran at half the
-   * rate of fast there on the H100, BENCHMARKS.md), and in a build with
-   * double wl_real, which the split loop's float staging would narrow */
-  if (WL_REAL_DOUBLE && mode && !strcmp(mode, "split")) {
-    cuda_free(c);
-    return wl_error_set(err, WL_EINPUT, "cuda backend: WL_CUDA_GATHER=split stages float "
-                        "values; this build has double wl_real (WL_REAL_DOUBLE): use fast or ref");
-  }
-  c->mode = !mode ? (dim == 3 && !WL_REAL_DOUBLE ? MODE_SPLIT : MODE_FAST)
-            : !strcmp(mode, "split") ? MODE_SPLIT
-            : !strcmp(mode, "fast") ? MODE_FAST
-                                    : MODE_REF;
   if ((st = wl_sph_grid_make(cfg, k, &c->grid, err))) {
     cuda_free(c);
     return st;
@@ -1322,13 +1293,7 @@ static enum wl_status cuda_init(void **ctx, const struct wl_sph_config *cfg,
   if (c->mode == MODE_SPLIT) {
     /* the most shared memory, so that 32 one-warp blocks fit an SM (see
      * WL_SPLIT_MIN_BLOCKS) */
-    cudaError_t e = cudaSuccess;
-    const int most = cudaSharedmemCarveoutMaxShared;
-    const cudaFuncAttribute carve = cudaFuncAttributePreferredSharedMemoryCarveout;
-    if (e == cudaSuccess) e = cudaFuncSetAttribute(k_gather_split<3, 0>, carve, most);
-    if (e == cudaSuccess) e = cudaFuncSetAttribute(k_gather_split<3, 1>, carve, most);
-    if (e == cudaSuccess) e = cudaFuncSetAttribute(k_gather_split<2, 0>, carve, most);
-    if (e == cudaSuccess) e = cudaFuncSetAttribute(k_gather_split<2, 1>, carve, most);
+    const cudaError_t e = dim == 3 ? split_carveout<3>() : split_carveout<2>();
     if (e != cudaSuccess) {
       cuda_free(c);
       return wl_error_set(err, WL_EIO, "cuda backend: cudaFuncSetAttribute (shared memory "
@@ -1473,6 +1438,34 @@ static enum wl_status cuda_init(void **ctx, const struct wl_sph_config *cfg,
   return WL_OK;
 }
 
+}  // namespace
+
+#if !WL_CUDA_TEST_LOOPS
+static enum wl_status cuda_init(void **ctx, const struct wl_sph_config *cfg,
+                                const struct wl_sph_const *k, const struct wl_particles *host,
+                                struct wl_sph_step_out *out, struct wl_error *err) {
+  return init_mode(ctx, cfg, k, host, out, -1, err);
+}
+
 extern "C" const struct wl_backend_ops wl_backend_cuda_ops = {
-    "cuda", cuda_init, cuda_step, cuda_download, cuda_describe, cuda_free,
+    "cuda", cuda_init, cuda_step, cuda_download, cuda_describe, cuda_free, cuda_wall_load,
 };
+#else
+/* The tests' build: one backend per force loop, for test_cuda_backend to
+ * compare (the product's wl_backend_cuda_ops comes from the product's
+ * build of this file). */
+#define TEST_OPS(loop, MODE)                                                                     \
+  static enum wl_status init_##loop(void **ctx, const struct wl_sph_config *cfg,                 \
+                                    const struct wl_sph_const *k,                                \
+                                    const struct wl_particles *host,                             \
+                                    struct wl_sph_step_out *out, struct wl_error *err) {         \
+    return init_mode(ctx, cfg, k, host, out, MODE, err);                                         \
+  }                                                                                              \
+  extern "C" const struct wl_backend_ops wl_backend_cuda_##loop##_ops = {                        \
+      "cuda", init_##loop, cuda_step, cuda_download, cuda_describe, cuda_free, cuda_wall_load,   \
+  };
+TEST_OPS(ref, MODE_REF)
+TEST_OPS(fast, MODE_FAST)
+TEST_OPS(split, MODE_SPLIT)
+#undef TEST_OPS
+#endif

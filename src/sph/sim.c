@@ -315,6 +315,20 @@ const struct wl_particles *wl_sph_sim_particles(struct wl_sph_sim *sim, struct w
   return &sim->host;
 }
 
+enum wl_status wl_sph_sim_wall_load(struct wl_sph_sim *sim, int body, double z_ref,
+                                    double *force, double *moment, struct wl_error *err) {
+  *force = *moment = 0.0;
+  if (body < 1 || body > WL_SPH_BODY_TAG_MAX)
+    return wl_error_set(err, WL_EINPUT, "sph: wall load of body %d; valid 1..%d", body,
+                        WL_SPH_BODY_TAG_MAX);
+  if (!sim->ops->wall_load)
+    return wl_error_set(err, WL_EUNSUPPORTED, "sph: the %s backend has no wall load",
+                        sim->ops->name);
+  const enum wl_status st = sim->ops->wall_load(sim->ctx, body, z_ref, force, moment, err);
+  if (st) *force = *moment = 0.0;
+  return st;
+}
+
 long wl_sph_sim_limited(const struct wl_sph_sim *sim) { return sim->n_limited; }
 long wl_sph_sim_excluded(const struct wl_sph_sim *sim) { return sim->n_excluded; }
 

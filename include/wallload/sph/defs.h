@@ -46,6 +46,41 @@ typedef float wl_real;
 #define WL_R(x) (x##f)
 #endif
 
+/* A load from an array that no thread writes during the kernel (the
+ * neighbour loops' inputs): on the GPU through the read-only data cache
+ * (__ldg), on the host a plain load. */
+#if defined(__CUDA_ARCH__)
+#define WL_LDG(ptr) __ldg(ptr)
+#else
+#define WL_LDG(ptr) (*(ptr))
+#endif
+
+/* Unrolling of the GPU's one-thread neighbour loop (sph/gather.h
+ * wl_sph_gather_range with the cut): two candidates per trip, so that one's
+ * loads overlap the other's pair. Left to itself nvcc unrolls some of the
+ * loop's instances (fluid-fluid) and not others (fluid-wall), and the 2D
+ * loop runs about 0.7 % slower on the H100 (BENCHMARKS.md). */
+#ifndef WL_GPU_RANGE_UNROLL
+#define WL_GPU_RANGE_UNROLL 2
+#endif
+#if defined(__CUDA_ARCH__) && WL_GPU_RANGE_UNROLL == 2
+#define WL_GPU_UNROLL_RANGE _Pragma("unroll 2")
+#else
+#define WL_GPU_UNROLL_RANGE
+#endif
+
+/* Double product and sum each rounded once, never fused: nvcc contracts
+ * a * b + c into one FMA by default, the CPU build (ISO C) never does, and
+ * the time step's maxima (gather.h wl_sph_eval_dt_input) must be the same
+ * on both. */
+#if defined(__CUDA_ARCH__)
+#define WL_DMUL(a, b) __dmul_rn((a), (b))
+#define WL_DADD(a, b) __dadd_rn((a), (b))
+#else
+#define WL_DMUL(a, b) ((a) * (b))
+#define WL_DADD(a, b) ((a) + (b))
+#endif
+
 /* Largest dimension and number of moving bodies (paddles) a run may have. */
 #define WL_SPH_DIM_MAX 3
 #define WL_SPH_BODIES_MAX 8

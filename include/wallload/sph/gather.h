@@ -87,81 +87,162 @@ struct wl_sph_lanes {
   wl_real rho[WL_SPH_LANES], inv_rho[WL_SPH_LANES], p[WL_SPH_LANES];
 };
 
+/* The pair of lane l (the particle's r_ij = (dx, dy, dz), v_ij = (ux, uy,
+ * uz), density, 1/density and pressure) with a neighbour j (its density,
+ * wl_sph_pair_j's 1/rho_j and m_j/rho_j, its pressure) added to lane l's
+ * sums. This is the body of every neighbour loop of every backend; they
+ * differ only in how they find j and its values (wl_sph_gather_range
+ * below; cuda.cu's split loop from staged candidates). The pairs with an
+ * acceleration and no density diffusion are exactly those of a fluid i
+ * with a boundary j (wl_sph_gather_block), whose p_i is the wall's
+ * (interact.h wl_sph_pair_p_wall). dim, laminar, want_ace, with_ddt:
+ * compile-time constants; av, lam: see wl_sph_pair_eval. */
+WL_HD static WL_INLINE void wl_sph_pair_sum(const int dim, const int laminar, const int want_ace,
+                                            const int with_ddt, const struct wl_sph_const *k,
+                                            wl_real dx, wl_real dy, wl_real dz, wl_real ux,
+                                            wl_real uy, wl_real uz, wl_real rho_i,
+                                            wl_real inv_rho_i, wl_real p_i, wl_real rho_j,
+                                            wl_real inv_rho_j, wl_real vol_j, wl_real p_j,
+                                            wl_real av, wl_real lam, struct wl_sph_acc *acc,
+                                            int l) {
+  const wl_real r2 = dx * dx + dy * dy + dz * dz;
+  const wl_real rv = dx * ux + dy * uy + dz * uz;
+  const wl_real p_ip = want_ace && !with_ddt ? wl_sph_pair_p_wall(k, p_i) : p_i;
+  const struct wl_sph_pair o = wl_sph_pair_eval(laminar, with_ddt, k, r2, rv, dz, rho_i, inv_rho_i,
+                                                p_ip, rho_j, inv_rho_j, vol_j, p_j, av, lam);
+  if (want_ace)
+    wl_sph_pair_add_ace(dim, laminar, &o, dx, dy, dz, ux, uy, uz, &acc->a[0][l], &acc->a[1][l],
+                        &acc->a[2][l]);
+  acc->cont[l] += o.cont;
+  if (with_ddt) acc->ddt[l] += o.ddt; /* 0 without: the sum stays +0 */
+  acc->wsum[l] += o.wq;
+  acc->visc[l] = wl_sph_max_nonneg(acc->visc[l], o.visc);
+}
+
+/* wl_sph_pair_j for neighbour j of density rho_j, or wl_sph_pair_j_bound
+ * when j is a boundary neighbour of a fluid particle (want_ace and not
+ * with_ddt, as in wl_sph_pair_sum). */
+WL_HD static WL_INLINE void wl_sph_pair_j_of(const int want_ace, const int with_ddt,
+                                             const struct wl_sph_const *k, wl_real rho_j,
+                                             wl_real *inv_rho_j, wl_real *vol_j) {
+  if (want_ace && !with_ddt) wl_sph_pair_j_bound(k, rho_j, inv_rho_j, vol_j);
+  else wl_sph_pair_j(k, rho_j, inv_rho_j, vol_j);
+}
+
 /* Add the pairs of every lane with neighbours j in [j0, j1), or with their
  * mirror images in the plane y = k->mirror_y[mirror - 1] when mirror is 1
  * (the low plane) or 2 (the high one), 3D.
- * dim, laminar, want_ace, with_ddt, lanes: compile-time constants. av, lam:
- * see wl_sph_pair_eval. */
+ * cut (lanes = 1 only): a candidate farther than 2h (r^2 >= k->support2
+ * (1 + 1e-4), a margin far above float rounding) is skipped before its
+ * values are loaded and its pair evaluated. Such a pair adds exact zeros
+ * (W, grad W and the time-step term are 0 beyond the support), so each sum
+ * gets the same terms in the same order: the same bits as without cut. The
+ * GPU's one-thread-per-particle loop uses it; the CPU's lanes evaluate
+ * every candidate (branch-free, vectorised).
+ * dim, laminar, want_ace, with_ddt, lanes, cut: compile-time constants.
+ * av, lam: see wl_sph_pair_eval. */
 WL_HD static WL_INLINE void wl_sph_gather_range(const int dim, const int laminar,
                                                 const int want_ace, const int with_ddt,
-                                                const int lanes, const struct wl_sph_const *k,
+                                                const int lanes, const int cut,
+                                                const struct wl_sph_const *k,
                                                 const struct wl_sph_eval *e,
                                                 const struct wl_sph_lanes *in, int j0, int j1,
                                                 wl_real av, wl_real lam, const int mirror,
                                                 struct wl_sph_acc *acc) {
   const int az = dim - 1; /* vertical axis */
+  const double *const px = e->pos[0], *const pz = e->pos[az];
+  const double *const py = e->pos[dim == 3 ? 1 : 0];
+  const double y2 = dim == 3 && mirror ? 2.0 * k->mirror_y[mirror - 1] : 0.0;
+  WL_GPU_UNROLL_RANGE
   for (int j = j0; j < j1; j++) {
-    const double xj = e->pos[0][j], zj = e->pos[az][j];
-    const double yj = dim != 3 ? 0.0
-                      : mirror ? 2.0 * k->mirror_y[mirror - 1] - e->pos[1][j]
-                               : e->pos[1][j];
-    const wl_real uxj = e->vel[0][j], uzj = e->vel[az][j];
-    const wl_real uyj = dim != 3 ? WL_R(0.0) : mirror ? -e->vel[1][j] : e->vel[1][j];
-    const wl_real rho_j = e->rho[j], p_j = e->press[j];
-    wl_real inv_rho_j, vol_j;
-    /* the pairs with an acceleration and no density diffusion are exactly
-     * those of a fluid i with a boundary j (wl_sph_gather_block) */
-    if (want_ace && !with_ddt) wl_sph_pair_j_bound(k, rho_j, &inv_rho_j, &vol_j);
-    else wl_sph_pair_j(k, rho_j, &inv_rho_j, &vol_j);
-    for (int l = 0; l < lanes; l++) {
+    const double xj = WL_LDG(px + j), zj = WL_LDG(pz + j);
+    const double yj = dim != 3 ? 0.0 : mirror ? y2 - WL_LDG(py + j) : WL_LDG(py + j);
+    if (cut) {
       /* position differences in double, narrowed (sph/defs.h) */
+      const wl_real dx = (wl_real)(in->x[0][0] - xj);
+      const wl_real dy = dim == 3 ? (wl_real)(in->x[1][0] - yj) : WL_R(0.0);
+      const wl_real dz = (wl_real)(in->x[az][0] - zj);
+      if (!((dx * dx + dy * dy + dz * dz) * WL_R(0.9999) < k->support2)) continue;
+    }
+    const wl_real uxj = WL_LDG(e->vel[0] + j), uzj = WL_LDG(e->vel[az] + j);
+    const wl_real vyj = dim == 3 ? WL_LDG(e->vel[1] + j) : WL_R(0.0);
+    const wl_real uyj = mirror ? -vyj : vyj;
+    const wl_real rho_j = WL_LDG(e->rho + j), p_j = WL_LDG(e->press + j);
+    wl_real inv_rho_j, vol_j;
+    wl_sph_pair_j_of(want_ace, with_ddt, k, rho_j, &inv_rho_j, &vol_j);
+    for (int l = 0; l < lanes; l++) {
       const wl_real dx = (wl_real)(in->x[0][l] - xj);
       const wl_real dy = dim == 3 ? (wl_real)(in->x[1][l] - yj) : WL_R(0.0);
       const wl_real dz = (wl_real)(in->x[az][l] - zj);
       const wl_real ux = in->v[0][l] - uxj;
       const wl_real uy = dim == 3 ? in->v[1][l] - uyj : WL_R(0.0);
       const wl_real uz = in->v[az][l] - uzj;
-      const wl_real r2 = dx * dx + dy * dy + dz * dz;
-      const wl_real rv = dx * ux + dy * uy + dz * uz;
-      const wl_real p_i = want_ace && !with_ddt ? wl_sph_pair_p_wall(k, in->p[l]) : in->p[l];
-      const struct wl_sph_pair o =
-          wl_sph_pair_eval(laminar, with_ddt, k, r2, rv, dz, in->rho[l], in->inv_rho[l], p_i,
-                           rho_j, inv_rho_j, vol_j, p_j, av, lam);
-      if (want_ace)
-        wl_sph_pair_add_ace(dim, laminar, &o, dx, dy, dz, ux, uy, uz, &acc->a[0][l],
-                            &acc->a[1][l], &acc->a[2][l]);
-      acc->cont[l] += o.cont;
-      acc->ddt[l] += o.ddt;
-      acc->wsum[l] += o.wq;
-      acc->visc[l] = wl_sph_max_nonneg(acc->visc[l], o.visc);
+      wl_sph_pair_sum(dim, laminar, want_ace, with_ddt, k, dx, dy, dz, ux, uy, uz, in->rho[l],
+                      in->inv_rho[l], in->p[l], rho_j, inv_rho_j, vol_j, p_j, av, lam, acc, l);
     }
   }
 }
 
-/* The end of particle i's evaluation, from its sums over fluid neighbours
- * (fa, fcont, fddt, fvisc) and, for a fluid particle, over boundary ones
- * (ba, bcont, bwsum, bvisc); fa and ba hold the horizontal, transverse
- * (3D) and vertical components at 0, 1 and 2. A fluid particle's
+/* The mirror planes' passes of particle(s) in cells cell .. cell + span
+ * (3D, k->mirror set; none otherwise): the images of the fluid rows beside
+ * each plane into f, and for a fluid particle the images of the boundary
+ * rows into b (with fluid 0, b is not touched). Each sum gets its terms
+ * after the ordinary rows, low plane then high plane: the order of
+ * wl_sph_gather_block. dim, laminar, lanes, cut, fluid: compile-time
+ * constants where the caller can make them so. */
+WL_HD static WL_INLINE void wl_sph_gather_mirrors(const int dim, const int laminar,
+                                                  const int lanes, const int cut,
+                                                  const struct wl_sph_const *k,
+                                                  const struct wl_sph_grid *g,
+                                                  const struct wl_sph_eval *e,
+                                                  const struct wl_sph_lanes *in, const int fluid,
+                                                  int cell, int span, struct wl_sph_acc *f,
+                                                  struct wl_sph_acc *b) {
+  if (dim != 3 || !k->mirror) return;
+  const int *const bf = e->begin + g->n_cells; /* fluid group */
+  const int *const bb = e->begin;              /* boundary group */
+  int mf[2][6], ml[2][6], nm[2] = {0, 0};
+  wl_sph_cell_rows_mirrors(g, k->mirror, cell, span, mf, ml, nm);
+  for (int side = 0; side < 2; side++)
+    for (int r = 0; r < nm[side]; r++) {
+      if (fluid)
+        wl_sph_gather_range(dim, laminar, 1, 1, lanes, cut, k, e, in, bf[mf[side][r]],
+                            bf[ml[side][r] + 1], k->av_ff, k->lam_ff, side + 1, f);
+      else
+        wl_sph_gather_range(dim, laminar, 0, 0, lanes, cut, k, e, in, bf[mf[side][r]],
+                            bf[ml[side][r] + 1], k->av_fb, k->lam_fb, side + 1, f);
+    }
+  if (fluid)
+    for (int side = 0; side < 2; side++)
+      for (int r = 0; r < nm[side]; r++)
+        wl_sph_gather_range(dim, laminar, 1, 0, lanes, cut, k, e, in, bb[mf[side][r]],
+                            bb[ml[side][r] + 1], k->av_fb, k->lam_fb, side + 1, b);
+}
+
+/* The end of particle i's evaluation, from lane l of its sums over fluid
+ * neighbours f and, for a fluid particle, over boundary ones b (a boundary
+ * particle's call may pass f for b: it is not read). A fluid particle's
  * acceleration adds gravity; its density rate the diffusion, except under
  * DDT2 (not Full) next to a wall; its time-step input takes the larger of
  * the two sums. A boundary particle (DBC) keeps only its continuity
- * equation. Every force loop of every backend ends with this. */
+ * equation. Every force loop of every backend ends with this. fluid:
+ * compile-time constant where the caller can make it so. */
 WL_HD static WL_INLINE void wl_sph_finish(const int dim, const struct wl_sph_const *k,
-                                          const struct wl_sph_eval *e, int i, int fluid,
-                                          wl_real rho_i, const wl_real *fa, wl_real fcont,
-                                          wl_real fddt, wl_real fvisc, const wl_real *ba,
-                                          wl_real bcont, wl_real bwsum, wl_real bvisc) {
+                                          const struct wl_sph_eval *e, int i, const int fluid,
+                                          wl_real rho_i, const struct wl_sph_acc *f,
+                                          const struct wl_sph_acc *b, int l) {
   if (fluid) {
-    const wl_real ddt = (k->ddt == WL_SPH_DDT_FOURTAKAS && bwsum > 0) ? WL_R(0.0) : fddt;
-    e->ace[0][i] = fa[0] + ba[0] + k->gravity[0];
-    if (dim == 3) e->ace[1][i] = fa[1] + ba[1] + k->gravity[1];
-    e->ace[dim - 1][i] = fa[2] + ba[2] + k->gravity[dim - 1];
-    e->ar[i] = rho_i * (fcont + bcont) + ddt;
-    e->visc[i] = k->h * wl_sph_max_nonneg(fvisc, bvisc);
+    const wl_real ddt =
+        (k->ddt == WL_SPH_DDT_FOURTAKAS && b->wsum[l] > 0) ? WL_R(0.0) : f->ddt[l];
+    e->ace[0][i] = f->a[0][l] + b->a[0][l] + k->gravity[0];
+    if (dim == 3) e->ace[1][i] = f->a[1][l] + b->a[1][l] + k->gravity[1];
+    e->ace[dim - 1][i] = f->a[2][l] + b->a[2][l] + k->gravity[dim - 1];
+    e->ar[i] = rho_i * (f->cont[l] + b->cont[l]) + ddt;
+    e->visc[i] = k->h * wl_sph_max_nonneg(f->visc[l], b->visc[l]);
   } else {
     for (int a = 0; a < dim; a++) e->ace[a][i] = 0;
-    e->ar[i] = rho_i * fcont;
-    e->visc[i] = k->h * fvisc;
+    e->ar[i] = rho_i * f->cont[l];
+    e->visc[i] = k->h * f->visc[l];
   }
 }
 
@@ -171,9 +252,10 @@ WL_HD static WL_INLINE void wl_sph_finish(const int dim, const struct wl_sph_con
  * last particle and are discarded. The rows then reach one cell further
  * than a particle needs; those particles are at least 2h away and add exact
  * zeros, so the result does not depend on how particles are grouped into
- * blocks. dim, laminar, lanes: compile-time constants. */
+ * blocks. cut: see wl_sph_gather_range (lanes = 1 only; the same bits).
+ * dim, laminar, lanes, cut: compile-time constants. */
 WL_HD static WL_INLINE void wl_sph_gather_block(const int dim, const int laminar, const int lanes,
-                                                const struct wl_sph_const *k,
+                                                const int cut, const struct wl_sph_const *k,
                                                 const struct wl_sph_grid *g,
                                                 const struct wl_sph_eval *e, int n_bound, int i0,
                                                 int m, int span) {
@@ -200,53 +282,132 @@ WL_HD static WL_INLINE void wl_sph_gather_block(const int dim, const int laminar
     for (int a = 0; a < WL_SPH_DIM_MAX; a++) f.a[a][l] = 0;
     f.cont[l] = f.ddt[l] = f.wsum[l] = f.visc[l] = 0;
   }
-  /* mirror rows: only next to a mirror plane (3D); side s in rows
-   * mfirst[s]..., mirror pass s + 1 */
-  int mfirst[2][6], mlast[2][6], nm[2] = {0, 0};
-  if (dim == 3) wl_sph_cell_rows_mirrors(g, k->mirror, cell, span, mfirst, mlast, nm);
   if (fluid) {
     struct wl_sph_acc b = f; /* boundary neighbours */
     for (int r = 0; r < nr; r++)
-      wl_sph_gather_range(dim, laminar, 1, 1, lanes, k, e, &in, bf[first[r]], bf[last[r] + 1],
-                          k->av_ff, k->lam_ff, 0, &f);
-    for (int side = 0; dim == 3 && side < 2; side++)
-      for (int r = 0; r < nm[side]; r++)
-        wl_sph_gather_range(dim, laminar, 1, 1, lanes, k, e, &in, bf[mfirst[side][r]],
-                            bf[mlast[side][r] + 1], k->av_ff, k->lam_ff, side + 1, &f);
+      wl_sph_gather_range(dim, laminar, 1, 1, lanes, cut, k, e, &in, bf[first[r]],
+                          bf[last[r] + 1], k->av_ff, k->lam_ff, 0, &f);
     for (int r = 0; r < nr; r++)
-      wl_sph_gather_range(dim, laminar, 1, 0, lanes, k, e, &in, bb[first[r]], bb[last[r] + 1],
-                          k->av_fb, k->lam_fb, 0, &b);
-    for (int side = 0; dim == 3 && side < 2; side++)
-      for (int r = 0; r < nm[side]; r++)
-        wl_sph_gather_range(dim, laminar, 1, 0, lanes, k, e, &in, bb[mfirst[side][r]],
-                            bb[mlast[side][r] + 1], k->av_fb, k->lam_fb, side + 1, &b);
-    for (int l = 0; l < m; l++) {
-      const wl_real fa[3] = {f.a[0][l], f.a[1][l], f.a[2][l]};
-      const wl_real ba[3] = {b.a[0][l], b.a[1][l], b.a[2][l]};
-      wl_sph_finish(dim, k, e, i0 + l, 1, in.rho[l], fa, f.cont[l], f.ddt[l], f.visc[l], ba,
-                    b.cont[l], b.wsum[l], b.visc[l]);
-    }
+      wl_sph_gather_range(dim, laminar, 1, 0, lanes, cut, k, e, &in, bb[first[r]],
+                          bb[last[r] + 1], k->av_fb, k->lam_fb, 0, &b);
+    wl_sph_gather_mirrors(dim, laminar, lanes, cut, k, g, e, &in, 1, cell, span, &f, &b);
+    for (int l = 0; l < m; l++)
+      wl_sph_finish(dim, k, e, i0 + l, 1, in.rho[l], &f, &b, l);
   } else {
     for (int r = 0; r < nr; r++)
-      wl_sph_gather_range(dim, laminar, 0, 0, lanes, k, e, &in, bf[first[r]], bf[last[r] + 1],
-                          k->av_fb, k->lam_fb, 0, &f);
-    for (int side = 0; dim == 3 && side < 2; side++)
-      for (int r = 0; r < nm[side]; r++)
-        wl_sph_gather_range(dim, laminar, 0, 0, lanes, k, e, &in, bf[mfirst[side][r]],
-                            bf[mlast[side][r] + 1], k->av_fb, k->lam_fb, side + 1, &f);
-    for (int l = 0; l < m; l++)
-      wl_sph_finish(dim, k, e, i0 + l, 0, in.rho[l], NULL, f.cont[l], 0, f.visc[l], NULL, 0, 0,
-                    0);
+      wl_sph_gather_range(dim, laminar, 0, 0, lanes, cut, k, e, &in, bf[first[r]],
+                          bf[last[r] + 1], k->av_fb, k->lam_fb, 0, &f);
+    wl_sph_gather_mirrors(dim, laminar, lanes, cut, k, g, e, &in, 0, cell, span, &f, &f);
+    for (int l = 0; l < m; l++) wl_sph_finish(dim, k, e, i0 + l, 0, in.rho[l], &f, &f, l);
   }
 }
 
-/* Forces on the single particle i (the per-particle form, one CUDA thread
- * each); the same results as wl_sph_gather_block, bit for bit. */
+/* Forces on the single particle i (the per-particle form): the same
+ * results as wl_sph_gather_block, bit for bit. The reference loop of the
+ * GPU's tests (tests/CMakeLists.txt, test_cuda_backend). */
 WL_HD static WL_INLINE void wl_sph_gather(const int dim, const int laminar,
                                           const struct wl_sph_const *k,
                                           const struct wl_sph_grid *g,
                                           const struct wl_sph_eval *e, int n_bound, int i) {
-  wl_sph_gather_block(dim, laminar, 1, k, g, e, n_bound, i, 1, 0);
+  wl_sph_gather_block(dim, laminar, 1, 0, k, g, e, n_bound, i, 1, 0);
+}
+
+/* What the time step (backend.h wl_sph_step_dt) takes from particle i after
+ * its force evaluation: its time-step input e->visc[i] in *visc and, for a
+ * fluid particle (i >= n_bound), |a|^2 and |v|^2 in *ace2 and *vel2 (as
+ * doubles: sums of the float components' squares, each product and sum
+ * rounded once, WL_DMUL/WL_DADD); a boundary particle leaves them as they
+ * are. Every backend takes the maxima of these. dim: compile-time
+ * constant. */
+WL_HD static WL_INLINE void wl_sph_eval_dt_input(const int dim, const struct wl_sph_eval *e,
+                                                 int i, int n_bound, double *ace2, double *vel2,
+                                                 double *visc) {
+  *visc = (double)e->visc[i];
+  if (i < n_bound) return;
+  double a2 = 0, v2 = 0;
+  for (int a = 0; a < dim; a++) {
+    a2 = WL_DADD(a2, WL_DMUL((double)e->ace[a][i], (double)e->ace[a][i]));
+    v2 = WL_DADD(v2, WL_DMUL((double)e->vel[a][i], (double)e->vel[a][i]));
+  }
+  *ace2 = a2;
+  *vel2 = v2;
+}
+
+/* The wall load on fluid particle i (sorted index >= n_bound): the force
+ * of the boundary particles of body `body` (body_of[j] == body) on it, as
+ * its own force evaluation adds them (the fluid-boundary pair term of
+ * wl_sph_pair_sum: wl_sph_pair_eval with the wall's p_i, j's volume of
+ * wl_sph_pair_j_bound, av_fb and lam_fb, over its boundary rows and their
+ * mirror images), taken in double. Out: *fx, the horizontal force of the
+ * fluid particle on those boundary particles [N, or N/m in 2D]: minus the
+ * particle's acceleration from them times its mass; *my, its moment about
+ * the height z_ref [m] (N m, or N m/m), each pair's force acting at the
+ * mean height of the two particles, no lever arm below z_ref (what pushes
+ * on the foundation). Pairs beyond the support add nothing. The pressures
+ * are e->press (the EOS of e->rho for every particle: the state as stored,
+ * not the wall pass of sph/wall.h). dim, laminar: compile-time constants. */
+WL_HD static WL_INLINE void wl_sph_gather_wall_load(const int dim, const int laminar,
+                                                    const struct wl_sph_const *k,
+                                                    const struct wl_sph_grid *g,
+                                                    const struct wl_sph_eval *e,
+                                                    const unsigned char *body_of, int body,
+                                                    double z_ref, int i, double *fx,
+                                                    double *my) {
+  const int nc = g->n_cells, az = dim - 1;
+  const int cell = (int)e->key[i] - nc;
+  int rf[21], rl[21], rm[21]; /* rows: 9 ordinary (mirror 0), then up to 6 of each plane */
+  int nr = wl_sph_cell_rows(dim, g, cell, 0, rf, rl);
+  for (int r = 0; r < nr; r++) rm[r] = 0;
+  if (dim == 3 && k->mirror) {
+    int mf[2][6], ml[2][6], nm[2] = {0, 0};
+    wl_sph_cell_rows_mirrors(g, k->mirror, cell, 0, mf, ml, nm);
+    for (int side = 0; side < 2; side++)
+      for (int r = 0; r < nm[side]; r++, nr++) {
+        rf[nr] = mf[side][r];
+        rl[nr] = ml[side][r];
+        rm[nr] = side + 1;
+      }
+  }
+  const double xi = e->pos[0][i], zi = e->pos[az][i], yi = dim == 3 ? e->pos[1][i] : 0.0;
+  const wl_real vxi = e->vel[0][i], vzi = e->vel[az][i];
+  const wl_real vyi = dim == 3 ? e->vel[1][i] : WL_R(0.0);
+  const wl_real rho_i = e->rho[i], inv_rho_i = wl_sph_rcp(rho_i);
+  const wl_real p_i = wl_sph_pair_p_wall(k, e->press[i]);
+  double sx = 0.0, sm = 0.0;
+  for (int r = 0; r < nr; r++) {
+    const int mirror = rm[r];
+    for (int j = e->begin[rf[r]]; j < e->begin[rl[r] + 1]; j++) {
+      if (body_of[j] != body) continue;
+      const double yj = dim != 3 ? 0.0
+                        : mirror ? 2.0 * k->mirror_y[mirror - 1] - e->pos[1][j]
+                                 : e->pos[1][j];
+      const wl_real dx = (wl_real)(xi - e->pos[0][j]);
+      const wl_real dy = dim == 3 ? (wl_real)(yi - yj) : WL_R(0.0);
+      const wl_real dz = (wl_real)(zi - e->pos[az][j]);
+      const wl_real r2 = dx * dx + dy * dy + dz * dz;
+      if (r2 >= k->support2) continue;
+      const wl_real uyj = dim == 3 ? (mirror ? -e->vel[1][j] : e->vel[1][j]) : WL_R(0.0);
+      const wl_real ux = vxi - e->vel[0][j];
+      const wl_real uy = dim == 3 ? vyi - uyj : WL_R(0.0);
+      const wl_real uz = vzi - e->vel[az][j];
+      const wl_real rv = dx * ux + dy * uy + dz * uz;
+      wl_real inv_rho_j, vol_j;
+      wl_sph_pair_j_bound(k, e->rho[j], &inv_rho_j, &vol_j);
+      const struct wl_sph_pair o =
+          wl_sph_pair_eval(laminar, 0, k, r2, rv, dz, rho_i, inv_rho_i, p_i, e->rho[j], inv_rho_j,
+                           vol_j, e->press[j], k->av_fb, k->lam_fb);
+      /* the pair's acceleration of i along x, in double as the sums of
+       * the loads are; minus m_i times it is i's push on j */
+      const double ax = WL_DADD(WL_DMUL((double)o.c_r, (double)dx),
+                                WL_DMUL((double)o.c_v, (double)ux));
+      const double fij = -WL_DMUL((double)k->mass, ax);
+      const double arm = WL_DADD(WL_DMUL(0.5, WL_DADD(zi, e->pos[az][j])), -z_ref);
+      sx = WL_DADD(sx, fij);
+      sm = WL_DADD(sm, WL_DMUL(fij, wl_sph_maxd(0.0, arm)));
+    }
+  }
+  *fx = sx;
+  *my = sm;
 }
 
 #endif
