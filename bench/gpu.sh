@@ -5,8 +5,9 @@
 #   - 3D dam break with pillar (DualSPHysics 01_DamBreak geometry) at about
 #     1.04M and 8.1M particles, Wendland, h = 1.73 dp (coefh 1 in 3D);
 #   - 2D dam break at about 0.89M particles, Wendland, h = 1.41 dp;
-#   - the other force loops (WL_CUDA_GATHER=ref: wl_sph_gather as is;
-#     fast; split) and the CPU backend on the same host, for comparison;
+#   - the CPU backend on the same host, for comparison (the other force
+#     loops are a test-only build of cuda.cu, tests/CMakeLists.txt, that
+#     test_cuda_backend compares with the product's);
 #   - the memory-bandwidth and fp32 ceilings through PyTorch, when it is there.
 # Build: the full CMake build (-DWL_CUDA=ON) when its dependencies are there;
 # otherwise (the device machine has no GSL, libyaml, cairo or HDF5) the
@@ -70,11 +71,6 @@ b() { "${bench[@]}" "$@" | grep -v '^# \(warm-up\|GPU\)' || true; }
   b --case dambreak3d --backend cuda --particles 1.04e6 --steps "${STEPS3D:-200}"
   b --case dambreak3d --backend cuda --particles 8.1e6 --steps "${STEPS8M:-40}"
   b --case dambreak2d --backend cuda --particles 0.89e6 --steps "${STEPS2D:-500}"
-  echo "## other force loops"
-  WL_CUDA_GATHER=fast b --case dambreak3d --backend cuda --particles 1.04e6 --steps 100 | grep '^dam'
-  WL_CUDA_GATHER=ref b --case dambreak3d --backend cuda --particles 1.04e6 --steps 20 | grep '^dam'
-  WL_CUDA_GATHER=split b --case dambreak2d --backend cuda --particles 0.89e6 --steps 200 | grep '^dam'
-  WL_CUDA_GATHER=ref b --case dambreak2d --backend cuda --particles 0.89e6 --steps 100 | grep '^dam'
   echo "## CPU backend, same host, all cores"
   b --case dambreak3d --backend cpu --particles 1.04e6 --steps 3 | grep '^dam'
   b --case dambreak2d --backend cpu --particles 0.89e6 --steps 10 | grep '^dam'
