@@ -125,6 +125,9 @@ struct wl_sweep_ranks {
                                    set for it); "" when none was chosen here */
   double silence_s;             /* rank 0 counts a rank lost after this long without a
                                    word from it (its heartbeat is every 5 s); > 0 */
+  int lost;                     /* a rank was lost (set by wl_sweep_run_ranks): MPI is
+                                   not finalised, since Open MPI's MPI_Finalize waits for
+                                   every rank, the dead one too */
   struct wl_sweep_comm *comm;   /* MPI's; NULL for one process */
 };
 
@@ -148,7 +151,8 @@ int wl_sweep_mpi_built(void);
  * launcher started several processes of a build without MPI. */
 enum wl_status wl_sweep_ranks_init(struct wl_sweep_ranks *r, struct wl_error *err);
 
-/* MPI finalised, when init started it; r becomes one process. */
+/* MPI finalised, when init started it and no rank was lost (r->lost);
+ * r becomes one process. */
 void wl_sweep_ranks_finish(struct wl_sweep_ranks *r);
 
 /* Every rank's st (which must be the same call on every rank), agreed:
@@ -196,6 +200,6 @@ enum wl_status wl_sweep_run(struct wl_sweep *sw, const char *dir,
 enum wl_status wl_sweep_run_ranks(struct wl_sweep *sw, const char *dir,
                                   const struct wl_assess_opts *opts,
                                   const struct wl_sweep_events *ev,
-                                  const struct wl_sweep_ranks *ranks, struct wl_error *err);
+                                  struct wl_sweep_ranks *ranks, struct wl_error *err);
 
 #endif

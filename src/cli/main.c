@@ -74,6 +74,8 @@ int main(int argc, char **argv) {
   signal(SIGXFSZ, SIG_IGN);
   struct wl_error err;
   wl_error_clear(&err);
+  struct wl_sweep_ranks ranks; /* one process, unless sweep runs under mpirun */
+  memset(&ranks, 0, sizeof ranks);
   if (argc < 2) {
     usage(stderr);
     return 2;
@@ -94,7 +96,7 @@ int main(int argc, char **argv) {
   } else if (!strcmp(cmd, "assess")) {
     st = wl_cli_assess(argc - 1, argv + 1, &err);
   } else if (!strcmp(cmd, "sweep")) {
-    st = wl_cli_sweep(argc - 1, argv + 1, &err);
+    st = wl_cli_sweep(argc - 1, argv + 1, &ranks, &err);
   } else if (!strcmp(cmd, "report")) {
     st = wl_cli_report(argc - 1, argv + 1, &err);
   } else if (!strcmp(cmd, "bench")) {
@@ -115,5 +117,9 @@ int main(int argc, char **argv) {
     fprintf(stderr, "wallload: standard output: %s\n", strerror(errno));
     if (code == 0) code = 1;
   }
+  /* MPI finalised last: a rank cannot exit (mpirun then ends the job)
+   * before rank 0 has printed */
+  fflush(stderr);
+  wl_sweep_ranks_finish(&ranks);
   return code;
 }

@@ -108,7 +108,7 @@ static void print_rows(const struct wl_sweep *sw, const char *dir, int pdf) {
 static enum wl_status sweep_stoppable(void *user, volatile sig_atomic_t *stop,
                                       struct wl_error *err) {
   struct sweep_args *a = user;
-  const struct wl_sweep_ranks *ranks = a->ranks;
+  struct wl_sweep_ranks *ranks = a->ranks;
   const int lead = ranks->rank == 0, shared = ranks->size > 1;
   struct wl_scenario s;
   struct wl_sweep sw;
@@ -217,17 +217,16 @@ static enum wl_status parse_args(struct sweep_args *a, int argc, char **argv,
   return WL_OK;
 }
 
-enum wl_status wl_cli_sweep(int argc, char **argv, struct wl_error *err) {
+enum wl_status wl_cli_sweep(int argc, char **argv, struct wl_sweep_ranks *ranks,
+                            struct wl_error *err) {
   struct sweep_args a;
   memset(&a, 0, sizeof a);
   /* first, before anything could start CUDA: under mpirun each rank's GPU
    * is chosen through the environment (sweep.h) */
-  struct wl_sweep_ranks ranks;
-  enum wl_status st = wl_sweep_ranks_init(&ranks, err);
+  enum wl_status st = wl_sweep_ranks_init(ranks, err);
   if (st) return st;
-  a.ranks = &ranks;
-  st = wl_sweep_ranks_agree(&ranks, parse_args(&a, argc, argv, err), err);
+  a.ranks = ranks;
+  st = wl_sweep_ranks_agree(ranks, parse_args(&a, argc, argv, err), err);
   if (st == WL_OK) st = wl_cli_with_stop_signals(sweep_stoppable, &a, err);
-  wl_sweep_ranks_finish(&ranks);
   return st;
 }

@@ -111,10 +111,12 @@ struct up {
 };
 
 /* lead -> follower: WORK (value: the case), STOP (value: the signal), END
- * (value: the sweep's status, the follower's exit status) */
+ * (value: the sweep's status, the follower's exit status; lost: a rank was
+ * lost, so nobody finalises MPI) */
 struct down {
-  int kind, value;
+  int kind, value, lost;
 };
+enum { DOWN_INTS = 3 };
 
 /* the lead's start, broadcast: may the followers start, and where the lead is */
 struct start {
@@ -232,8 +234,13 @@ enum wl_status wl_sweep_ranks_init(struct wl_sweep_ranks *r, struct wl_error *er
 
 void wl_sweep_ranks_finish(struct wl_sweep_ranks *r) {
   if (r->comm) {
-    MPI_Comm_free(&r->comm->comm);
-    if (r->comm->finalize) MPI_Finalize();
+    /* with a rank lost, Open MPI 4.1's MPI_Finalize can wait for it for
+     * ever (seen under --enable-recovery): the process ends without it,
+     * which mpirun accepts once the others end too */
+    if (!r->lost) {
+      MPI_Comm_free(&r->comm->comm);
+      if (r->comm->finalize) MPI_Finalize();
+    }
     free(r->comm);
   }
   one_process(r);
@@ -293,7 +300,7 @@ struct peer {
 };
 
 struct sweep_lead {
-  const struct wl_sweep_ranks *r;
+  struct wl_sweep_ranks *r;
   MPI_Comm comm;
   struct peer *peer; /* [r->size]; [0] unused */
   /* while sweep_lead_cases runs */
@@ -329,8 +336,8 @@ static void lead_tables(struct sweep_lead *L) {
 }
 
 static int lead_send(struct sweep_lead *L, int k, int kind, int value) {
-  const struct down d = {kind, value};
-  return MPI_Send(&d, 2, MPI_INT, k, TAG_DOWN, L->comm);
+  const struct down d = {kind, value, L->r->lost};
+  return MPI_Send(&d, DOWN_INTS, MPI_INT, k, TAG_DOWN, L->comm);
 }
 
 /* Rank k is lost (why): its case, if it ran one, becomes a failed row. */
@@ -338,6 +345,7 @@ static void lead_lose(struct sweep_lead *L, int k, const char *why) {
   struct peer *p = &L->peer[k];
   const int was_busy = p->state == PEER_BUSY;
   p->state = PEER_LOST;
+  L->r->lost = 1;
   if (!was_busy) return;
   const int i = p->case_index;
   struct wl_sweep_row *row = &L->sw->rows[i];
@@ -473,7 +481,7 @@ static void lead_progress(void *user, const char *name, const struct wl_sph_prog
   if (L->opts->progress) L->opts->progress(L->opts->user, name, pr);
 }
 
-enum wl_status sweep_lead_start(const struct wl_sweep_ranks *r, const struct wl_sweep *sw,
+enum wl_status sweep_lead_start(struct wl_sweep_ranks *r, const struct wl_sweep *sw,
                                 enum wl_status st, struct sweep_lead **lead,
                                 struct wl_error *err) {
   *lead = NULL;
@@ -568,15 +576,54 @@ void sweep_lead_end(struct sweep_lead *L, enum wl_status st) {
 
 /* ---- a follower ----------------------------------------------------------------------- */
 
+/* A follower's state; on the heap, with the buffers of its sends: a send
+ * the lead never takes (it is gone) keeps its buffer for ever. */
 struct follower {
-  const struct wl_sweep_ranks *r;
+  struct wl_sweep_ranks *r;
   MPI_Comm comm;
   const struct wl_assess_opts *opts;
+  struct start lead;
+  int lead_here;           /* the lead is on this host: its death is seen at once */
   int case_index;
   double last_beat;
   int ended;               /* END came (while a case ran: this rank was counted lost) */
   enum wl_status end_status;
+  struct up beat, msg;     /* the heartbeat's buffer, and the hello's and results' */
+  MPI_Request beat_req;    /* the last heartbeat, MPI_REQUEST_NULL once sent */
 };
+
+/* 1 when the lead is gone or silent beyond the limit (since t0); err says
+ * which. */
+static int follower_lead_lost(struct follower *f, double t0, struct wl_error *err) {
+  if (f->lead_here && process_gone(f->lead.pid)) {
+    wl_error_set(err, WL_EIO, "rank %d (%s): rank 0 (pid %ld) is gone; its cases in flight are "
+                 "lost, the finished ones are kept: run the sweep again",
+                 f->r->rank, f->r->host, f->lead.pid);
+    return 1;
+  }
+  if (now_s() - t0 > f->r->silence_s) {
+    wl_error_set(err, WL_EIO, "rank %d (%s): no word from rank 0 (%s) for %.0f s; giving up "
+                 "(wallload sweep --rank-timeout)",
+                 f->r->rank, f->r->host, f->lead.host, f->r->silence_s);
+    return 1;
+  }
+  return 0;
+}
+
+/* f->msg to the lead, without waiting for ever: Open MPI's send to a rank
+ * that died on the same host can block for good. */
+static enum wl_status follower_send(struct follower *f, struct wl_error *err) {
+  MPI_Request q;
+  int rc = MPI_Isend(&f->msg, (int)sizeof f->msg, MPI_BYTE, 0, TAG_UP, f->comm, &q);
+  const double t0 = now_s();
+  for (int done = 0; rc == MPI_SUCCESS;) {
+    rc = MPI_Test(&q, &done, MPI_STATUS_IGNORE);
+    if (rc == MPI_SUCCESS && done) return WL_OK;
+    if (follower_lead_lost(f, t0, err)) return WL_EIO;
+    nap();
+  }
+  return mpi_failed(err, rc, "sending to rank 0");
+}
 
 /* A message from the lead, handled: STOP sets the stop flag the cases
  * read; END is remembered. */
@@ -588,57 +635,54 @@ static void follower_down(struct follower *f, const struct down *d) {
   if (d->kind == DOWN_END) {
     f->ended = 1;
     f->end_status = (enum wl_status)d->value;
+    f->r->lost |= d->lost;
   }
 }
 
-/* A running case's heartbeat, and a stop from the lead read. */
+/* A running case reads a stop from the lead, and beats: never blocking (a
+ * beat still under way when the next is due is not repeated). */
 static void follower_progress(void *user, const char *name, const struct wl_sph_progress *pr) {
   (void)name, (void)pr;
   struct follower *f = user;
-  const double now = now_s();
-  if (now - f->last_beat >= BEAT_S) {
-    struct up m;
-    memset(&m, 0, sizeof m);
-    m.kind = UP_BEAT;
-    m.case_index = f->case_index;
-    MPI_Send(&m, (int)sizeof m, MPI_BYTE, 0, TAG_UP, f->comm);
-    f->last_beat = now;
-  }
   int flag = 0;
   MPI_Status ms;
   if (MPI_Iprobe(0, TAG_DOWN, f->comm, &flag, &ms) == MPI_SUCCESS && flag) {
     struct down d;
-    if (MPI_Recv(&d, 2, MPI_INT, 0, TAG_DOWN, f->comm, MPI_STATUS_IGNORE) == MPI_SUCCESS)
+    if (MPI_Recv(&d, DOWN_INTS, MPI_INT, 0, TAG_DOWN, f->comm, MPI_STATUS_IGNORE) == MPI_SUCCESS)
       follower_down(f, &d);
   }
+  const double now = now_s();
+  if (now - f->last_beat < BEAT_S) return;
+  if (f->beat_req != MPI_REQUEST_NULL) {
+    int done = 0;
+    if (MPI_Test(&f->beat_req, &done, MPI_STATUS_IGNORE) != MPI_SUCCESS || !done) return;
+  }
+  memset(&f->beat, 0, sizeof f->beat);
+  f->beat.kind = UP_BEAT;
+  f->beat.case_index = f->case_index;
+  if (MPI_Isend(&f->beat, (int)sizeof f->beat, MPI_BYTE, 0, TAG_UP, f->comm, &f->beat_req) !=
+      MPI_SUCCESS)
+    f->beat_req = MPI_REQUEST_NULL;
+  f->last_beat = now;
 }
 
-/* The lead's next word, or this rank's failure when the lead is gone. */
-static enum wl_status follower_wait(struct follower *f, const struct start *lead, struct down *d,
-                                    struct wl_error *err) {
+/* The lead's next word, or this rank's failure when the lead is lost. */
+static enum wl_status follower_wait(struct follower *f, struct down *d, struct wl_error *err) {
   const double t0 = now_s();
-  const int lead_here = !strcmp(lead->host, f->r->host);
   for (;;) {
     int flag = 0;
     MPI_Status ms;
     int rc = MPI_Iprobe(0, TAG_DOWN, f->comm, &flag, &ms);
     if (rc == MPI_SUCCESS && flag)
-      rc = MPI_Recv(d, 2, MPI_INT, 0, TAG_DOWN, f->comm, MPI_STATUS_IGNORE);
+      rc = MPI_Recv(d, DOWN_INTS, MPI_INT, 0, TAG_DOWN, f->comm, MPI_STATUS_IGNORE);
     if (rc != MPI_SUCCESS) return mpi_failed(err, rc, "waiting for rank 0");
     if (flag) return WL_OK;
-    if (lead_here && process_gone(lead->pid))
-      return wl_error_set(err, WL_EIO, "rank %d (%s): rank 0 (pid %ld) is gone; its cases "
-                          "in flight are lost, the finished ones are kept: run the sweep again",
-                          f->r->rank, f->r->host, lead->pid);
-    if (now_s() - t0 > f->r->silence_s)
-      return wl_error_set(err, WL_EIO, "rank %d (%s): no word from rank 0 (%s) for %.0f s; "
-                          "giving up (wallload sweep --rank-timeout)",
-                          f->r->rank, f->r->host, lead->host, f->r->silence_s);
+    if (follower_lead_lost(f, t0, err)) return WL_EIO;
     nap();
   }
 }
 
-enum wl_status sweep_follow(const struct wl_sweep_ranks *r, struct wl_sweep *sw, const char *dir,
+enum wl_status sweep_follow(struct wl_sweep_ranks *r, struct wl_sweep *sw, const char *dir,
                             const struct wl_assess_opts *opts, struct wl_error *err) {
   struct start lead;
   MPI_Request q;
@@ -646,10 +690,17 @@ enum wl_status sweep_follow(const struct wl_sweep_ranks *r, struct wl_sweep *sw,
   if (rc == MPI_SUCCESS) rc = wait_request(&q);
   if (rc != MPI_SUCCESS) return mpi_failed(err, rc, "waiting for rank 0 to start");
   if (lead.status != WL_OK) return quiet(err, (enum wl_status)lead.status); /* rank 0 says why */
-  struct follower f = {r, r->comm->comm, opts, -1, 0.0, 0, WL_OK};
-  struct up *m = calloc(1, sizeof *m);
-  if (!m) return wl_error_set(err, WL_ENOMEM, "rank %d: no memory", r->rank);
+  struct follower *f = calloc(1, sizeof *f);
+  if (!f) return wl_error_set(err, WL_ENOMEM, "rank %d: no memory", r->rank);
+  f->r = r;
+  f->comm = r->comm->comm;
+  f->opts = opts;
+  f->lead = lead;
+  f->lead_here = !strcmp(lead.host, r->host);
+  f->case_index = -1;
+  f->beat_req = MPI_REQUEST_NULL;
   /* hello: who this is, or why it cannot take part */
+  struct up *m = &f->msg;
   m->kind = UP_HELLO;
   m->pid = (long)getpid();
   snprintf(m->host, sizeof m->host, "%s", r->host);
@@ -668,23 +719,24 @@ enum wl_status sweep_follow(const struct wl_sweep_ranks *r, struct wl_sweep *sw,
                       cases, r->host, lead.host);
   m->status = (int)st;
   snprintf(m->msg, sizeof m->msg, "%s", e.msg);
-  rc = MPI_Send(m, (int)sizeof *m, MPI_BYTE, 0, TAG_UP, f.comm);
-  if (rc != MPI_SUCCESS) st = mpi_failed(err, rc, "reaching rank 0");
-  while (rc == MPI_SUCCESS && !f.ended) {
+  /* the lead says why this rank cannot take part: this rank waits for END */
+  enum wl_status out = follower_send(f, err);
+  while (out == WL_OK && !f->ended) {
     struct down d;
-    if ((st = follower_wait(&f, &lead, &d, err))) break;
-    follower_down(&f, &d);
+    if ((out = follower_wait(f, &d, err))) break;
+    follower_down(f, &d);
     if (d.kind != DOWN_WORK || d.value < 0 || d.value >= sw->n_cases || !digest) continue;
     const int i = d.value;
     memset(&sw->rows[i], 0, sizeof sw->rows[i]);
     sw->rows[i].rank = r->rank;
     struct wl_assess_opts o = *opts;
     o.progress = follower_progress;
-    o.user = &f;
-    f.case_index = i;
-    f.last_beat = now_s();
+    o.user = f;
+    f->case_index = i;
+    f->last_beat = now_s();
     wl_error_clear(&e);
     const enum wl_status cst = sweep_run_case(sw, i, dir, digest[i], &o, &e);
+    if (f->ended) break; /* counted lost meanwhile: the lead has ended and takes no row */
     memset(m, 0, sizeof *m);
     m->kind = UP_RESULT;
     m->case_index = i;
@@ -692,13 +744,22 @@ enum wl_status sweep_follow(const struct wl_sweep_ranks *r, struct wl_sweep *sw,
     m->signal = opts->interrupted ? (int)*opts->interrupted : 0;
     snprintf(m->msg, sizeof m->msg, "%s", e.msg);
     m->row = sw->rows[i];
-    if ((rc = MPI_Send(m, (int)sizeof *m, MPI_BYTE, 0, TAG_UP, f.comm)) != MPI_SUCCESS)
-      st = mpi_failed(err, rc, "sending a result to rank 0");
+    out = follower_send(f, err);
   }
-  free(m);
   free(digest);
-  if (f.ended) return f.end_status ? quiet(err, f.end_status) : WL_OK;
-  return st;
+  if (out != WL_OK) {
+    /* the lead is lost: MPI_Finalize would wait for it, and a send still
+     * under way reads f: both are left */
+    r->lost = 1;
+    return out;
+  }
+  int beat_done = 1;
+  if (f->beat_req != MPI_REQUEST_NULL)
+    MPI_Test(&f->beat_req, &beat_done, MPI_STATUS_IGNORE);
+  const enum wl_status end = f->end_status;
+  if (beat_done) free(f);
+  else r->lost = 1; /* a beat the lead never took: f stays for it */
+  return end ? quiet(err, end) : WL_OK;
 }
 
 #else /* !WL_HAVE_MPI: one process; several started by a launcher are refused */
@@ -723,7 +784,7 @@ enum wl_status wl_sweep_ranks_agree(const struct wl_sweep_ranks *r, enum wl_stat
   return st;
 }
 
-enum wl_status sweep_lead_start(const struct wl_sweep_ranks *r, const struct wl_sweep *sw,
+enum wl_status sweep_lead_start(struct wl_sweep_ranks *r, const struct wl_sweep *sw,
                                 enum wl_status st, struct sweep_lead **lead,
                                 struct wl_error *err) {
   (void)r;
@@ -741,7 +802,7 @@ enum wl_status sweep_lead_cases(struct sweep_lead *L, struct wl_sweep *sw, const
 
 void sweep_lead_end(struct sweep_lead *L, enum wl_status st) { (void)L, (void)st; }
 
-enum wl_status sweep_follow(const struct wl_sweep_ranks *r, struct wl_sweep *sw, const char *dir,
+enum wl_status sweep_follow(struct wl_sweep_ranks *r, struct wl_sweep *sw, const char *dir,
                             const struct wl_assess_opts *opts, struct wl_error *err) {
   (void)r, (void)dir, (void)opts;
   return wl_error_set(err, WL_EUNSUPPORTED, "%s: built without MPI", sw->path);

@@ -435,7 +435,7 @@ enum wl_status wl_sweep_run(struct wl_sweep *sw, const char *dir,
 enum wl_status wl_sweep_run_ranks(struct wl_sweep *sw, const char *dir,
                                   const struct wl_assess_opts *opts,
                                   const struct wl_sweep_events *ev,
-                                  const struct wl_sweep_ranks *ranks, struct wl_error *err) {
+                                  struct wl_sweep_ranks *ranks, struct wl_error *err) {
   const int shared = ranks && ranks->size > 1;
   if (shared && ranks->rank > 0) return sweep_follow(ranks, sw, dir, opts, err);
   /* the lead (or the only process): the directory and its lock are this

@@ -50,7 +50,7 @@ struct sweep_lead;
 
 /* Lead: tell the followers whether the directory is had (st; WL_OK: they
  * start), and make *lead. Returns WL_ENOMEM or an MPI failure. */
-enum wl_status sweep_lead_start(const struct wl_sweep_ranks *r, const struct wl_sweep *sw,
+enum wl_status sweep_lead_start(struct wl_sweep_ranks *r, const struct wl_sweep *sw,
                                 enum wl_status st, struct sweep_lead **lead,
                                 struct wl_error *err);
 
@@ -66,13 +66,14 @@ enum wl_status sweep_lead_cases(struct sweep_lead *lead, struct wl_sweep *sw, co
                                 int *stop, struct wl_error *err);
 
 /* Lead: tell every follower still there that the sweep ended with status
- * st (their exit status), and free lead (may be NULL). */
+ * st (their exit status), and whether a rank was lost (r->lost, on every
+ * rank); free lead (may be NULL). */
 void sweep_lead_end(struct sweep_lead *lead, enum wl_status st);
 
 /* Follower (rank > 0): run the cases the lead hands out until it says the
  * sweep ended. Returns the lead's status with err's message empty (the
  * lead says why), or this rank's own failure (the lead lost). */
-enum wl_status sweep_follow(const struct wl_sweep_ranks *r, struct wl_sweep *sw, const char *dir,
+enum wl_status sweep_follow(struct wl_sweep_ranks *r, struct wl_sweep *sw, const char *dir,
                             const struct wl_assess_opts *opts, struct wl_error *err);
 
 #endif
