@@ -69,6 +69,8 @@ static void one_process(struct wl_sweep_ranks *r) {
   r->host[sizeof r->host - 1] = '\0';
 }
 
+#if WL_HAVE_MPI
+
 static enum wl_status quiet(struct wl_error *err, enum wl_status st) {
   if (err) {
     err->status = st;
@@ -82,8 +84,6 @@ static double now_s(void) {
   clock_gettime(CLOCK_MONOTONIC, &ts);
   return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
-
-#if WL_HAVE_MPI
 
 struct wl_sweep_comm {
   MPI_Comm comm;
