@@ -5,7 +5,8 @@
 #   usage: scripts/setup.sh            (as root, or with sudo available)
 #
 # Build:   gcc, cmake, pkg-config, GSL, libyaml, cairo (+pango), HDF5, OpenMP (libgomp
-#          comes with gcc).
+#          comes with gcc), Open MPI (libopenmpi-dev; openmpi-bin: mpirun, for
+#          `mpirun -np N wallload sweep` and its tests; the build works without them).
 # Tests:   poppler-utils (pdfinfo, pdftotext, pdftoppm check the PDF report), python3
 #          (the command-line tests read summary.json and the CSV files with it).
 # Fuzzing: clang (clang-14), libclang-rt-14-dev (libFuzzer and the sanitizer runtimes
@@ -16,7 +17,8 @@
 set -eu
 
 packages="build-essential cmake pkg-config libgsl-dev libyaml-dev libcairo2-dev
-libpango1.0-dev libhdf5-dev poppler-utils python3 clang libclang-rt-14-dev libomp-14-dev"
+libpango1.0-dev libhdf5-dev libopenmpi-dev openmpi-bin poppler-utils python3 clang
+libclang-rt-14-dev libomp-14-dev"
 
 missing=""
 for p in $packages; do

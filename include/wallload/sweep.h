@@ -64,6 +64,7 @@ struct wl_sweep_row {
   enum wl_status status;            /* the case's: WL_OK when every load case completed */
   char message[512];                /* why not, when not WL_OK */
   double runtime_s;                 /* wall clock of the case's run [s] */
+  int rank;                         /* the MPI rank that ran it (0 without MPI) */
   struct wl_sweep_loads load[WL_SWEEP_N_LOADS];
 };
 
@@ -109,6 +110,59 @@ enum wl_status wl_sweep_case_scenario(const struct wl_sweep *sw, int i, struct w
 /* "charge = 0.5 g, standoff = 2 m": case i's values as written. */
 void wl_sweep_case_label(const struct wl_sweep *sw, int i, char *buf, size_t size);
 
+/* ---- MPI: `mpirun -np N wallload sweep` (docs/sweep-mpi.md) --------------------- */
+
+/* This process among the sweep's processes. Without MPI (or without an MPI
+ * launcher) one process: rank 0 of size 1. */
+struct wl_sweep_ranks {
+  int rank, size;               /* in the job */
+  int local_rank, local_size;   /* among the job's ranks on this host */
+  int threads;                  /* CPU threads a rank's case gets by default: this host's
+                                   cores divided among its ranks, at most the cores the
+                                   rank may run on (its binding) */
+  char host[64];                /* this host's name */
+  char gpu[64];                 /* the GPU given to this rank (CUDA_VISIBLE_DEVICES as
+                                   set for it); "" when none was chosen here */
+  double silence_s;             /* rank 0 counts a rank lost after this long without a
+                                   word from it (its heartbeat is every 5 s); > 0 */
+  int lost;                     /* a rank was lost (set by wl_sweep_run_ranks): MPI is
+                                   not finalised, since Open MPI's MPI_Finalize waits for
+                                   every rank, the dead one too */
+  struct wl_sweep_comm *comm;   /* MPI's; NULL for one process */
+};
+
+/* What a rank reports when it starts (wl_sweep_events.rank_ready). */
+struct wl_sweep_rank_info {
+  int rank;
+  long pid;
+  int threads;                  /* CPU threads its cases run with */
+  char host[64], gpu[64];
+};
+
+/* 1 when this build has MPI. */
+int wl_sweep_mpi_built(void);
+
+/* Take this process's place among the ranks. Started by an MPI launcher
+ * (mpirun sets OMPI_COMM_WORLD_SIZE; MPICH, PMIx and Slurm's PMI set
+ * PMI_SIZE or PMIX_RANK), MPI is initialised; otherwise r is one process
+ * and nothing else happens. Before any CUDA call (the GPU is chosen
+ * through the environment): on a host with several GPUs and several ranks,
+ * each rank sees one, by its local rank. WL_EUNSUPPORTED when an MPI
+ * launcher started several processes of a build without MPI. */
+enum wl_status wl_sweep_ranks_init(struct wl_sweep_ranks *r, struct wl_error *err);
+
+/* MPI finalised, when init started it and no rank was lost (r->lost);
+ * r becomes one process. */
+void wl_sweep_ranks_finish(struct wl_sweep_ranks *r);
+
+/* Every rank's st (which must be the same call on every rank), agreed:
+ * returns rank 0's status when it failed (err's message kept on rank 0,
+ * emptied on the others: one message, not N); else, when another rank
+ * failed, that rank keeps its message (prefixed "rank K (HOST): ") and
+ * rank 0 gets one naming the ranks; WL_OK when all are. One process: st. */
+enum wl_status wl_sweep_ranks_agree(const struct wl_sweep_ranks *r, enum wl_status st,
+                                    struct wl_error *err);
+
 /* What the sweep tells its caller while it runs (library code prints
  * nothing). Both may be NULL. */
 struct wl_sweep_events {
@@ -117,6 +171,8 @@ struct wl_sweep_events {
   /* after case i ran (its row is filled) */
   void (*case_end)(void *user, const struct wl_sweep *sw, int i);
   void *user;
+  /* MPI, on rank 0: rank `info->rank` has started (it reports once) */
+  void (*rank_ready)(void *user, const struct wl_sweep_rank_info *info);
 };
 
 /* Run (or read back) every case into directory dir (created when missing;
@@ -132,5 +188,18 @@ struct wl_sweep_events {
 enum wl_status wl_sweep_run(struct wl_sweep *sw, const char *dir,
                             const struct wl_assess_opts *opts, const struct wl_sweep_events *ev,
                             struct wl_error *err);
+
+/* wl_sweep_run on every rank of r (NULL or one process: wl_sweep_run).
+ * Rank 0 locks dir, reads back finished cases, hands the others out one at
+ * a time (and runs cases itself in between), gathers every row and writes
+ * the tables and the PDF, as wl_sweep_run does; the events come on rank 0
+ * only. dir must be on a filesystem every rank sees. The other ranks run
+ * the cases they are given into dir/cases/ and return rank 0's status with
+ * an empty message. A rank that dies, or is silent for r->silence_s, while
+ * running a case makes that case a failed row; the others go on. */
+enum wl_status wl_sweep_run_ranks(struct wl_sweep *sw, const char *dir,
+                                  const struct wl_assess_opts *opts,
+                                  const struct wl_sweep_events *ev,
+                                  struct wl_sweep_ranks *ranks, struct wl_error *err);
 
 #endif

@@ -17,7 +17,11 @@ enum wl_status wl_cli_assess(int argc, char **argv, struct wl_error *err);
 enum wl_status wl_cli_report(int argc, char **argv, struct wl_error *err);
 enum wl_status wl_cli_validate(int argc, char **argv, struct wl_error *err);
 enum wl_status wl_cli_bench(int argc, char **argv, struct wl_error *err);
-enum wl_status wl_cli_sweep(int argc, char **argv, struct wl_error *err);
+/* ranks: this process among mpirun's, started here; main() finishes it
+ * (wl_sweep_ranks_finish) after printing, so that no rank exits, and
+ * mpirun ends the job, before rank 0 has said why. */
+enum wl_status wl_cli_sweep(int argc, char **argv, struct wl_sweep_ranks *ranks,
+                            struct wl_error *err);
 
 /* Shared by assess and sweep (check.c). */
 

@@ -33,7 +33,8 @@ static void usage(FILE *out) {
           "                      every case of the scenario's sweep section, each as assess\n"
           "                      runs it; sweep.csv, sweep.h5, sweep.pdf (envelopes) in DIR\n"
           "                      (default <scenario>-sweep); a killed sweep continues where it\n"
-          "                      stopped when run again\n"
+          "                      stopped when run again; under mpirun -np N the ranks share\n"
+          "                      the cases ([--rank-timeout SECONDS]; docs/sweep-mpi.md)\n"
           "  convert OPTIONS     charge weight <-> crater <-> energy <-> equal-energy solitary\n"
           "                      wave (wallload convert --help)\n"
           "  report RESULTS.h5 [-o FILE.pdf] [--template FILE]\n"
@@ -74,6 +75,8 @@ int main(int argc, char **argv) {
   signal(SIGXFSZ, SIG_IGN);
   struct wl_error err;
   wl_error_clear(&err);
+  struct wl_sweep_ranks ranks; /* one process, unless sweep runs under mpirun */
+  memset(&ranks, 0, sizeof ranks);
   if (argc < 2) {
     usage(stderr);
     return 2;
@@ -84,7 +87,8 @@ int main(int argc, char **argv) {
     usage(stdout);
     return 0;
   } else if (!strcmp(cmd, "--version")) {
-    printf("wallload %s (CUDA backend: %s)\n", WL_VERSION, WL_HAVE_CUDA ? "built" : "not built");
+    printf("wallload %s (CUDA backend: %s; MPI: %s)\n", WL_VERSION,
+           WL_HAVE_CUDA ? "built" : "not built", WL_HAVE_MPI ? "built" : "not built");
     return 0;
   } else if (!strcmp(cmd, "check")) {
     st = wl_cli_check(argc - 1, argv + 1, &err);
@@ -93,7 +97,7 @@ int main(int argc, char **argv) {
   } else if (!strcmp(cmd, "assess")) {
     st = wl_cli_assess(argc - 1, argv + 1, &err);
   } else if (!strcmp(cmd, "sweep")) {
-    st = wl_cli_sweep(argc - 1, argv + 1, &err);
+    st = wl_cli_sweep(argc - 1, argv + 1, &ranks, &err);
   } else if (!strcmp(cmd, "report")) {
     st = wl_cli_report(argc - 1, argv + 1, &err);
   } else if (!strcmp(cmd, "bench")) {
@@ -105,12 +109,18 @@ int main(int argc, char **argv) {
     usage(stderr);
     return 2;
   }
-  if (st != WL_OK) fprintf(stderr, "wallload: %s\n", err.msg);
+  /* an empty message: another process says why (the other ranks of an
+   * MPI sweep leave it to rank 0) */
+  if (st != WL_OK && err.msg[0]) fprintf(stderr, "wallload: %s\n", err.msg);
   int code = wl_error_exit_code(st);
   /* what was printed (a case summary, check's listing) must have arrived */
   if (fflush(stdout) != 0 || ferror(stdout)) {
     fprintf(stderr, "wallload: standard output: %s\n", strerror(errno));
     if (code == 0) code = 1;
   }
+  /* MPI finalised last: a rank cannot exit (mpirun then ends the job)
+   * before rank 0 has printed */
+  fflush(stderr);
+  wl_sweep_ranks_finish(&ranks);
   return code;
 }

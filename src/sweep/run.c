@@ -196,11 +196,8 @@ static void row_from_result(const struct wl_assess_result *res, struct wl_sweep_
   }
 }
 
-/* Run case i into dir/cases/<id>/ and fill its row. Returns the case's
- * status (its row's); WL_EIO or WL_ENOMEM when its files could not be
- * written (the sweep then stops: the next case would fail alike). */
-static enum wl_status run_case(struct wl_sweep *sw, int i, const char *dir, const char *digest,
-                               const struct wl_assess_opts *opts, struct wl_error *err) {
+enum wl_status sweep_run_case(struct wl_sweep *sw, int i, const char *dir, const char *digest,
+                              const struct wl_assess_opts *opts, struct wl_error *err) {
   const struct wl_sweep_case *c = &sw->cases[i];
   struct wl_sweep_row *r = &sw->rows[i];
   char cdir[1200], path[1400];
@@ -313,9 +310,9 @@ static void list_done(const struct wl_sweep *sw, char *buf, size_t size) {
   }
 }
 
-static enum wl_status sweep_locked(struct wl_sweep *sw, const char *dir,
-                                   const struct wl_assess_opts *opts,
-                                   const struct wl_sweep_events *ev, struct wl_error *err) {
+enum wl_status sweep_digests(const struct wl_sweep *sw, const struct wl_assess_opts *opts,
+                             char (**digest)[17], int *threads, struct wl_error *err) {
+  *digest = NULL;
   /* the backend the cases run on, for their digests */
   struct wl_scenario *cs = malloc(sizeof *cs);
   if (!cs) return wl_error_set(err, WL_ENOMEM, "%s: no memory", sw->path);
@@ -325,12 +322,59 @@ static enum wl_status sweep_locked(struct wl_sweep *sw, const char *dir,
   wl_scenario_clear(cs);
   free(cs);
   if (st) return st;
+  if (threads) *threads = m.threads;
   const char *backend = m.device_bytes > 0 ? "cuda" : "cpu";
-  char(*digest)[17] = malloc((size_t)sw->n_cases * sizeof *digest);
-  if (!digest) return wl_error_set(err, WL_ENOMEM, "%s: no memory", sw->path);
+  char(*d)[17] = malloc((size_t)sw->n_cases * sizeof *d);
+  if (!d) return wl_error_set(err, WL_ENOMEM, "%s: no memory", sw->path);
+  for (int i = 0; i < sw->n_cases; i++) case_digest(&sw->cases[i], backend, opts->end_time, d[i]);
+  *digest = d;
+  return WL_OK;
+}
+
+/* The pending cases one after the other in this process. *stop gets the
+ * stop signal's number when one ends the sweep early. */
+static enum wl_status run_serial(struct wl_sweep *sw, const char *dir,
+                                 const struct wl_assess_opts *opts,
+                                 const struct wl_sweep_events *ev, char (*digest)[17], int *stop,
+                                 struct wl_error *err) {
+  enum wl_status st = WL_OK;
+  for (int i = 0; i < sw->n_cases; i++) {
+    if (sw->rows[i].state != WL_SWEEP_PENDING) continue;
+    if (opts->interrupted && *opts->interrupted) {
+      *stop = (int)*opts->interrupted;
+      break;
+    }
+    if (ev && ev->case_begin) ev->case_begin(ev->user, sw, i, 0);
+    struct wl_error e;
+    wl_error_clear(&e);
+    const enum wl_status cst = sweep_run_case(sw, i, dir, digest[i], opts, &e);
+    if (ev && ev->case_end) ev->case_end(ev->user, sw, i);
+    st = sweep_write_tables(sw, dir, err);
+    if (cst == WL_EIO || cst == WL_ENOMEM) {
+      if (st == WL_OK) st = wl_error_set(err, cst, "case %d (%s): %s", i, sw->cases[i].id, e.msg);
+      break;
+    }
+    if (st) break;
+    if (cst == WL_EINTERRUPTED || (opts->interrupted && *opts->interrupted)) {
+      *stop = opts->interrupted && *opts->interrupted ? (int)*opts->interrupted : SIGINT;
+      break;
+    }
+  }
+  return st;
+}
+
+/* The sweep in its locked directory: cases read back, the others run here
+ * (lead NULL) or shared among MPI ranks (mpi.c), then the summary. */
+static enum wl_status sweep_locked(struct wl_sweep *sw, const char *dir,
+                                   const struct wl_assess_opts *opts,
+                                   const struct wl_sweep_events *ev, struct sweep_lead *lead,
+                                   struct wl_error *err) {
+  char(*digest)[17];
+  int threads = 0;
+  enum wl_status st = sweep_digests(sw, opts, &digest, &threads, err);
+  if (st) return st;
   for (int i = 0; i < sw->n_cases; i++) {
     memset(&sw->rows[i], 0, sizeof sw->rows[i]);
-    case_digest(&sw->cases[i], backend, opts->end_time, digest[i]);
     char cdir[1200], p[1400];
     snprintf(cdir, sizeof cdir, "%s/cases/%s", dir, sw->cases[i].id);
     snprintf(p, sizeof p, "%s/results.h5", cdir);
@@ -343,27 +387,9 @@ static enum wl_status sweep_locked(struct wl_sweep *sw, const char *dir,
   }
   st = sweep_write_tables(sw, dir, err);
   int stop = 0, n_bad = 0;
-  for (int i = 0; st == WL_OK && i < sw->n_cases; i++) {
-    if (sw->rows[i].state != WL_SWEEP_PENDING) continue;
-    if (opts->interrupted && *opts->interrupted) {
-      stop = (int)*opts->interrupted;
-      break;
-    }
-    if (ev && ev->case_begin) ev->case_begin(ev->user, sw, i, 0);
-    struct wl_error e;
-    wl_error_clear(&e);
-    const enum wl_status cst = run_case(sw, i, dir, digest[i], opts, &e);
-    if (ev && ev->case_end) ev->case_end(ev->user, sw, i);
-    st = sweep_write_tables(sw, dir, err);
-    if (cst == WL_EIO || cst == WL_ENOMEM) {
-      if (st == WL_OK) st = wl_error_set(err, cst, "case %d (%s): %s", i, sw->cases[i].id, e.msg);
-      break;
-    }
-    if (cst == WL_EINTERRUPTED || (opts->interrupted && *opts->interrupted)) {
-      stop = opts->interrupted && *opts->interrupted ? (int)*opts->interrupted : SIGINT;
-      break;
-    }
-  }
+  if (st == WL_OK)
+    st = lead ? sweep_lead_cases(lead, sw, dir, opts, ev, digest, threads, &stop, err)
+              : run_serial(sw, dir, opts, ev, digest, &stop, err);
   free(digest);
   if (st) return st;
   char done[1024];
@@ -403,11 +429,28 @@ static enum wl_status sweep_locked(struct wl_sweep *sw, const char *dir,
 enum wl_status wl_sweep_run(struct wl_sweep *sw, const char *dir,
                             const struct wl_assess_opts *opts, const struct wl_sweep_events *ev,
                             struct wl_error *err) {
+  return wl_sweep_run_ranks(sw, dir, opts, ev, NULL, err);
+}
+
+enum wl_status wl_sweep_run_ranks(struct wl_sweep *sw, const char *dir,
+                                  const struct wl_assess_opts *opts,
+                                  const struct wl_sweep_events *ev,
+                                  struct wl_sweep_ranks *ranks, struct wl_error *err) {
+  const int shared = ranks && ranks->size > 1;
+  if (shared && ranks->rank > 0) return sweep_follow(ranks, sw, dir, opts, err);
+  /* the lead (or the only process): the directory and its lock are this
+   * process's; the other ranks start once they are had, or learn why not */
   enum wl_status st = prepare_dir(dir, err);
-  if (st) return st;
   char lock[1200];
-  if ((st = wl_assess_lock_dir(dir, lock, sizeof lock, err))) return st;
-  st = sweep_locked(sw, dir, opts, ev, err);
-  unlink(lock);
+  if (st == WL_OK) st = wl_assess_lock_dir(dir, lock, sizeof lock, err);
+  const int locked = st == WL_OK;
+  struct sweep_lead *lead = NULL;
+  if (shared) {
+    enum wl_status lst = sweep_lead_start(ranks, sw, st, &lead, err);
+    if (st == WL_OK) st = lst;
+  }
+  if (st == WL_OK) st = sweep_locked(sw, dir, opts, ev, lead, err);
+  if (shared) sweep_lead_end(lead, st);
+  if (locked) unlink(lock);
   return st;
 }
