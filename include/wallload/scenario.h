@@ -172,6 +172,12 @@ const char *wl_scenario_sweep_param_name(enum wl_sweep_param p);
  * theory is used up to 0.78, where mass and energy still rise with H. */
 #define WL_SCENARIO_MAX_EPS 0.78
 
+/* The shortest decimal text that reads back as v, to 12 significant
+ * digits (a generated value's last bits, 19.999999999999996 from a log
+ * spacing, are noise): how the sweep writes values into a case's scenario.
+ * Plain notation from 1e-4 to 1e15. */
+void wl_scenario_number_text(double v, char *buf, size_t size);
+
 /* Zero a scenario so wl_scenario_clear is safe on it. */
 void wl_scenario_init(struct wl_scenario *s);
 

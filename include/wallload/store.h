@@ -128,6 +128,17 @@ enum wl_status wl_store_write_xdmf_batch(const char *xmf_path, const char *h5_na
                                          const struct wl_snapshot_ref *snaps, size_t n_snaps,
                                          struct wl_store_batch *b, struct wl_error *err);
 
+/* A growing text buffer for the text files written below (CSV, JSON):
+ * wl_text_put appends printf-style; when an allocation fails, `failed` is
+ * set and later puts do nothing (the writer then reports WL_ENOMEM).
+ * Zero-initialise; the caller frees s. */
+struct wl_text {
+  char *s;
+  size_t len, cap;
+  int failed;
+};
+void wl_text_put(struct wl_text *t, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
 /* Write `text` to `path` atomically (temp file + fsync + rename); for JSON
  * and CSV. */
 enum wl_status wl_store_write_text(const char *path, const char *text, size_t len,

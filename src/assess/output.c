@@ -13,75 +13,42 @@
 #include "wallload/store.h"
 #include "wallload/units.h"
 
-/* A growing text buffer for JSON and CSV. */
-struct text {
-  char *s;
-  size_t len, cap;
-  int failed;
-};
-
-static void put(struct text *t, const char *fmt, ...) {
-  if (t->failed) return;
-  for (;;) {
-    va_list ap;
-    va_start(ap, fmt);
-    int n = vsnprintf(t->s ? t->s + t->len : NULL, t->s ? t->cap - t->len : 0, fmt, ap);
-    va_end(ap);
-    if (n < 0) {
-      t->failed = 1;
-      return;
-    }
-    if (t->s && t->len + (size_t)n < t->cap) {
-      t->len += (size_t)n;
-      return;
-    }
-    size_t cap = t->cap ? t->cap : 4096;
-    while (cap <= t->len + (size_t)n) cap *= 2;
-    char *b = realloc(t->s, cap);
-    if (!b) {
-      t->failed = 1;
-      return;
-    }
-    t->s = b;
-    t->cap = cap;
-  }
-}
 
 /* A JSON number: non-finite values are written as null. */
-static void jnum(struct text *t, double v) {
+static void jnum(struct wl_text *t, double v) {
   if (isfinite(v))
-    put(t, "%.10g", v);
+    wl_text_put(t, "%.10g", v);
   else
-    put(t, "null");
+    wl_text_put(t, "null");
 }
 
-static void jstr(struct text *t, const char *s) {
-  put(t, "\"");
+static void jstr(struct wl_text *t, const char *s) {
+  wl_text_put(t, "\"");
   for (; *s; s++) {
     unsigned char ch = (unsigned char)*s;
     if (ch == '"' || ch == '\\')
-      put(t, "\\%c", ch);
+      wl_text_put(t, "\\%c", ch);
     else if (ch < 0x20)
-      put(t, "\\u%04x", ch);
+      wl_text_put(t, "\\u%04x", ch);
     else
-      put(t, "%c", ch);
+      wl_text_put(t, "%c", ch);
   }
-  put(t, "\"");
+  wl_text_put(t, "\"");
 }
 
-static void jval(struct text *t, const char *key, double v, const char *unit, const char *what,
+static void jval(struct wl_text *t, const char *key, double v, const char *unit, const char *what,
                  int last) {
-  put(t, "      ");
+  wl_text_put(t, "      ");
   jstr(t, key);
-  put(t, ": { \"value\": ");
+  wl_text_put(t, ": { \"value\": ");
   jnum(t, v);
-  put(t, ", \"unit\": ");
+  wl_text_put(t, ", \"unit\": ");
   jstr(t, unit);
   if (what) {
-    put(t, ", \"from\": ");
+    wl_text_put(t, ", \"from\": ");
     jstr(t, what);
   }
-  put(t, " }%s\n", last ? "" : ",");
+  wl_text_put(t, " }%s\n", last ? "" : ",");
 }
 
 static const char *status_word(enum wl_status st) {
@@ -146,65 +113,65 @@ static double level_value(const struct wl_assess_level *lv, const struct level_f
 
 static const char *bool_word(int b) { return b ? "true" : "false"; }
 
-static void json_estimate(struct text *t, const char *key, const struct wl_loads_convergence *e,
+static void json_estimate(struct wl_text *t, const char *key, const struct wl_loads_convergence *e,
                           int last) {
-  put(t, "        ");
+  wl_text_put(t, "        ");
   jstr(t, key);
-  put(t, ": { \"order\": ");
+  wl_text_put(t, ": { \"order\": ");
   jnum(t, e->order);
-  put(t, ", \"order_meaningful\": %s, \"extrapolated\": ", bool_word(e->order_ok));
+  wl_text_put(t, ", \"order_meaningful\": %s, \"extrapolated\": ", bool_word(e->order_ok));
   jnum(t, e->extrapolated);
-  put(t, ", \"error_estimate\": ");
+  wl_text_put(t, ", \"error_estimate\": ");
   jnum(t, e->error);
-  put(t, ", \"basis\": ");
+  wl_text_put(t, ", \"basis\": ");
   jstr(t, wl_loads_estimate_name(e->basis));
-  put(t, " }%s\n", last ? "" : ",");
+  wl_text_put(t, " }%s\n", last ? "" : ",");
 }
 
-static void json_convergence(struct text *t, const struct wl_assess_convergence *cv) {
-  put(t, "      \"convergence\": {\n        \"units\": {");
+static void json_convergence(struct wl_text *t, const struct wl_assess_convergence *cv) {
+  wl_text_put(t, "      \"convergence\": {\n        \"units\": {");
   for (int k = 0; k < N_LEVEL_FIELDS; k++) {
     if (LEVEL_FIELDS[k].kind == 3) continue;
-    put(t, "%s", k ? ", " : " ");
+    wl_text_put(t, "%s", k ? ", " : " ");
     jstr(t, LEVEL_FIELDS[k].name);
-    put(t, ": ");
+    wl_text_put(t, ": ");
     jstr(t, LEVEL_FIELDS[k].unit);
   }
-  put(t, " },\n        \"levels\": [\n");
+  wl_text_put(t, " },\n        \"levels\": [\n");
   for (int l = 0; l < cv->n_levels; l++) {
     const struct wl_assess_level *lv = &cv->lv[l];
-    put(t, "          {");
+    wl_text_put(t, "          {");
     for (int k = 0; k < N_LEVEL_FIELDS; k++) {
       const struct level_field *f = &LEVEL_FIELDS[k];
-      put(t, "%s", k ? ", " : " ");
+      wl_text_put(t, "%s", k ? ", " : " ");
       jstr(t, f->name);
-      put(t, ": ");
+      wl_text_put(t, ": ");
       if (f->kind == 3)
         jstr(t, status_word(lv->status));
       else
         jnum(t, level_value(lv, f));
     }
-    put(t, " }%s\n", l + 1 < cv->n_levels ? "," : "");
+    wl_text_put(t, " }%s\n", l + 1 < cv->n_levels ? "," : "");
   }
-  put(t, "        ],\n        \"levels_planned\": %d,\n", cv->n_planned);
-  put(t, "        \"ratio\": ");
+  wl_text_put(t, "        ],\n        \"levels_planned\": %d,\n", cv->n_planned);
+  wl_text_put(t, "        \"ratio\": ");
   jnum(t, cv->force.r32);
-  put(t, ",\n        \"order\": { \"peak_force\": ");
+  wl_text_put(t, ",\n        \"order\": { \"peak_force\": ");
   jnum(t, cv->force.order);
-  put(t, ", \"impulse_positive\": ");
+  wl_text_put(t, ", \"impulse_positive\": ");
   jnum(t, cv->impulse_pos.order);
-  put(t, " },\n");
+  wl_text_put(t, " },\n");
   json_estimate(t, "peak_force", &cv->force, 0);
   json_estimate(t, "impulse_positive", &cv->impulse_pos, 0);
-  put(t, "        \"error_estimate\": ");
+  wl_text_put(t, "        \"error_estimate\": ");
   jnum(t, cv->error_estimate);
-  put(t, ",\n        \"target\": ");
+  wl_text_put(t, ",\n        \"target\": ");
   jnum(t, cv->target);
-  put(t, ",\n        \"target_given\": %s,\n        \"target_met\": %s,\n"
+  wl_text_put(t, ",\n        \"target_given\": %s,\n        \"target_met\": %s,\n"
          "        \"stopped_early\": %s,\n        \"note\": ",
       bool_word(cv->target_given), bool_word(cv->target_met), bool_word(cv->stopped_early));
   jstr(t, cv->note);
-  put(t, "\n      }\n");
+  wl_text_put(t, "\n      }\n");
 }
 
 static enum wl_status write_convergence_h5(struct wl_store *h5, const struct wl_case_result *c,
@@ -266,40 +233,40 @@ static enum wl_status write_convergence_h5(struct wl_store *h5, const struct wl_
 /* convergence.csv: one row per case and level. */
 static enum wl_status write_convergence_csv(const struct wl_assess_result *res,
                                             struct wl_store_batch *b, struct wl_error *err) {
-  struct text t = {0};
-  put(&t, "case,level");
+  struct wl_text t = {0};
+  wl_text_put(&t, "case,level");
   for (int k = 0; k < N_LEVEL_FIELDS; k++) {
     const struct level_field *f = &LEVEL_FIELDS[k];
     if (f->kind == 3 || !strcmp(f->unit, "1")) {
-      put(&t, ",%s", f->name);
+      wl_text_put(&t, ",%s", f->name);
       continue;
     }
     /* units as the other CSV files spell them: N/m -> N_per_m, N s/m -> Ns_per_m */
-    put(&t, ",%s_", f->name);
+    wl_text_put(&t, ",%s_", f->name);
     const char *u = f->unit;
     if (!strncmp(u, "1/", 2)) {
-      put(&t, "per_");
+      wl_text_put(&t, "per_");
       u += 2;
     }
     for (; *u; u++)
       if (*u == '/')
-        put(&t, "_per_");
+        wl_text_put(&t, "_per_");
       else if (*u != ' ')
-        put(&t, "%c", *u);
+        wl_text_put(&t, "%c", *u);
   }
-  put(&t, "\n");
+  wl_text_put(&t, "\n");
   for (int i = 0; i < res->n_cases; i++) {
     const struct wl_assess_convergence *cv = &res->conv[i];
     for (int l = 0; l < cv->n_levels; l++) {
-      put(&t, "%s,%d", res->cases[i].name, l + 1);
+      wl_text_put(&t, "%s,%d", res->cases[i].name, l + 1);
       for (int k = 0; k < N_LEVEL_FIELDS; k++) {
         const struct level_field *f = &LEVEL_FIELDS[k];
         if (f->kind == 3)
-          put(&t, ",%s", status_word(cv->lv[l].status));
+          wl_text_put(&t, ",%s", status_word(cv->lv[l].status));
         else
-          put(&t, ",%.10g", level_value(&cv->lv[l], f));
+          wl_text_put(&t, ",%.10g", level_value(&cv->lv[l], f));
       }
-      put(&t, "\n");
+      wl_text_put(&t, "\n");
     }
   }
   char path[600];
@@ -313,32 +280,32 @@ static enum wl_status write_convergence_csv(const struct wl_assess_result *res,
 static enum wl_status write_summary(const struct wl_scenario *s, const struct wl_plan *plan,
                                     const struct wl_assess_result *res,
                                     struct wl_store_batch *batch, struct wl_error *err) {
-  struct text t = {0};
-  put(&t, "{\n  \"scenario\": ");
+  struct wl_text t = {0};
+  wl_text_put(&t, "{\n  \"scenario\": ");
   jstr(&t, s->name.text);
-  put(&t, ",\n  \"file\": ");
+  wl_text_put(&t, ",\n  \"file\": ");
   jstr(&t, s->path);
-  put(&t, ",\n  \"wallload_version\": ");
+  wl_text_put(&t, ",\n  \"wallload_version\": ");
   jstr(&t, WL_VERSION);
-  put(&t, ",\n  \"backend\": ");
+  wl_text_put(&t, ",\n  \"backend\": ");
   jstr(&t, res->backend);
-  put(&t, ",\n  \"threads\": %d,\n  \"cases\": {\n", res->threads);
+  wl_text_put(&t, ",\n  \"threads\": %d,\n  \"cases\": {\n", res->threads);
   for (int i = 0; i < res->n_cases; i++) {
     const struct wl_case_result *c = &res->cases[i];
     const struct wl_case_loads *l = &c->loads;
-    put(&t, "    ");
+    wl_text_put(&t, "    ");
     jstr(&t, c->name);
-    put(&t, ": {\n      \"status\": ");
+    wl_text_put(&t, ": {\n      \"status\": ");
     jstr(&t, status_word(c->status));
     if (c->status != WL_OK) {
-      put(&t, ",\n      \"stopped\": ");
+      wl_text_put(&t, ",\n      \"stopped\": ");
       jstr(&t, c->message);
     }
     if (c->caution[0]) {
-      put(&t, ",\n      \"caution\": ");
+      wl_text_put(&t, ",\n      \"caution\": ");
       jstr(&t, c->caution);
     }
-    put(&t, ",\n");
+    wl_text_put(&t, ",\n");
     char filt[96];
     snprintf(filt, sizeof filt, "pressure probes, low-pass %.4g Hz", l->cutoff);
     char filt_b[96];
@@ -383,7 +350,7 @@ static enum wl_status write_summary(const struct wl_scenario *s, const struct wl
     jval(&t, "max_runup", l->runup, "m", "water level at the wall face above still water", 0);
     struct wl_load_units u;
     if (wl_scenario_load_units(s, &u)) { /* the same figures per foot of wall */
-      put(&t, "      \"user_units\": {\n");
+      wl_text_put(&t, "      \"user_units\": {\n");
       jval(&t, "peak_force", l->force_peak.value * u.force_f, u.force, NULL, 0);
       jval(&t, "peak_force_boundary", l->force_bound_peak.value * u.force_f, u.force, NULL, 0);
       jval(&t, "impulse", l->impulse_total * u.impulse_f, u.impulse, NULL, 0);
@@ -391,7 +358,7 @@ static enum wl_status write_summary(const struct wl_scenario *s, const struct wl
       jval(&t, "impulse_positive", l->impulse_positive * u.impulse_f, u.impulse, NULL, 0);
       jval(&t, "peak_moment", l->moment_peak.value * u.moment_f, u.moment, NULL, 0);
       jval(&t, "max_runup", l->runup * u.length_f, u.length, NULL, 1);
-      put(&t, "      },\n");
+      wl_text_put(&t, "      },\n");
     }
     jval(&t, "rise_time", l->force_peak.rise_time, "s", "10 % of the dynamic peak to the peak", 0);
     jval(&t, "duration", l->force_peak.duration, "s", "dynamic force above 10 % of its peak", 0);
@@ -429,35 +396,35 @@ static enum wl_status write_summary(const struct wl_scenario *s, const struct wl
          c->runtime_s > 0 ? (double)c->n_particles * (double)c->steps / c->runtime_s : NAN, "1/s",
          NULL, res->conv[i].n_levels == 0);
     if (res->conv[i].n_levels) json_convergence(&t, &res->conv[i]);
-    put(&t, "    }%s\n", i + 1 < res->n_cases ? "," : "");
+    wl_text_put(&t, "    }%s\n", i + 1 < res->n_cases ? "," : "");
   }
-  put(&t, "  }");
+  wl_text_put(&t, "  }");
   if (res->n_cases == 2) {
     const struct wl_case_loads *a = &res->cases[0].loads, *b = &res->cases[1].loads;
     int f = a->force_peak.value >= b->force_peak.value ? 0 : 1;
     int im = a->impulse_total >= b->impulse_total ? 0 : 1;
     int ip = a->impulse_peak >= b->impulse_peak ? 0 : 1;
     int ipos = a->impulse_positive >= b->impulse_positive ? 0 : 1;
-    put(&t, ",\n  \"comparison\": {\n    \"larger_peak_force\": ");
+    wl_text_put(&t, ",\n  \"comparison\": {\n    \"larger_peak_force\": ");
     jstr(&t, res->cases[f].name);
-    put(&t, ",\n    \"peak_force_ratio\": ");
+    wl_text_put(&t, ",\n    \"peak_force_ratio\": ");
     jnum(&t, res->cases[f].loads.force_peak.value / res->cases[1 - f].loads.force_peak.value);
-    put(&t, ",\n    \"larger_impulse\": ");
+    wl_text_put(&t, ",\n    \"larger_impulse\": ");
     jstr(&t, res->cases[im].name);
-    put(&t, ",\n    \"impulse_ratio\": ");
+    wl_text_put(&t, ",\n    \"impulse_ratio\": ");
     jnum(&t, res->cases[im].loads.impulse_total / res->cases[1 - im].loads.impulse_total);
-    put(&t, ",\n    \"larger_impulse_positive_phase\": ");
+    wl_text_put(&t, ",\n    \"larger_impulse_positive_phase\": ");
     jstr(&t, res->cases[ip].name);
-    put(&t, ",\n    \"impulse_positive_phase_ratio\": ");
+    wl_text_put(&t, ",\n    \"impulse_positive_phase_ratio\": ");
     jnum(&t, res->cases[ip].loads.impulse_peak / res->cases[1 - ip].loads.impulse_peak);
-    put(&t, ",\n    \"larger_impulse_positive\": ");
+    wl_text_put(&t, ",\n    \"larger_impulse_positive\": ");
     jstr(&t, res->cases[ipos].name);
-    put(&t, ",\n    \"impulse_positive_ratio\": ");
+    wl_text_put(&t, ",\n    \"impulse_positive_ratio\": ");
     jnum(&t, res->cases[ipos].loads.impulse_positive / res->cases[1 - ipos].loads.impulse_positive);
-    put(&t, "\n  }");
+    wl_text_put(&t, "\n  }");
   }
   (void)plan;
-  put(&t, "\n}\n");
+  wl_text_put(&t, "\n}\n");
   if (t.failed) {
     free(t.s);
     return wl_error_set(err, WL_ENOMEM, "summary.json: no memory");
@@ -473,11 +440,11 @@ static enum wl_status write_csv(const struct wl_assess_result *res, const struct
                                 struct wl_store_batch *b, struct wl_error *err) {
   const struct wl_record *r = &c->rec;
   const struct wl_case_loads *l = &c->loads;
-  struct text t = {0};
-  put(&t, "time_s,force_N_per_m,force_filtered_N_per_m,force_boundary_N_per_m,impulse_Ns_per_m,"
+  struct wl_text t = {0};
+  wl_text_put(&t, "time_s,force_N_per_m,force_filtered_N_per_m,force_boundary_N_per_m,impulse_Ns_per_m,"
           "moment_Nm_per_m,moment_filtered_Nm_per_m\n");
   for (size_t k = 0; k < r->n; k++)
-    put(&t, "%.6f,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n", r->t[k], r->force[k], l->force_filtered[k],
+    wl_text_put(&t, "%.6f,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n", r->t[k], r->force[k], l->force_filtered[k],
         r->force_bound[k], l->impulse[k], r->moment[k], l->moment_filtered[k]);
   char path[700];
   snprintf(path, sizeof path, "%s/%s_wall.csv", res->out_dir, c->name);
@@ -486,13 +453,13 @@ static enum wl_status write_csv(const struct wl_assess_result *res, const struct
                : wl_store_write_text_batch(path, t.s, t.len, b, err);
   t.len = 0;
   if (!st) {
-    put(&t, "time_s");
-    for (int g = 0; g < r->n_gauges; g++) put(&t, ",eta_%s_m", c->flume.gauge_name[g]);
-    put(&t, "\n");
+    wl_text_put(&t, "time_s");
+    for (int g = 0; g < r->n_gauges; g++) wl_text_put(&t, ",eta_%s_m", c->flume.gauge_name[g]);
+    wl_text_put(&t, "\n");
     for (size_t k = 0; k < r->n; k++) {
-      put(&t, "%.6f", r->t[k]);
-      for (int g = 0; g < r->n_gauges; g++) put(&t, ",%.6g", r->eta[k * (size_t)r->n_gauges + (size_t)g]);
-      put(&t, "\n");
+      wl_text_put(&t, "%.6f", r->t[k]);
+      for (int g = 0; g < r->n_gauges; g++) wl_text_put(&t, ",%.6g", r->eta[k * (size_t)r->n_gauges + (size_t)g]);
+      wl_text_put(&t, "\n");
     }
     snprintf(path, sizeof path, "%s/%s_gauges.csv", res->out_dir, c->name);
     st = t.failed ? wl_error_set(err, WL_ENOMEM, "%s: no memory", path)

@@ -375,9 +375,7 @@ const char *wl_scenario_sweep_param_name(enum wl_sweep_param p) {
   return "?";
 }
 
-/* The shortest decimal text that reads back as v (a range's generated
- * values are written into each case's scenario as text). */
-static void shortest_text(double v, char *buf, size_t size) {
+void wl_scenario_number_text(double v, char *buf, size_t size) {
   /* 12 significant digits: a generated value's last bits (19.999999999999996
    * from a log spacing, 12.000000000000002 from 19.2 - 7.2) are noise */
   char r[40];
@@ -448,7 +446,7 @@ static enum wl_status parse_sweep_range(struct ctx *c, const struct wl_key *k, c
     if (j == 0) v = lo; /* the ends exactly as written */
     if (j == n - 1 && n > 1) v = hi;
     char num[40], text[64];
-    shortest_text(v, num, sizeof num);
+    wl_scenario_number_text(v, num, sizeof num);
     snprintf(text, sizeof text, "%s%s%s", num, *unit ? " " : "", unit);
     snprintf(key, sizeof key, "%s[%d]", path, j);
     if ((st = set_scalar(c, k, key, map, text, &a->values[j]))) return st;

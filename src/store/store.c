@@ -22,6 +22,7 @@
 #define _GNU_SOURCE /* memfd_create */
 #include "wallload/store.h"
 
+#include <stdarg.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <hdf5.h>
@@ -602,4 +603,31 @@ enum wl_status wl_store_write_xdmf_batch(const char *xmf_path, const char *h5_na
   enum wl_status st = write_text(xmf_path, buf, len, b, err);
   free(buf);
   return st;
+}
+
+void wl_text_put(struct wl_text *t, const char *fmt, ...) {
+  if (t->failed) return;
+  for (;;) {
+    va_list ap;
+    va_start(ap, fmt);
+    const int n = vsnprintf(t->s ? t->s + t->len : NULL, t->s ? t->cap - t->len : 0, fmt, ap);
+    va_end(ap);
+    if (n < 0) {
+      t->failed = 1;
+      return;
+    }
+    if (t->s && t->len + (size_t)n < t->cap) {
+      t->len += (size_t)n;
+      return;
+    }
+    size_t cap = t->cap ? t->cap : 8192;
+    while (cap <= t->len + (size_t)n) cap *= 2;
+    char *b = realloc(t->s, cap);
+    if (!b) {
+      t->failed = 1;
+      return;
+    }
+    t->s = b;
+    t->cap = cap;
+  }
 }

@@ -151,26 +151,6 @@ static void yaml_scalar(const char *v, char *out, size_t size) {
   out[o < size ? o : size - 1] = '\0';
 }
 
-/* The shortest decimal text that reads back as v. */
-static void shortest(double v, char *buf, size_t size) {
-  /* 12 significant digits: a generated value's last bits (19.999999999999996
-   * from a log spacing, 12.000000000000002 from 19.2 - 7.2) are noise */
-  char r[40];
-  snprintf(r, sizeof r, "%.12g", v);
-  v = strtod(r, NULL);
-  for (int prec = 1; prec <= 17; prec++) {
-    snprintf(buf, size, "%.*g", prec, v);
-    if (strtod(buf, NULL) == v) break;
-  }
-  const double a = fabs(v);
-  if (strchr(buf, 'e') && a >= 1e-4 && a < 1e15) { /* 1e+01: written out, 10 */
-    const int decimals = (int)fmax(0.0, 16.0 - floor(log10(a)));
-    for (int d = 0; d <= decimals; d++) {
-      snprintf(buf, size, "%.*f", d, v);
-      if (strtod(buf, NULL) == v) break;
-    }
-  }
-}
 
 /* The text of a case: text_of[p] is parameter p's value text (NULL: keep
  * the scenario's). Returns a malloc'ed text (length in *len) or NULL. */
@@ -194,7 +174,7 @@ static char *case_text(const struct wl_scenario *s, const struct places *pl,
     wl_error_clear(&e);
     if (wl_units_parse(text_of[WL_SWEEP_STANDOFF], WL_DIM_LENGTH, &q, &e) != WL_OK) return NULL;
     char num[40];
-    shortest(s->wall.x.q.si - q.si, num, sizeof num);
+    wl_scenario_number_text(s->wall.x.q.si - q.si, num, sizeof num);
     ed[n].from = pl->at.from, ed[n].to = pl->at.to;
     snprintf(ed[n++].text, sizeof ed[0].text, "%s m", num);
   }

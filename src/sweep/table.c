@@ -13,60 +13,27 @@
 
 static const char *const load_name[WL_SWEEP_N_LOADS] = {"solitary", "explosion"};
 
-/* A growing text buffer. */
-struct text {
-  char *s;
-  size_t len, cap;
-  int failed;
-};
-
-static void put(struct text *t, const char *fmt, ...) {
-  if (t->failed) return;
-  for (;;) {
-    va_list ap;
-    va_start(ap, fmt);
-    int n = vsnprintf(t->s ? t->s + t->len : NULL, t->s ? t->cap - t->len : 0, fmt, ap);
-    va_end(ap);
-    if (n < 0) {
-      t->failed = 1;
-      return;
-    }
-    if (t->s && t->len + (size_t)n < t->cap) {
-      t->len += (size_t)n;
-      return;
-    }
-    size_t cap = t->cap ? t->cap : 8192;
-    while (cap <= t->len + (size_t)n) cap *= 2;
-    char *b = realloc(t->s, cap);
-    if (!b) {
-      t->failed = 1;
-      return;
-    }
-    t->s = b;
-    t->cap = cap;
-  }
-}
 
 /* A number to round-trip exactly (%.17g); empty when there is none. */
-static void num(struct text *t, double v) {
-  if (isfinite(v)) put(t, ",%.17g", v);
-  else put(t, ",");
+static void num(struct wl_text *t, double v) {
+  if (isfinite(v)) wl_text_put(t, ",%.17g", v);
+  else wl_text_put(t, ",");
 }
 
 /* A CSV text field, quoted (RFC 4180) when it needs to be. */
-static void field(struct text *t, const char *s) {
-  put(t, ",");
+static void field(struct wl_text *t, const char *s) {
+  wl_text_put(t, ",");
   if (!strpbrk(s, ",\"\n\r")) {
-    put(t, "%s", s);
+    wl_text_put(t, "%s", s);
     return;
   }
-  put(t, "\"");
+  wl_text_put(t, "\"");
   for (; *s; s++) {
-    if (*s == '"') put(t, "\"\"");
-    else if (*s == '\n' || *s == '\r') put(t, " ");
-    else put(t, "%c", *s);
+    if (*s == '"') wl_text_put(t, "\"\"");
+    else if (*s == '\n' || *s == '\r') wl_text_put(t, " ");
+    else wl_text_put(t, "%c", *s);
   }
-  put(t, "\"");
+  wl_text_put(t, "\"");
 }
 
 static double load_value(const struct wl_sweep_loads *l, const struct sweep_field *f) {
@@ -83,23 +50,23 @@ static const char *governs(const struct wl_sweep_row *r, size_t off) {
 }
 
 static enum wl_status write_csv(const struct wl_sweep *sw, const char *dir, struct wl_error *err) {
-  struct text t = {0};
+  struct wl_text t = {0};
   const int both = sw->has_load[0] && sw->has_load[1];
-  put(&t, "case,id,status");
+  wl_text_put(&t, "case,id,status");
   for (int k = 0; k < sw->n_params; k++)
-    put(&t, ",%s_%s", wl_scenario_sweep_param_name(sw->order[k]), sweep_param_unit(sw->order[k]));
+    wl_text_put(&t, ",%s_%s", wl_scenario_sweep_param_name(sw->order[k]), sweep_param_unit(sw->order[k]));
   for (int l = 0; l < WL_SWEEP_N_LOADS; l++) {
     if (!sw->has_load[l]) continue;
-    put(&t, ",%s_status", load_name[l]);
+    wl_text_put(&t, ",%s_status", load_name[l]);
     for (int f = 0; f < sweep_n_fields; f++)
-      put(&t, ",%s_%s_%s", load_name[l], sweep_fields[f].name, sweep_fields[f].csv_unit);
+      wl_text_put(&t, ",%s_%s_%s", load_name[l], sweep_fields[f].name, sweep_fields[f].csv_unit);
   }
-  if (both) put(&t, ",governs_peak_force,governs_impulse_positive");
-  put(&t, ",runtime_s,message\n");
+  if (both) wl_text_put(&t, ",governs_peak_force,governs_impulse_positive");
+  wl_text_put(&t, ",runtime_s,message\n");
   for (int i = 0; i < sw->n_cases; i++) {
     const struct wl_sweep_row *r = &sw->rows[i];
     const int pending = r->state == WL_SWEEP_PENDING;
-    put(&t, "%d,%s,%s", i, sw->cases[i].id, sweep_status_word(r, r->status));
+    wl_text_put(&t, "%d,%s,%s", i, sw->cases[i].id, sweep_status_word(r, r->status));
     for (int k = 0; k < sw->n_params; k++) num(&t, sw->cases[i].value[sw->order[k]]);
     for (int l = 0; l < WL_SWEEP_N_LOADS; l++) {
       if (!sw->has_load[l]) continue;
@@ -114,7 +81,7 @@ static enum wl_status write_csv(const struct wl_sweep *sw, const char *dir, stru
     }
     num(&t, pending ? NAN : r->runtime_s);
     field(&t, pending ? "" : r->message);
-    put(&t, "\n");
+    wl_text_put(&t, "\n");
   }
   char path[1200];
   snprintf(path, sizeof path, "%s/sweep.csv", dir);
