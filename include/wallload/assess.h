@@ -51,6 +51,7 @@
 #ifndef WALLLOAD_ASSESS_H
 #define WALLLOAD_ASSESS_H
 
+#include <pthread.h>
 #include <signal.h>
 
 #include "wallload/error.h"
@@ -213,6 +214,12 @@ struct wl_assess_opts {
    * what is computed. */
   int no_snapshots;          /* 1: write no particle snapshots */
   int no_report;             /* 1: render no report.pdf (`wallload report DIR/results.h5` can) */
+  /* When not NULL, held while the results are written. HDF5 (Debian's
+   * build) is not thread-safe: a caller that runs cases in threads (the
+   * sweep's cases side by side on a GPU) shares one lock among them and its
+   * own HDF5 writing. Needs no_snapshots (snapshots are written while
+   * stepping) and no_report. */
+  pthread_mutex_t *write_lock;
 };
 
 /* Run all load cases and write the outputs. Returns WL_OK when every case

@@ -85,6 +85,7 @@ struct wl_sweep {
   int n_cases;
   struct wl_sweep_case *cases;      /* n_cases; owned */
   struct wl_sweep_row *rows;        /* n_cases; owned; filled by wl_sweep_run */
+  int side_by_side;                 /* cases wl_sweep_run runs at once (GPU); 1: one at a time */
 };
 
 /* Zero sw (safe to _clear). */

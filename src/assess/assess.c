@@ -634,7 +634,9 @@ static enum wl_status assess_locked(const struct wl_scenario *s, const struct wl
                    c->t_reached, c->t_end, cerr.msg);
     }
     /* Write after every case, so a later failure keeps this one. */
+    if (opts->write_lock) pthread_mutex_lock(opts->write_lock);
     st = write_results(s, plan, res, err);
+    if (opts->write_lock) pthread_mutex_unlock(opts->write_lock);
     for (int k = 0; k < res->n_cases; k++) { /* moved into place, or removed */
       struct wl_case_result *ck = &res->cases[k];
       ck->snapshot_files = st ? ck->snapshot_files & ~3

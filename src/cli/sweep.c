@@ -51,6 +51,9 @@ static void case_begin(void *user, const struct wl_sweep *sw, int i, int reused)
   else if (v->a->ranks->size > 1)
     fprintf(stderr, "wallload: case %d/%d (%s): running on rank %d\n", i + 1, sw->n_cases, label,
             sw->rows[i].rank);
+  else if (sw->side_by_side > 1)
+    fprintf(stderr, "wallload: case %d/%d (%s): started (up to %d cases side by side on the GPU)\n",
+            i + 1, sw->n_cases, label, sw->side_by_side);
   else
     fprintf(stderr, "wallload: case %d/%d (%s): running\n", i + 1, sw->n_cases, label);
 }
@@ -64,6 +67,8 @@ static void case_end(void *user, const struct wl_sweep *sw, int i) {
   else if (v->a->ranks->size > 1) /* the cases of several ranks end out of order */
     fprintf(stderr, "wallload: case %d/%d: complete on rank %d (%.1f s)\n", i + 1, sw->n_cases,
             r->rank, r->runtime_s);
+  else if (sw->side_by_side > 1) /* so do cases side by side */
+    fprintf(stderr, "wallload: case %d/%d: complete (%.1f s)\n", i + 1, sw->n_cases, r->runtime_s);
 }
 
 /* Under mpirun, what each rank runs with, once, from rank 0. */

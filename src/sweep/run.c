@@ -1,10 +1,11 @@
 /* run.c: run the cases of a sweep through wl_assess_run, one after the
- * other, reading back the cases an earlier sweep into the same directory
- * finished (sweep.h: resuming). */
+ * other or, on a GPU, several side by side, reading back the cases an
+ * earlier sweep into the same directory finished (sweep.h: resuming). */
 #define _POSIX_C_SOURCE 200809L /* mkdir, stat */
 #include <dirent.h>
 #include <errno.h>
 #include <math.h>
+#include <pthread.h>
 #include <signal.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -363,6 +364,169 @@ static enum wl_status run_serial(struct wl_sweep *sw, const char *dir,
   return st;
 }
 
+/* Cases side by side on one GPU: a small flume's step is mostly fixed cost
+ * (launches, the per-step synchronisation) and leaves the GPU idle, as the
+ * ladder's levels do (src/assess/ladder.c); each case runs in its own
+ * thread (and CUDA stream), its results those it gives alone. At most
+ * SIDE_BY_SIDE_MAX at once, and together within SIDE_BY_SIDE_MEMORY of
+ * the GPU's memory. */
+enum { SIDE_BY_SIDE_MAX = 8 };
+static const double SIDE_BY_SIDE_MEMORY = 0.5;
+
+struct side_job {
+  struct wl_sweep *sw;
+  int i;
+  const char *dir, *digest;
+  struct wl_assess_opts opts;
+  struct wl_error err;
+  enum wl_status st;
+  int done;              /* set under side->lock when the case has ended */
+  struct side_state *side;
+  pthread_t tid;
+};
+
+struct side_state {
+  pthread_mutex_t lock;  /* guards the jobs' done flags */
+  pthread_cond_t ended;  /* a job has ended */
+  pthread_mutex_t write; /* HDF5: the cases' results and the sweep's tables */
+};
+
+static void *side_thread(void *arg) {
+  struct side_job *j = arg;
+  j->st = sweep_run_case(j->sw, j->i, j->dir, j->digest, &j->opts, &j->err);
+  pthread_mutex_lock(&j->side->lock);
+  j->done = 1;
+  pthread_cond_signal(&j->side->ended);
+  pthread_mutex_unlock(&j->side->lock);
+  return NULL;
+}
+
+/* How many pending cases fit the GPU together: 0 when the sweep does not
+ * run on a GPU (or a case cannot be planned: it then fails on its own). A
+ * ladder's levels run side by side within each case, so a case counts its
+ * levels' memory. */
+static int side_by_side_width(const struct wl_sweep *sw, const struct wl_assess_opts *opts) {
+  int n_pending = 0, first = -1;
+  for (int i = 0; i < sw->n_cases; i++)
+    if (sw->rows[i].state == WL_SWEEP_PENDING) {
+      if (first < 0) first = i;
+      n_pending++;
+    }
+  if (n_pending < 2) return 0;
+  struct wl_scenario *cs = malloc(sizeof *cs);
+  struct wl_plan *plan = malloc(sizeof *plan);
+  if (!cs || !plan) {
+    free(cs), free(plan);
+    return 0;
+  }
+  double device = 0, bytes = 0;
+  int ok = 1;
+  for (int i = first; i < sw->n_cases && ok; i++) {
+    if (sw->rows[i].state != WL_SWEEP_PENDING) continue;
+    struct wl_error e;
+    wl_error_clear(&e);
+    wl_scenario_init(cs);
+    ok = wl_sweep_case_scenario(sw, i, cs, &e) == WL_OK && wl_plan_make(cs, plan, &e) == WL_OK;
+    if (ok && i == first) {
+      struct wl_plan_machine m;
+      wl_assess_machine(cs, opts, &m);
+      device = m.device_bytes;
+      ok = device > 0;
+    }
+    if (ok) {
+      const int levels = cs->resolution.n_levels > 0 ? cs->resolution.n_levels : 1;
+      bytes = fmax(bytes, levels * plan->gpu_memory_bytes);
+    }
+    wl_scenario_clear(cs);
+  }
+  free(cs), free(plan);
+  if (!ok || !(bytes > 0)) return 0;
+  const double fit = floor(SIDE_BY_SIDE_MEMORY * device / bytes);
+  int k = fit < SIDE_BY_SIDE_MAX ? (int)fit : SIDE_BY_SIDE_MAX;
+  return k < n_pending ? k : n_pending;
+}
+
+/* The pending cases, `width` at a time, each in its own thread; this thread
+ * starts them in order, writes the tables as each ends and calls the
+ * events (case_begin when a case starts, case_end when it has ended, in
+ * the order they end). A stop signal lets the running cases stop at their
+ * next output and starts no more. */
+static enum wl_status run_side_by_side(struct wl_sweep *sw, const char *dir,
+                                       const struct wl_assess_opts *opts,
+                                       const struct wl_sweep_events *ev, char (*digest)[17],
+                                       int width, int *stop, struct wl_error *err) {
+  struct side_job *jobs = calloc((size_t)sw->n_cases, sizeof *jobs);
+  struct side_state side;
+  if (!jobs) return wl_error_set(err, WL_ENOMEM, "%s: no memory for %d cases", sw->path, sw->n_cases);
+  pthread_mutex_init(&side.lock, NULL);
+  pthread_cond_init(&side.ended, NULL);
+  pthread_mutex_init(&side.write, NULL);
+  /* the host's cores shared among the cases' host-side loops */
+  const long cores = sysconf(_SC_NPROCESSORS_ONLN);
+  const int threads = opts->threads > 0 ? opts->threads : (int)(cores > 0 ? cores / width : 1);
+  enum wl_status st = WL_OK;
+  int running = 0, next = 0, ended_fatal = 0;
+  for (;;) {
+    /* start cases while there is room */
+    while (running < width && !ended_fatal && st == WL_OK &&
+           !(opts->interrupted && *opts->interrupted)) {
+      while (next < sw->n_cases && sw->rows[next].state != WL_SWEEP_PENDING) next++;
+      if (next >= sw->n_cases) break;
+      struct side_job *j = &jobs[next];
+      j->sw = sw, j->i = next, j->dir = dir, j->digest = digest[next], j->side = &side;
+      j->opts = *opts;
+      j->opts.progress = NULL; /* several cases at once: begin and end lines only */
+      j->opts.threads = threads > 0 ? threads : 1;
+      j->opts.write_lock = &side.write;
+      wl_error_clear(&j->err);
+      if (ev && ev->case_begin) ev->case_begin(ev->user, sw, next, 0);
+      if (pthread_create(&j->tid, NULL, side_thread, j) != 0) {
+        st = wl_error_set(err, WL_ENOMEM, "%s: cannot start a thread for case %d", sw->path, next);
+        break;
+      }
+      running++;
+      next++;
+    }
+    if (running == 0) break;
+    /* wait for a case to end; handle every ended one */
+    pthread_mutex_lock(&side.lock);
+    int any = 0;
+    for (;;) {
+      for (int i = 0; i < sw->n_cases; i++)
+        if (jobs[i].done == 1) any = 1;
+      if (any) break;
+      pthread_cond_wait(&side.ended, &side.lock);
+    }
+    pthread_mutex_unlock(&side.lock);
+    for (int i = 0; i < sw->n_cases; i++) {
+      struct side_job *j = &jobs[i];
+      pthread_mutex_lock(&side.lock);
+      const int ended = j->done == 1;
+      if (ended) j->done = 2; /* handled */
+      pthread_mutex_unlock(&side.lock);
+      if (!ended) continue;
+      pthread_join(j->tid, NULL);
+      running--;
+      if (ev && ev->case_end) ev->case_end(ev->user, sw, i);
+      pthread_mutex_lock(&side.write);
+      const enum wl_status wst = sweep_write_tables(sw, dir, err);
+      pthread_mutex_unlock(&side.write);
+      if (wst && st == WL_OK) st = wst;
+      if ((j->st == WL_EIO || j->st == WL_ENOMEM) && !ended_fatal) {
+        ended_fatal = 1;
+        if (st == WL_OK) st = wl_error_set(err, j->st, "case %d (%s): %s", i, sw->cases[i].id, j->err.msg);
+      }
+      if (j->st == WL_EINTERRUPTED && !*stop) *stop = SIGINT;
+    }
+  }
+  if (opts->interrupted && *opts->interrupted) *stop = (int)*opts->interrupted;
+  pthread_mutex_destroy(&side.write);
+  pthread_cond_destroy(&side.ended);
+  pthread_mutex_destroy(&side.lock);
+  free(jobs);
+  return st;
+}
+
 /* The sweep in its locked directory: cases read back, the others run here
  * (lead NULL) or shared among MPI ranks (mpi.c), then the summary. */
 static enum wl_status sweep_locked(struct wl_sweep *sw, const char *dir,
@@ -387,9 +551,13 @@ static enum wl_status sweep_locked(struct wl_sweep *sw, const char *dir,
   }
   st = sweep_write_tables(sw, dir, err);
   int stop = 0, n_bad = 0;
+  sw->side_by_side = lead ? 1 : side_by_side_width(sw, opts);
+  if (sw->side_by_side < 2) sw->side_by_side = 1;
   if (st == WL_OK)
-    st = lead ? sweep_lead_cases(lead, sw, dir, opts, ev, digest, threads, &stop, err)
-              : run_serial(sw, dir, opts, ev, digest, &stop, err);
+    st = lead                   ? sweep_lead_cases(lead, sw, dir, opts, ev, digest, threads, &stop, err)
+         : sw->side_by_side > 1 ? run_side_by_side(sw, dir, opts, ev, digest, sw->side_by_side,
+                                                   &stop, err)
+                                : run_serial(sw, dir, opts, ev, digest, &stop, err);
   free(digest);
   if (st) return st;
   char done[1024];
