@@ -370,7 +370,7 @@ static enum wl_status run_serial(struct wl_sweep *sw, const char *dir,
  * thread (and CUDA stream), its results those it gives alone. At most
  * SIDE_BY_SIDE_MAX at once, and together within SIDE_BY_SIDE_MEMORY of
  * the GPU's memory. */
-enum { SIDE_BY_SIDE_MAX = 8 };
+enum { SIDE_BY_SIDE_MAX = 16 };
 static const double SIDE_BY_SIDE_MEMORY = 0.5;
 
 struct side_job {
