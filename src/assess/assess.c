@@ -544,6 +544,9 @@ enum wl_status wl_assess_run(const struct wl_scenario *s, const struct wl_plan *
   enum wl_status st = pick_backend(s, opts, &ops, err);
   if (st) return st;
   snprintf(res->backend, sizeof res->backend, "%s", ops->name);
+  if (opts->write_lock && !(opts->no_snapshots && opts->no_report))
+    return wl_error_set(err, WL_EINPUT, "assess: a write lock needs no_snapshots and no_report "
+                        "(snapshots and the report write HDF5 outside it)");
   /* input the plan found unusable is refused before anything is written */
   if (plan->solitary.present && (st = wl_plan_solitary_runnable(s, plan, err))) return st;
   if ((st = prepare_dir(res->out_dir, opts->force, err))) return st;
