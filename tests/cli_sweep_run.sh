@@ -25,6 +25,12 @@ fail=0
 ok() { echo "PASS $1"; }
 bad() { echo "FAIL $1"; fail=$((fail+1)); }
 command -v python3 >/dev/null || { echo "SKIP: python3 not installed"; exit 77; }
+if [ "$backend" = cuda ]; then
+  "$bin" --version 2>/dev/null | grep -q 'CUDA backend: built' ||
+    { echo "SKIP: wallload built without the CUDA backend"; exit 77; }
+  command -v nvidia-smi >/dev/null && nvidia-smi -L >/dev/null 2>&1 ||
+    { echo "SKIP: no NVIDIA GPU (nvidia-smi -L)"; exit 77; }
+fi
 [ -x "$cmp_h5" ] || { echo "SKIP: $cmp_h5 not built"; exit 77; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
