@@ -11,15 +11,15 @@
 # results.h5 against the alone run's, bit for bit (h5_series_equal); the
 # step counts; sweep.h5 and sweep.pdf exist and read.
 #
-# On a GPU (WL_TEST_BACKEND=cuda, the device machine) the sweep runs its
+# On a GPU (BACKEND cuda: ctest's cli_sweep_run_gpu) the sweep runs its
 # cases side by side, each in its own thread and stream: the same checks
 # then say that a case beside others gives what it gives alone.
 #
-# usage: cli_sweep_run.sh WALLLOAD SOURCE_DIR   [WL_TEST_BACKEND=cpu|cuda]
+# usage: cli_sweep_run.sh WALLLOAD SOURCE_DIR [BACKEND]   (cpu, the default, or cuda)
 #        [WL_H5_SERIES_EQUAL=path of h5_series_equal]
 set -u
 bin=$1; src=$2
-backend=${WL_TEST_BACKEND:-cpu}
+backend=${3:-${WL_TEST_BACKEND:-cpu}}
 cmp_h5=${WL_H5_SERIES_EQUAL:-$(dirname "$bin")/tests/h5_series_equal}
 fail=0
 ok() { echo "PASS $1"; }
