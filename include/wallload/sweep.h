@@ -76,6 +76,9 @@ struct wl_sweep_case {
   size_t len;
 };
 
+/* Cases a sweep runs at once on a GPU (at most; within half its memory). */
+#define WL_SWEEP_SIDE_BY_SIDE_MAX 16
+
 struct wl_sweep {
   char path[512];                   /* the sweep's scenario file */
   char name[128];                   /* its scenario name */

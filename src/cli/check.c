@@ -224,6 +224,11 @@ enum wl_status wl_cli_sweep_price(const struct wl_sweep *sw, const struct wl_ass
             "  sweep CPU runtime (estimate) %.6g s (%.3g h), the cases one after the other; "
             "GPU runtime (estimate) %.6g s\n",
             total.cpu_seconds, total.cpu_seconds / 3600.0, total.gpu_seconds);
+  if (!st && out && total.gpu_seconds > 0)
+    fprintf(out,
+            "  on a GPU the sweep runs up to %d cases side by side: cases that leave it idle\n"
+            "  (tens of thousands of particles) take a fraction of that sum (BENCHMARKS.md, Sweeps)\n",
+            WL_SWEEP_SIDE_BY_SIDE_MAX);
   /* the machine and the budget judge the sweep as one run */
   if (!st && (st = judge_run(first, first_plan, &total, opts, budget_s, force_large, out, err)))
     wl_error_prefix(err, "the sweep's %d cases, one after the other: ", sw->n_cases);
