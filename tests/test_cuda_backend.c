@@ -51,6 +51,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "dam_tanks.h"
 #include "testutil.h"
 #include "wallload/backend.h"
 #include "wallload/config.h"
@@ -106,71 +107,17 @@ struct scene_case {
 
 static enum wl_status build(const struct scene_case *sc_, struct wl_sph_config *cfg,
                             struct wl_particles *p, struct wl_error *err) {
-  const int dim = sc_->dim, layers = 2;
-  const double dp = sc_->dp;
-  const double H = dim == 2 ? 0.4 : 0.15;
-  wl_sph_config_default(cfg, dim, dp, H);
+  const enum dam_tank t = sc_->dim == 2 ? DAM_2D : sc_->mirror ? DAM_3D_MIRROR_PILLAR : DAM_3D_BOX_PILLAR;
+  wl_sph_config_default(cfg, sc_->dim, sc_->dp, dam_tank_height(t));
   cfg->n_threads = 1;
-  const double W = 0.2; /* 3D: tank width */
   if (sc_->shift) cfg->prm.shift_coef = 2.0;
   if (sc_->verlet) cfg->prm.integrator = WL_SPH_VERLET;
   if (sc_->mirror) {
     cfg->prm.mirror_lo = cfg->prm.mirror_hi = 1;
     cfg->prm.mirror_y_lo = 0.0;
-    cfg->prm.mirror_y_hi = W;
+    cfg->prm.mirror_y_hi = DAM_W;
   }
-  struct wl_sph_const k;
-  enum wl_status st = wl_sph_const_make(&cfg->prm, &k, err);
-  if (st) return st;
-  const double margin = (layers + 2) * dp;
-  struct wl_scene sc;
-  if (dim == 2) {
-    const double L = 0.8, A = 0.2;
-    cfg->lo[0] = -margin;
-    cfg->hi[0] = L + margin;
-    cfg->lo[1] = -margin;
-    cfg->hi[1] = 2 * H;
-    wl_scene_init(&sc, &k, 0, 0);
-    const double tx[4] = {0, 0, L, L}, tz[4] = {1.5 * H, 0, 0, 1.5 * H};
-    const double lo[2] = {0, 0}, hi[2] = {A, H};
-    st = wl_scene_boundary_polyline(&sc, tx, tz, 4, layers, WL_KIND_FIXED, 0, cfg, err);
-    if (!st) st = wl_scene_fluid_block(&sc, lo, hi, H, err);
-  } else if (sc_->mirror) {
-    /* the 3D dam break between free-slip side walls: the x-z section's
-     * walls extruded along y, the planes y = 0 and W the box's faces */
-    const double L = 0.4, T = 0.3;
-    cfg->lo[0] = -margin;
-    cfg->hi[0] = L + margin;
-    cfg->lo[1] = 0.0;
-    cfg->hi[1] = W;
-    cfg->lo[2] = -margin;
-    cfg->hi[2] = 0.6;
-    wl_scene_init(&sc, &k, 0.5 * dp, W - 0.5 * dp);
-    const double tx[4] = {0, 0, L, L}, tz[4] = {T, 0, 0, T};
-    const double plo[3] = {0.22, 0.08, 0}, phi[3] = {0.26, 0.12, 0.3};
-    const double flo[3] = {0, 0, 0}, fhi[3] = {0.1, W, H};
-    st = wl_scene_boundary_polyline(&sc, tx, tz, 4, layers, WL_KIND_FIXED, 0, cfg, err);
-    if (!st) st = wl_scene_box3d_solid(&sc, plo, phi, layers, 1, err);
-    if (!st) st = wl_scene_fluid_block(&sc, flo, fhi, H, err);
-  } else {
-    const double tlo[3] = {0, 0, 0}, thi[3] = {0.4, W, 0.3};
-    const double flo[3] = {0, 0, 0}, fhi[3] = {0.1, 0.2, H};
-    const double plo[3] = {0.22, 0.08, 0}, phi[3] = {0.26, 0.12, 0.3};
-    for (int a = 0; a < 3; a++) {
-      cfg->lo[a] = tlo[a] - margin;
-      cfg->hi[a] = thi[a] + margin;
-    }
-    cfg->hi[2] = 0.6;
-    wl_scene_init(&sc, &k, tlo[1], thi[1]);
-    st = wl_scene_box3d_tank(&sc, tlo, thi, layers, cfg, err);
-    if (!st) st = wl_scene_box3d_solid(&sc, plo, phi, layers, 1, err);
-    if (!st) st = wl_scene_fluid_block(&sc, flo, fhi, H, err);
-  }
-  if (!st) st = wl_scene_build(&sc, p, err);
-  wl_scene_clear(&sc);
-  for (int j = 0; !st && j < p->n_bound; j++)
-    if (p->kind[j] == WL_KIND_FIXED && p->pos[0][j] < 0.0) p->body[j] = BODY_WALL;
-  return st;
+  return dam_tank_build(t, cfg, BODY_WALL, p, err);
 }
 
 /* The wall load of sim into f[0] (force) and f[1] (moment about z = 0). */

@@ -27,6 +27,7 @@
 #include <string.h>
 
 #include "testutil.h"
+#include "dam_tanks.h"
 #include "wallload/backend.h"
 #include "wallload/scene.h"
 #include "wallload/sph.h"
@@ -46,54 +47,20 @@ struct load_case {
 };
 
 /* The dam break of test_cuda_backend (2D; 3D between free-slip walls), its
- * left wall (x < 0) tagged BODY_WALL. */
+ * left wall (x < 0) tagged BODY_WALL (dam_tanks.h). */
 static enum wl_status build(const struct load_case *lc, struct wl_sph_config *cfg,
                             struct wl_particles *p, struct wl_error *err) {
-  const int dim = lc->dim, layers = 2;
-  const double dp = dim == 2 ? 0.01 : 0.02, H = dim == 2 ? 0.4 : 0.15, W = 0.2;
-  wl_sph_config_default(cfg, dim, dp, H);
+  const int dim = lc->dim;
+  const enum dam_tank t = dim == 2 ? DAM_2D : DAM_3D_MIRROR;
+  wl_sph_config_default(cfg, dim, dim == 2 ? 0.01 : 0.02, dam_tank_height(t));
   cfg->n_threads = 1;
   if (lc->laminar) cfg->prm.visc = WL_SPH_VISC_LAMINAR;
   if (dim == 3) {
     cfg->prm.mirror_lo = cfg->prm.mirror_hi = 1;
     cfg->prm.mirror_y_lo = 0.0;
-    cfg->prm.mirror_y_hi = W;
+    cfg->prm.mirror_y_hi = DAM_W;
   }
-  struct wl_sph_const k;
-  enum wl_status st = wl_sph_const_make(&cfg->prm, &k, err);
-  if (st) return st;
-  const double margin = (layers + 2) * dp;
-  struct wl_scene sc;
-  if (dim == 2) {
-    const double L = 0.8, A = 0.2;
-    cfg->lo[0] = -margin;
-    cfg->hi[0] = L + margin;
-    cfg->lo[1] = -margin;
-    cfg->hi[1] = 2 * H;
-    wl_scene_init(&sc, &k, 0, 0);
-    const double tx[4] = {0, 0, L, L}, tz[4] = {1.5 * H, 0, 0, 1.5 * H};
-    const double lo[2] = {0, 0}, hi[2] = {A, H};
-    st = wl_scene_boundary_polyline(&sc, tx, tz, 4, layers, WL_KIND_FIXED, 0, cfg, err);
-    if (!st) st = wl_scene_fluid_block(&sc, lo, hi, H, err);
-  } else {
-    const double L = 0.4, T = 0.3;
-    cfg->lo[0] = -margin;
-    cfg->hi[0] = L + margin;
-    cfg->lo[1] = 0.0;
-    cfg->hi[1] = W;
-    cfg->lo[2] = -margin;
-    cfg->hi[2] = 0.6;
-    wl_scene_init(&sc, &k, 0.5 * dp, W - 0.5 * dp);
-    const double tx[4] = {0, 0, L, L}, tz[4] = {T, 0, 0, T};
-    const double flo[3] = {0, 0, 0}, fhi[3] = {0.1, W, H};
-    st = wl_scene_boundary_polyline(&sc, tx, tz, 4, layers, WL_KIND_FIXED, 0, cfg, err);
-    if (!st) st = wl_scene_fluid_block(&sc, flo, fhi, H, err);
-  }
-  if (!st) st = wl_scene_build(&sc, p, err);
-  wl_scene_clear(&sc);
-  for (int j = 0; !st && j < p->n_bound; j++)
-    if (p->kind[j] == WL_KIND_FIXED && p->pos[0][j] < 0.0) p->body[j] = BODY_WALL;
-  return st;
+  return dam_tank_build(t, cfg, BODY_WALL, p, err);
 }
 
 /* The host loop `assess` ran (src/assess/assess.c boundary_force before
