@@ -14,21 +14,8 @@
 # usage: cli_sweep_mpi.sh WALLLOAD SOURCE_DIR
 set -u
 bin=$1; src=$2
-fail=0
-ok() { echo "PASS $1"; }
-bad() { echo "FAIL $1"; fail=$((fail+1)); }
-command -v python3 >/dev/null || { echo "SKIP: python3 not installed"; exit 77; }
-"$bin" --version | grep -q 'MPI: built' || { echo "SKIP: wallload built without MPI"; exit 77; }
-command -v mpirun >/dev/null || { echo "SKIP: mpirun not installed (Debian: openmpi-bin)"; exit 77; }
-# CI runs as root in a container: root must be allowed, and the container may
-# forbid the cross-process memory copy Open MPI's shared-memory transport tries
-mpi=(mpirun --allow-run-as-root --oversubscribe --mca btl_vader_single_copy_mechanism none -np 2)
-# Under the sanitizer build (scripts/test.sh sets ASAN_OPTIONS) the ranks do
-# not check for leaks: Open MPI leaves allocations at exit from plugins it has
-# unloaded, which LeakSanitizer cannot name (so tests/lsan.supp cannot match
-# them). ASan's and UBSan's other checks stay on; the one-process sweep tests
-# check wallload's own leaks.
-[ -n "${ASAN_OPTIONS:-}" ] && export ASAN_OPTIONS="$ASAN_OPTIONS:detect_leaks=0"
+. "$src/tests/sweep_lib.sh"
+sweep_mpi_setup
 work=$(mktemp -d)
 pid=""
 trap '[ -n "$pid" ] && kill -9 $pid 2>/dev/null; rm -rf "$work"' EXIT
@@ -61,14 +48,10 @@ grep -q "running on rank 0" two.err && grep -q "running on rank 1" two.err \
   && ok "both ranks ran cases" || bad "one rank ran every case: $(grep running two.err)"
 [ "$(grep -c '^ *[0-3]  0' two.out)" = 4 ] && ok "rank 0 alone prints the table (4 rows)" \
   || bad "stdout has $(grep -c '^ *[0-3]  0' two.out) table rows, expected 4"
-strip() { python3 -c "
-import csv,sys
-for r in csv.reader(open(sys.argv[1])):
-    print(','.join(v for j, v in enumerate(r) if j != len(r) - 2))" "$1"; }
-if [ "$(strip two/sweep.csv)" = "$(strip one/sweep.csv)" ]; then
+if [ "$(sweep_csv_sans_runtime two/sweep.csv)" = "$(sweep_csv_sans_runtime one/sweep.csv)" ]; then
   ok "sweep.csv of 2 ranks equals one process's (runtime aside)"
 else
-  bad "sweep.csv of 2 ranks differs from one process's:"; diff <(strip two/sweep.csv) <(strip one/sweep.csv) | head -6
+  bad "sweep.csv of 2 ranks differs from one process's:"; diff <(sweep_csv_sans_runtime two/sweep.csv) <(sweep_csv_sans_runtime one/sweep.csv) | head -6
 fi
 
 # a bad option: every rank refuses it, one message, exit 2

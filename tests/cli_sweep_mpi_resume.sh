@@ -9,19 +9,8 @@
 # usage: cli_sweep_mpi_resume.sh WALLLOAD SOURCE_DIR
 set -u
 bin=$1; src=$2
-fail=0
-ok() { echo "PASS $1"; }
-bad() { echo "FAIL $1"; fail=$((fail+1)); }
-command -v python3 >/dev/null || { echo "SKIP: python3 not installed"; exit 77; }
-"$bin" --version | grep -q 'MPI: built' || { echo "SKIP: wallload built without MPI"; exit 77; }
-command -v mpirun >/dev/null || { echo "SKIP: mpirun not installed (Debian: openmpi-bin)"; exit 77; }
-mpi=(mpirun --allow-run-as-root --oversubscribe --mca btl_vader_single_copy_mechanism none -np 2)
-# Under the sanitizer build (scripts/test.sh sets ASAN_OPTIONS) the ranks do
-# not check for leaks: Open MPI leaves allocations at exit from plugins it has
-# unloaded, which LeakSanitizer cannot name (so tests/lsan.supp cannot match
-# them). ASan's and UBSan's other checks stay on; the one-process sweep tests
-# check wallload's own leaks.
-[ -n "${ASAN_OPTIONS:-}" ] && export ASAN_OPTIONS="$ASAN_OPTIONS:detect_leaks=0"
+. "$src/tests/sweep_lib.sh"
+sweep_mpi_setup
 work=$(mktemp -d)
 pid=""
 trap '[ -n "$pid" ] && kill -9 $pid 2>/dev/null; rm -rf "$work"' EXIT

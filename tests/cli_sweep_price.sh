@@ -9,10 +9,7 @@
 # usage: cli_sweep_price.sh WALLLOAD SOURCE_DIR
 set -u
 bin=$1; src=$2
-fail=0
-ok() { echo "PASS $1"; }
-bad() { echo "FAIL $1"; fail=$((fail+1)); }
-command -v python3 >/dev/null || { echo "SKIP: python3 not installed"; exit 77; }
+. "$src/tests/sweep_lib.sh"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work" || exit 1

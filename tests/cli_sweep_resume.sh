@@ -9,10 +9,7 @@
 # usage: cli_sweep_resume.sh WALLLOAD SOURCE_DIR
 set -u
 bin=$1; src=$2
-fail=0
-ok() { echo "PASS $1"; }
-bad() { echo "FAIL $1"; fail=$((fail+1)); }
-command -v python3 >/dev/null || { echo "SKIP: python3 not installed"; exit 77; }
+. "$src/tests/sweep_lib.sh"
 work=$(mktemp -d)
 pid=""
 trap '[ -n "$pid" ] && kill -9 $pid 2>/dev/null; rm -rf "$work"' EXIT
@@ -66,14 +63,10 @@ for i in 0 1 2 3; do
   fi
 done
 # sweep.csv as the uninterrupted sweep's, but for the runtime
-strip() { python3 -c "
-import csv,sys
-for r in csv.reader(open(sys.argv[1])):
-    print(','.join(v for j, v in enumerate(r) if j != len(r) - 2))" "$1"; }
-if [ "$(strip sw/sweep.csv)" = "$(strip whole/sweep.csv)" ]; then
+if [ "$(sweep_csv_sans_runtime sw/sweep.csv)" = "$(sweep_csv_sans_runtime whole/sweep.csv)" ]; then
   ok "sweep.csv equals the uninterrupted sweep's (runtime aside)"
 else
-  bad "sweep.csv differs from the uninterrupted sweep's:"; diff <(strip sw/sweep.csv) <(strip whole/sweep.csv) | head -5
+  bad "sweep.csv differs from the uninterrupted sweep's:"; diff <(sweep_csv_sans_runtime sw/sweep.csv) <(sweep_csv_sans_runtime whole/sweep.csv) | head -5
 fi
 # run 3: nothing left to do; all read back
 "$bin" "${ARGS[@]}" -o sw >/dev/null 2>run3.err

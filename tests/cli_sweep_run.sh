@@ -21,10 +21,7 @@ set -u
 bin=$1; src=$2
 backend=${3:-${WL_TEST_BACKEND:-cpu}}
 cmp_h5=${WL_H5_SERIES_EQUAL:-$(dirname "$bin")/tests/h5_series_equal}
-fail=0
-ok() { echo "PASS $1"; }
-bad() { echo "FAIL $1"; fail=$((fail+1)); }
-command -v python3 >/dev/null || { echo "SKIP: python3 not installed"; exit 77; }
+. "$src/tests/sweep_lib.sh"
 if [ "$backend" = cuda ]; then
   "$bin" --version 2>/dev/null | grep -q 'CUDA backend: built' ||
     { echo "SKIP: wallload built without the CUDA backend"; exit 77; }
