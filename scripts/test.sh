@@ -15,10 +15,12 @@ if [ "${1:-}" = "--accuracy" ] || [ "${1:-}" = "--extended" ]; then
   cmake --build build -j "$jobs"
   exec ctest --test-dir build --output-on-failure -L "${1#--}"
 fi
+t0=$SECONDS
 echo "== Release build and tests"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j "$jobs"
 ctest --test-dir build --output-on-failure -j "$jobs" -LE "accuracy|extended"
+echo "== Release: $((SECONDS - t0)) s"
 echo "== AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DWL_SANITIZE=ON >/dev/null
 cmake --build build-asan -j "$jobs"
@@ -27,5 +29,7 @@ cmake --build build-asan -j "$jobs"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   LSAN_OPTIONS=suppressions="$PWD/tests/lsan.supp" \
   WL_TEST_QUICK=1 ctest --test-dir build-asan --output-on-failure -j "$jobs" -LE "accuracy|extended|long"
+echo "== Release and sanitizers: $((SECONDS - t0)) s"
 echo "== Fuzzing the parse-validate-plan path (libFuzzer, ASan+UBSan), 60 s"
 scripts/fuzz.sh 60
+echo "== the whole suite: $((SECONDS - t0)) s (CI's budget: 15 minutes on 2 cores)"

@@ -106,10 +106,12 @@ static void run(double eps, double t_run, double dp) {
   wl_scenario_clear(&s);
 }
 
-/* Run lengths [s]: the default suite propagates each wave for 2.5 s (CI's
- * time budget); `test_solitary_propagation full` (ctest
- * solitary_propagation_full, label extended) for the 5 s of seed 003's
- * comparison; the sanitizer's quick run for 1.5 s. */
+/* Run lengths [s]: the default suite propagates the H/h = 0.4 wave for
+ * 2.5 s (CI's time budget; H/h = 0.2's loss check is weak at H/dp = 4, see
+ * above, and the validate cases judge that wave); `test_solitary_propagation
+ * full` (ctest solitary_propagation_full, label extended) runs both waves for
+ * the 5 s of seed 003's comparison; the sanitizer's quick run H/h = 0.4 for
+ * 1.5 s. */
 #define T_DEFAULT 2.5
 #define T_FULL 5.0
 #define T_QUICK 1.5
@@ -121,6 +123,6 @@ int main(int argc, char **argv) {
   const int full = argc > 1 && !strcmp(argv[1], "full");
   const double t = quick ? T_QUICK : full ? T_FULL : T_DEFAULT;
   run(0.4, t, 0.01);
-  run(0.2, t, 0.01);
+  if (full) run(0.2, t, 0.01);
   return TEST_RESULT();
 }
