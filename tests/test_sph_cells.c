@@ -205,7 +205,7 @@ static int run(int dim) {
                                 s.rho[j], ij, vj, s.press[j], k.av_fb, 0);
       for (int a = 0; a < dim; a++) acc[a] += o.c_r * d[a];
       cont += o.cont;
-      ddt += o.ddt;
+      if (fi) ddt += o.ddt; /* a boundary particle takes no diffusion */
     }
     const double ar = s.rho[i] * cont + ddt;
     for (int a = 0; a < dim; a++) {

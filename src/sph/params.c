@@ -141,6 +141,9 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
   k->lam_ff = (wl_real)(art ? 0.0 : 4.0 * prm->nu);
   k->lam_fb = (wl_real)(art ? 0.0 : 4.0 * prm->nu * prm->visc_bound_factor);
   k->ddt_k = (wl_real)(prm->ddt == WL_SPH_DDT_NONE ? 0.0 : prm->delta * 2.0 * h * c0);
+  k->ddt_fb = prm->ddt == WL_SPH_DDT_FOURTAKAS_FULL && prm->boundary == WL_SPH_BOUND_ADAMI
+                  ? k->ddt_k
+                  : (wl_real)0.0;
   {
     /* sph/eos.h: the series' coefficients 1/7, -3/49, 13/343 times powers of
      * rho0 g / B, in double, so the pair loop multiplies dz alone */

@@ -18,11 +18,12 @@
  * 2007, CMC 5:173): fluid i sums fluid and boundary neighbours; boundary i
  * sums fluid neighbours only, and only the continuity equation (its density
  * then gives the pressure that keeps fluid out). Boundary-boundary pairs are
- * never visited. Density diffusion acts between fluid pairs only. With the
- * wall condition (params.h WL_SPH_BOUND_ADAMI, the default) the backends
- * call this for fluid particles only: the boundary particles' density and
- * pressure come from sph/wall.h's pass before it, and a fluid particle's
- * pairs with them take the wall's volume and pressure rules of
+ * never visited. Density diffusion acts on fluid particles only, between
+ * fluid pairs (and, with the wall condition, fluid-wall pairs: k->ddt_fb).
+ * With the wall condition (params.h WL_SPH_BOUND_ADAMI, the default) the
+ * backends call this for fluid particles only: the boundary particles'
+ * density and pressure come from sph/wall.h's pass before it, and a fluid
+ * particle's pairs with them take the wall's volume and pressure rules of
  * sph/interact.h (wl_sph_pair_j_bound, wl_sph_pair_p_wall).
  *
  * Mirror planes (k->mirror, 3D; sph/params.h), at the grid's low and high
@@ -114,7 +115,8 @@ WL_HD static WL_INLINE void wl_sph_pair_sum(const int dim, const int laminar, co
     wl_sph_pair_add_ace(dim, laminar, &o, dx, dy, dz, ux, uy, uz, &acc->a[0][l], &acc->a[1][l],
                         &acc->a[2][l]);
   acc->cont[l] += o.cont;
-  if (with_ddt) acc->ddt[l] += o.ddt; /* 0 without: the sum stays +0 */
+  /* fluid-fluid and fluid-wall pairs (a wall pair's is 0 unless k->ddt_fb) */
+  if (want_ace || with_ddt) acc->ddt[l] += o.ddt;
   acc->wsum[l] += o.wq;
   acc->visc[l] = wl_sph_max_nonneg(acc->visc[l], o.visc);
 }
@@ -222,8 +224,9 @@ WL_HD static WL_INLINE void wl_sph_gather_mirrors(const int dim, const int lamin
 /* The end of particle i's evaluation, from lane l of its sums over fluid
  * neighbours f and, for a fluid particle, over boundary ones b (a boundary
  * particle's call may pass f for b: it is not read). A fluid particle's
- * acceleration adds gravity; its density rate the diffusion, except under
- * DDT2 (not Full) next to a wall; its time-step input takes the larger of
+ * acceleration adds gravity; its density rate the diffusion over fluid and
+ * (k->ddt_fb) wall neighbours, none under DDT2 (not Full) next to a wall;
+ * its time-step input takes the larger of
  * the two sums. A boundary particle (DBC) keeps only its continuity
  * equation. Every force loop of every backend ends with this. fluid:
  * compile-time constant where the caller can make it so. */
@@ -233,7 +236,7 @@ WL_HD static WL_INLINE void wl_sph_finish(const int dim, const struct wl_sph_con
                                           const struct wl_sph_acc *b, int l) {
   if (fluid) {
     const wl_real ddt =
-        (k->ddt == WL_SPH_DDT_FOURTAKAS && b->wsum[l] > 0) ? WL_R(0.0) : f->ddt[l];
+        (k->ddt == WL_SPH_DDT_FOURTAKAS && b->wsum[l] > 0) ? WL_R(0.0) : f->ddt[l] + b->ddt[l];
     e->ace[0][i] = f->a[0][l] + b->a[0][l] + k->gravity[0];
     if (dim == 3) e->ace[1][i] = f->a[1][l] + b->a[1][l] + k->gravity[1];
     e->ace[dim - 1][i] = f->a[2][l] + b->a[2][l] + k->gravity[dim - 1];

@@ -17,6 +17,15 @@
  * correction of Fourtakas et al. 2019, eq. 22; DualSPHysics DDT2):
  *   D_i = -delta 2h c0 sum_j ((rho_j - rho_i) - rho_H_ji) r_ij.grad_i W_ij / (r^2 + eta^2) m_j/rho_j
  *   (r_ij.grad W < 0, so a denser neighbour raises rho_i); rho_H_ji in sph/eos.h.
+ *   The sum runs over fluid neighbours and, under the wall condition with the
+ *   full diffusion (k->ddt_fb), over wall neighbours, whose density is the
+ *   Tait density of their hydrostatically extrapolated pressure (sph/wall.h):
+ *   a fluid particle next to a wall then has the whole stencil. With fluid
+ *   neighbours alone the stencil is cut at the wall, and a one-sided sum
+ *   of the hydrostatic remainder keeps adding density next to the bed: a
+ *   still 0.5 m tank's bottom rows compressed by 1.3 % of their pressure
+ *   and lifted the column 1.1 mm in 4.5 s, the bed pressure reading +0.9 %
+ *   (docs/history/2026-11-26-still-tank-drift.md).
  * time-step input (DualSPHysics ViscDtMax, taken over pairs in the support):
  *   max_j |v_ij.r_ij| / (r^2 + eta^2)
  *
@@ -42,8 +51,10 @@ struct wl_sph_pair {
  * densities [kg/m^3], pressures [Pa]; inv_rho_i = 1/rho_i, inv_rho_j =
  * 1/rho_j and vol_j = m_j/rho_j (wl_sph_pair_j: computed once per j). av: alpha c0 h of
  * this pair kind (0 with laminar viscosity); lam: 4 nu (0 without);
- * with_ddt: density diffusion for this pair (fluid-fluid). `laminar` and
- * `with_ddt` must be compile-time constants at the call site. */
+ * with_ddt: a fluid-fluid pair (its diffusion coefficient k->ddt_k; other
+ * pairs get k->ddt_fb, read only for a fluid particle's wall neighbour,
+ * sph/gather.h). `laminar` and `with_ddt` must be compile-time constants at
+ * the call site. */
 WL_HD static WL_INLINE struct wl_sph_pair
 wl_sph_pair_eval(const int laminar, const int with_ddt, const struct wl_sph_const *k, wl_real r2,
                  wl_real rv, wl_real dz, wl_real rho_i, wl_real inv_rho_i, wl_real p_i,
@@ -76,9 +87,8 @@ wl_sph_pair_eval(const int laminar, const int with_ddt, const struct wl_sph_cons
     o.c_v = 0;
   }
   o.cont = vol_j * F * rv;
-  o.ddt = with_ddt ? -k->ddt_k * ((rho_j - rho_i) - wl_sph_eos_drho_hydro(k, dz)) * F * r2 *
-                         inv_r2e * vol_j
-                   : WL_R(0.0);
+  o.ddt = -(with_ddt ? k->ddt_k : k->ddt_fb) * ((rho_j - rho_i) - wl_sph_eos_drho_hydro(k, dz)) *
+          F * r2 * inv_r2e * vol_j;
   o.wq = wq;
   o.visc = wl_sph_abs(rv) * inv_r2e * wl_sph_nonzero(wq);
   return o;

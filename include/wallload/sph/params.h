@@ -29,10 +29,12 @@ enum wl_sph_ddt {
    * correction, between fluid pairs, for fluid particles that have no
    * boundary neighbour (DualSPHysics DensityDT=2). */
   WL_SPH_DDT_FOURTAKAS = 1,
-  /* The same term between every pair of fluid particles, including those
-   * next to a wall (DualSPHysics DensityDT=3, "DDT2Full"). Default: without
-   * it the fluid next to a wall keeps its pressure noise, and wall pressure
-   * is what wallload is for. */
+  /* The same term for every fluid particle, including those next to a wall
+   * (DualSPHysics DensityDT=3, "DDT2Full"). Default: without it the fluid
+   * next to a wall keeps its pressure noise, and wall pressure is what
+   * wallload is for. With the wall condition (WL_SPH_BOUND_ADAMI) the wall
+   * particles are in the sum too (sph/interact.h); with dynamic boundary
+   * particles, fluid pairs only, as DualSPHysics. */
   WL_SPH_DDT_FOURTAKAS_FULL = 2,
 };
 
@@ -197,6 +199,8 @@ struct wl_sph_const {
   wl_real lam_ff;     /* 4 nu (Lo & Shao), fluid-fluid [m^2/s] */
   wl_real lam_fb;     /* 4 nu visc_bound_factor, fluid-boundary [m^2/s] */
   wl_real ddt_k;      /* delta * 2h * c0 (DualSPHysics DDTkh * Cs0) [m^2/s] */
+  wl_real ddt_fb;     /* the same for a fluid particle's wall neighbours: ddt_k under the
+                         full diffusion with the wall condition, else 0 (sph/interact.h) */
   wl_real ddt_h[3];   /* the series of sph/eos.h in dz: rho0 c_n (rho0 g / B)^n [kg/m^(3+n)]
                          (rho0 g / B is DualSPHysics' DDTgz) */
   wl_real gravity[WL_SPH_DIM_MAX]; /* [m/s^2]; last used component -g */
