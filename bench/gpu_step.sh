@@ -54,7 +54,7 @@ run)
   one() { # build name scenario
     local a b rc
     a=$(date +%s.%N)
-    "$D/$1/wallload" assess "$3" --backend cuda --quiet --force -o $R/$1_$2 >$R/$1_$2.log 2>&1
+    timeout 150 "$D/$1/wallload" assess "$3" --backend cuda --quiet --force -o $R/$1_$2 >$R/$1_$2.log 2>&1
     rc=$?
     b=$(date +%s.%N)
     python3 - "$1" "$2" "$rc" "$(awk "BEGIN{print $b - $a}")" "$R/$1_$2/summary.json" <<'PY'

@@ -71,12 +71,16 @@ extern "C" {
  * the tests' build of this file links beside the product's. */
 namespace {
 
+#define WL_STR_(x) #x
+#define WL_STR(x) WL_STR_(x)
+
 /* Threads per block of every particle kernel. */
 enum { THREADS = 128 };
 
 /* Force loops (see the file header): the reference loop (tests only),
- * the one-thread-per-particle loop with the cut-off skip, the split loop. */
-enum { MODE_REF = 0, MODE_FAST = 1, MODE_SPLIT = 2 };
+ * the one-thread-per-particle loop with the cut-off skip, the split loop,
+ * the loop with a few threads per particle. */
+enum { MODE_REF = 0, MODE_FAST = 1, MODE_SPLIT = 2, MODE_LANES = 3 };
 
 /* 1 in the tests' build of this file (tests/CMakeLists.txt), which has
  * every loop in both dimensions and exports one backend per loop. */
@@ -85,18 +89,27 @@ enum { MODE_REF = 0, MODE_FAST = 1, MODE_SPLIT = 2 };
 #endif
 
 /* The product's loop of dimension dim: split in 3D, where staging pays
- * (cells of ~30 particles); fast in 2D, where a cell holds ~8 and the
- * warp's rows are too short for it (split ran at half the rate of fast
- * there on the H100, docs/history/BENCHMARKS-history.md), and in a build
- * with double wl_real, which split's float staging would narrow. */
+ * (cells of ~30 particles); lanes in 2D, where a cell holds ~8 and the
+ * warp's rows are too short for split (split ran at half the rate of fast
+ * there on the H100, docs/history/BENCHMARKS-history.md) and a flume of a
+ * few ten thousand particles leaves most of the GPU idle with one thread
+ * per particle (each walks ~70 candidates one after the other); fast in a
+ * 3D build with double wl_real, which split's float staging would narrow. */
 static constexpr int default_mode(int dim) {
-  return dim == 3 && !WL_REAL_DOUBLE ? MODE_SPLIT : MODE_FAST;
+  return dim == 2 ? MODE_LANES : !WL_REAL_DOUBLE ? MODE_SPLIT : MODE_FAST;
 }
 
 /* Whether this build has loop `mode` for dimension dim. */
 static constexpr bool loop_built(int mode, int dim) {
   return WL_CUDA_TEST_LOOPS ? mode != MODE_SPLIT || !WL_REAL_DOUBLE : mode == default_mode(dim);
 }
+
+/* Threads per particle of the lanes loop and the 2D wall condition (a
+ * power of two, at most 32): each takes a contiguous share of every row
+ * of candidates. */
+#ifndef WL_GATHER_LANES
+#define WL_GATHER_LANES 4
+#endif
 
 /* ---- error checking ----------------------------------------------------- */
 
@@ -240,11 +253,47 @@ __global__ void k_keys(struct wl_sph_grid g, const double *__restrict__ x,
   val[i] = (unsigned)i;
 }
 
-/* begin[k] = first sorted index whose key is >= k, for k in [0, n_keys]. */
+/* begin[k] = first sorted index whose key is >= k, for k in [0, n_keys]
+ * (the lower bound). The search starts at the previous step's begin[k]
+ * (any value in [0, n] will do): a cell gains or loses a few particles a
+ * step, so widening steps of 1, 2, 4, ... from there and a bisection of
+ * what they bracket take a few loads where a bisection of all n takes
+ * log2 n dependent ones. */
 __global__ void k_begin(const unsigned int *__restrict__ key, int n, int n_keys, int *begin) {
   const int k = tid();
   if (k > n_keys) return;
-  int lo = 0, hi = n; /* lower bound */
+  int g = begin[k];
+  g = g < 0 ? 0 : g > n ? n : g;
+  int lo, hi; /* the lower bound is in [lo, hi] */
+  if (g == n || key[g] >= (unsigned)k) {
+    hi = g;
+    for (int step = 1;; step <<= 1) {
+      const int p = hi - step;
+      if (p < 0) {
+        lo = 0;
+        break;
+      }
+      if (key[p] < (unsigned)k) {
+        lo = p + 1;
+        break;
+      }
+      hi = p;
+    }
+  } else {
+    lo = g + 1;
+    for (int step = 1;; step <<= 1) {
+      const int p = lo + step - 1;
+      if (p >= n) {
+        hi = n;
+        break;
+      }
+      if (key[p] >= (unsigned)k) {
+        hi = p;
+        break;
+      }
+      lo = p + 1;
+    }
+  }
   while (lo < hi) {
     const int mid = (lo + hi) >> 1;
     if (key[mid] < (unsigned)k) lo = mid + 1;
@@ -351,6 +400,100 @@ __global__ void __launch_bounds__(THREADS, DIM == 2 && CUT ? WL_GATHER_MIN_BLOCK
   double a2 = 0, v2 = 0, vi = 0;
   if (i < n) {
     wl_sph_gather_block(DIM, LAM, 1, CUT, &k, &g, &e, nb, i, 1, 0);
+    wl_sph_eval_dt_input(DIM, &e, i, nb, &a2, &v2, &vi);
+  }
+  block_max3(a2, v2, vi, st);
+}
+
+/* The sum of v over the R threads of a particle (consecutive lanes): a
+ * butterfly, whose every step adds two partial sums commutatively, so all
+ * R threads end with the same bits, whatever the timing. */
+template <int R> static __device__ __forceinline__ wl_real lanes_sum(wl_real v) {
+  for (int o = 1; o < R; o <<= 1) v += __shfl_xor_sync(0xffffffffu, v, o);
+  return v;
+}
+template <int R> static __device__ __forceinline__ wl_real lanes_max(wl_real v) {
+  for (int o = 1; o < R; o <<= 1) v = wl_sph_max_nonneg(v, __shfl_xor_sync(0xffffffffu, v, o));
+  return v;
+}
+template <int R> static __device__ __forceinline__ void lanes_acc(struct wl_sph_acc *a) {
+  for (int c = 0; c < 3; c++) a->a[c][0] = lanes_sum<R>(a->a[c][0]);
+  a->cont[0] = lanes_sum<R>(a->cont[0]);
+  a->ddt[0] = lanes_sum<R>(a->ddt[0]);
+  a->wsum[0] = lanes_sum<R>(a->wsum[0]);
+  a->visc[0] = lanes_max<R>(a->visc[0]);
+}
+
+/* Thread q of R's share [*c0, *c1) of the candidates [j0, j1). */
+template <int R> static __device__ __forceinline__ void lanes_share(int j0, int j1, int q, int *c0,
+                                                                     int *c1) {
+  const int len = j1 - j0;
+  *c0 = j0 + (len * q) / R;
+  *c1 = j0 + (len * (q + 1)) / R;
+}
+
+/* The lanes force loop (2D default): R consecutive threads per particle,
+ * each summing its share of every row (wl_sph_gather_range with the
+ * cut-off skip, the rows in wl_sph_gather_block's order), then the R
+ * partial sums added (lanes_sum) and the particle finished by its first
+ * thread (wl_sph_finish); the mirror planes' rows (3D) by the first thread
+ * alone. The same terms as the reference loop, associated in R runs: equal
+ * to it to float rounding, and the same bits on every run. */
+template <int DIM, int LAM, int R>
+__global__ void __launch_bounds__(THREADS)
+    k_gather_lanes(const struct wl_sph_const kp, const struct wl_sph_grid gp,
+                   const struct wl_sph_eval ep, int i0, int n, int nb, struct dstats *st) {
+  if (st->plan.stop) return;
+  const struct wl_sph_const k = kp;
+  const struct wl_sph_grid g = gp;
+  const struct wl_sph_eval e = ep;
+  const int t = tid(), q = t & (R - 1);
+  const int i = i0 + t / R;
+  const bool active = i < n;
+  const int il = active ? i : n - 1; /* every thread takes part in the sums */
+  const int nc = g.n_cells, fluid = il >= nb;
+  const int cell = (int)e.key[il] - (fluid ? nc : 0);
+  int first[9], last[9];
+  const int nr = wl_sph_cell_rows(DIM, &g, cell, 0, first, last);
+  const int *const bf = e.begin + nc, *const bb = e.begin;
+  struct wl_sph_lanes in;
+  for (int a = 0; a < DIM; a++) {
+    in.x[a][0] = e.pos[a][il];
+    in.v[a][0] = e.vel[a][il];
+  }
+  in.rho[0] = e.rho[il];
+  in.inv_rho[0] = wl_sph_rcp(e.rho[il]);
+  in.p[0] = e.press[il];
+  struct wl_sph_acc f, b;
+  for (int c = 0; c < 3; c++) f.a[c][0] = 0;
+  f.cont[0] = f.ddt[0] = f.wsum[0] = f.visc[0] = 0;
+  b = f;
+  if (active) {
+    int c0, c1;
+    if (fluid) {
+      for (int r = 0; r < nr; r++) {
+        lanes_share<R>(bf[first[r]], bf[last[r] + 1], q, &c0, &c1);
+        wl_sph_gather_range(DIM, LAM, 1, 1, 1, 1, &k, &e, &in, c0, c1, k.av_ff, k.lam_ff, 0, &f);
+      }
+      for (int r = 0; r < nr; r++) {
+        lanes_share<R>(bb[first[r]], bb[last[r] + 1], q, &c0, &c1);
+        wl_sph_gather_range(DIM, LAM, 1, 0, 1, 1, &k, &e, &in, c0, c1, k.av_fb, k.lam_fb, 0, &b);
+      }
+      if (q == 0) wl_sph_gather_mirrors(DIM, LAM, 1, 1, &k, &g, &e, &in, 1, cell, 0, &f, &b);
+    } else {
+      for (int r = 0; r < nr; r++) {
+        lanes_share<R>(bf[first[r]], bf[last[r] + 1], q, &c0, &c1);
+        wl_sph_gather_range(DIM, LAM, 0, 0, 1, 1, &k, &e, &in, c0, c1, k.av_fb, k.lam_fb, 0, &f);
+      }
+      if (q == 0) wl_sph_gather_mirrors(DIM, LAM, 1, 1, &k, &g, &e, &in, 0, cell, 0, &f, &f);
+    }
+  }
+  lanes_acc<R>(&f);
+  lanes_acc<R>(&b);
+  double a2 = 0, v2 = 0, vi = 0;
+  if (active && q == 0) {
+    if (fluid) wl_sph_finish(DIM, &k, &e, i, 1, in.rho[0], &f, &b, 0);
+    else wl_sph_finish(DIM, &k, &e, i, 0, in.rho[0], &f, &f, 0);
     wl_sph_eval_dt_input(DIM, &e, i, nb, &a2, &v2, &vi);
   }
   block_max3(a2, v2, vi, st);
@@ -811,6 +954,42 @@ __global__ void __launch_bounds__(THREADS)
   wl_sph_wall_sample(DIM, &k, &g, &e, aw, i, w.rho, w.press);
 }
 
+/* The wall condition in 2D with R consecutive threads per boundary
+ * particle: each sums its share of every fluid row (wl_sph_wall_range),
+ * the R sums are added (lanes_sum) and the first thread stores the result
+ * (wl_sph_wall_store): wl_sph_wall_sample's terms, associated in R runs. A
+ * wall particle walks ~70 candidates; one thread each leaves a flume's few
+ * thousand wall particles on a few dozen of the GPU's SMs. */
+template <int R>
+__global__ void __launch_bounds__(THREADS)
+    k_wall_lanes(const struct wl_sph_const kp, const struct wl_sph_grid gp,
+                 const struct wl_sph_eval ep, int nb, const struct wallin w,
+                 const struct dstats *st) {
+  if (st->plan.stop) return;
+  const struct wl_sph_const k = kp;
+  const struct wl_sph_grid g = gp;
+  const struct wl_sph_eval e = ep;
+  const int t = tid(), q = t & (R - 1), i = t / R;
+  const bool active = i < nb;
+  const int il = active ? i : nb - 1;
+  int first[9], last[9];
+  const int nr = wl_sph_cell_rows(2, &g, (int)e.key[il], 0, first, last);
+  const int *const bf = e.begin + g.n_cells;
+  const double xi[3] = {e.pos[0][il], 0.0, e.pos[1][il]};
+  wl_real ga[3];
+  wl_sph_wall_ga(2, &k, w.kind[il] == WL_KIND_MOVING ? st->plan.body_acc[w.body[il]] : NULL, ga);
+  struct wl_sph_wall_acc s = {0, 0};
+  if (active)
+    for (int r = 0; r < nr; r++) {
+      int c0, c1;
+      lanes_share<R>(bf[first[r]], bf[last[r] + 1], q, &c0, &c1);
+      wl_sph_wall_range(2, &k, &e, xi, ga, c0, c1, 0, &s);
+    }
+  s.sw = lanes_sum<R>(s.sw);
+  s.spw = lanes_sum<R>(s.spw);
+  if (active && q == 0) wl_sph_wall_store(2, &k, &e, &s, i, w.rho, w.press);
+}
+
 /* Predictor (sph/integrate.h) and the pressure of the half-step density. */
 /* Particle shifting of the step (sph/shift.h), one thread per fluid
  * particle, from the sorted step-start state. */
@@ -1131,6 +1310,14 @@ static void launch_gather(const struct gpu *c, const struct wl_sph_eval &e, int 
       return;
     }
   }
+  if constexpr (loop_built(MODE_LANES, DIM)) {
+    if (c->mode == MODE_LANES) {
+      const int R = WL_GATHER_LANES;
+      k_gather_lanes<DIM, LAM, R><<<blocks((n - i0) * R), THREADS, 0, s>>>(c->k, c->grid, e, i0,
+                                                                           n, nb, c->stats);
+      return;
+    }
+  }
   if constexpr (loop_built(MODE_FAST, DIM)) {
     if (c->mode == MODE_FAST) {
       k_gather<DIM, LAM, 1><<<blocks(n - i0), THREADS, 0, s>>>(c->k, c->grid, e, i0, n, nb,
@@ -1175,7 +1362,9 @@ static enum wl_status evaluate(struct gpu *c, double *const *pos, wl_real *const
     w.rho = rho;
     w.press = c->press;
     if (c->dim == 3) k_wall<3><<<blocks(nb), THREADS, 0, s>>>(c->k, c->grid, e, nb, w, c->stats);
-    else k_wall<2><<<blocks(nb), THREADS, 0, s>>>(c->k, c->grid, e, nb, w, c->stats);
+    else
+      k_wall_lanes<WL_GATHER_LANES><<<blocks(nb * WL_GATHER_LANES), THREADS, 0, s>>>(
+          c->k, c->grid, e, nb, w, c->stats);
     CKL("wall");
   }
   if (n == i0) return WL_OK;
@@ -1484,6 +1673,7 @@ static void cuda_describe(void *ctx, char *buf, size_t size) {
            "%.1f MiB on the device, %.0f B/particle)",
            c->dev.name, c->dev.sm_major, c->dev.sm_minor, c->dev.n_sm,
            c->mode == MODE_SPLIT  ? "split (warp-shared candidates, pairs split evenly over the lanes)"
+           : c->mode == MODE_LANES ? "lanes (" WL_STR(WL_GATHER_LANES) " threads per particle)"
            : c->mode == MODE_FAST ? "fast (cut-off skip, one thread per particle)"
                                   : "reference (wl_sph_gather, one thread per particle)",
            c->k.integrator == WL_SPH_VERLET ? "Verlet steps" : "symplectic steps", c->grid.n_cells,
