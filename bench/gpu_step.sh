@@ -13,7 +13,9 @@
 #       DIR/lib, fonts for the report (as bench/assess_e2e.sh pack)
 #   bench/gpu_step.sh run DIR [ROUNDS]   there (DIR carried): ROUNDS (1)
 #       alternations of the timings; then the tests; $OUT/gpu_step.log and
-#       $OUT/gpu_step.tgz (summaries)
+#       $OUT/gpu_step.tgz (summaries). GPU_STEP_ALSO=NAME: a third build
+#       DIR/NAME (packed by hand: its wallload) runs the solitary case too,
+#       compared bit for bit with the new build's.
 set -u
 here=$(cd "$(dirname "$0")/.." && pwd)
 case ${1:-} in
@@ -80,6 +82,12 @@ PY
         one $b sea$r "$here/scenarios/seawall.yaml"
       done
     done
+    if [ -n "${GPU_STEP_ALSO:-}" ]; then
+      one "$GPU_STEP_ALSO" sol1 $R/sol.yaml
+      "$D/new/h5_series_equal" $R/${GPU_STEP_ALSO}_sol1/results.h5 $R/new_sol1/results.h5 \
+        /cases/solitary/time /cases/solitary/wall/force /cases/solitary/wall/pressure \
+        /cases/solitary/gauges/G1/eta 2>&1 | sed "s/^/$GPU_STEP_ALSO vs new, sol1: /"
+    fi
     echo "== base vs new, bit for bit"
     for n in sol1 few1 sea1; do
       for load in solitary explosion; do

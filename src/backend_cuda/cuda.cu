@@ -4,10 +4,10 @@
  * include/wallload/sph/:
  *
  *   keys      key = group * n_cells + cell (sph/cells.h wl_sph_cell_of)
- *   sort      stable radix sort of (key, index) pairs (CUB), then the state
- *             fields gathered into sorted order; begin[key] = first sorted
- *             index of each key by binary search (every entry written, no
- *             memset, no atomics)
+ *   sort      counting sort by key in the stable order (k_keys, a CUB
+ *             scan that gives begin[key] = first sorted index of each key,
+ *             k_scatter, k_cellsort), then the state fields gathered into
+ *             sorted order
  *   walls     with the wall condition (the default), k_wall: one thread per
  *             boundary particle samples the fluid (sph/wall.h); the force
  *             loops then start at the first fluid particle
@@ -25,13 +25,29 @@
  *             fluid particle (sph/gather.h wl_sph_gather_wall_load), one
  *             block's sum in a fixed order
  *
- * The host reads back one small record per step (the maxima and the fault)
- * and touches particle data only in download. Everything is allocated in
- * init (no allocation in step); init checks cudaMemGetInfo first.
+ * Steps. No input of a step is a kernel argument: the step's plan (dt,
+ * the previous dt, the Euler flag, the bodies' motion) is in the device
+ * record, so one step is captured once as a CUDA graph from each of the
+ * two role sets of the arrays (a rebuild swaps them) and replayed. A step
+ * of the driver (backend.h step) uploads its plan, replays and reads the
+ * record back. A block (backend.h run) plans each step on the device by
+ * the driver's rules (k_plan, k_end: backend.h wl_sph_dt_toward and
+ * friends, the time step's wl_sph_step_dt, the guards), so the host
+ * enqueues the block's steps and reads one record at its end; after a
+ * fault, a collapse, the output time or the step count the plan stops
+ * and the remaining replays return at once (plan.stop), so the record
+ * names the first faulty step. A 2D flume of 20 000 particles steps in
+ * tens of microseconds, of the order of a launch and a synchronisation.
+ *
+ * The host touches particle data only in download. Everything is
+ * allocated in init (no allocation in step); init checks cudaMemGetInfo
+ * first.
  *
  * The force loops run the shared loop bodies of sph/gather.h and differ
  * only in how they find each particle's candidates:
- *  - k_gather (2D; 3D with double wl_real): wl_sph_gather_block itself, one
+ *  - k_gather_lanes (2D): WL_GATHER_LANES threads per particle, each
+ *    wl_sph_gather_range over its share of every row, their sums added;
+ *  - k_gather (3D with double wl_real): wl_sph_gather_block itself, one
  *    thread per particle, with the cut-off skip (a candidate beyond 2h is
  *    not evaluated; the same bits as without it);
  *  - k_gather_split (3D): the warp stages its particles' candidates in
@@ -51,7 +67,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include <cub/device/device_radix_sort.cuh>
+#include <cub/device/device_scan.cuh>
 
 extern "C" {
 #include "wallload/backend.h"
@@ -188,7 +204,7 @@ struct gpu {
   struct wl_sph_config cfg;
   struct wl_sph_const k;
   struct wl_sph_grid grid;
-  int dim, n, nb, end_bit;
+  int dim, n, nb;
   int mode; /* force loop: MODE_FAST or MODE_SPLIT (MODE_REF in the tests' build) */
   /* device arrays (current roles; sorting swaps pos<->pos_h, vel<->vel_h,
    * rho<->rho_h, id<->ar, kind<->kind_alt, body<->body_alt) */
@@ -202,7 +218,8 @@ struct gpu {
   unsigned int *key, *id;
   unsigned char *kind, *kind_alt, *body, *body_alt;
   int *begin; /* 2 n_cells + 1 */
-  void *sort_tmp;
+  int *count; /* 2 n_cells + 1: particles per key, then the sort's fill counters */
+  void *sort_tmp; /* the scan's scratch */
   size_t sort_tmp_bytes;
   struct dmeta *meta;
   struct dstats *stats;   /* device */
@@ -227,15 +244,28 @@ struct gpu {
 
 static __device__ __forceinline__ int tid(void) { return blockIdx.x * blockDim.x + threadIdx.x; }
 
-/* Sort keys and the identity permutation; thread 0 resets the step record.
+/* The sort (rebuild): a counting sort by key whose order inside a key is
+ * the previous order, the order a stable sort gives. k_keys: each
+ * particle's key and the particles per key (count, zeroed before); their
+ * exclusive sum is begin (CUB scan); k_scatter: each particle into a free
+ * slot of its key's range (count, zeroed again, as the fill counters: the
+ * order inside a range depends on timing); k_cellsort: each range sorted
+ * by previous index, which makes it the stable order again, the same
+ * permutation on every run. A cell holds ~8 particles in 2D and ~30 in
+ * 3D, so the ranges are short; this takes a few short kernels where a
+ * radix sort of the keys takes two passes of decoupled look-back that
+ * run nearly serially at a few ten thousand particles.
+ *
  * Every kernel of a step returns at once when the block has stopped
- * (plan.stop); the sort and the cell index between them then reorder
- * stale scratch, which the next step writes anew. */
+ * (plan.stop); the memsets and the scan between them then clear and sum
+ * scratch, which the next step writes anew. */
+
+/* Keys and particles per key; thread 0 resets the step record. */
 template <int DIM>
 __global__ void k_keys(struct wl_sph_grid g, const double *__restrict__ x,
                        const double *__restrict__ y, const double *__restrict__ z,
-                       const unsigned char *__restrict__ kind, unsigned int *key,
-                       unsigned int *val, int n, struct dstats *st) {
+                       const unsigned char *__restrict__ kind, unsigned int *key, int *count,
+                       int n, struct dstats *st) {
   if (st->plan.stop) return;
   const int i = tid();
   if (i == 0) {
@@ -249,63 +279,55 @@ __global__ void k_keys(struct wl_sph_grid g, const double *__restrict__ x,
   double *pos[WL_SPH_DIM_MAX] = {(double *)x, (double *)y, (double *)z};
   if (DIM == 2) pos[1] = (double *)z;
   const unsigned group = kind[i] == WL_KIND_FLUID ? 1u : 0u;
-  key[i] = group * (unsigned)g.n_cells + (unsigned)wl_sph_cell_of(DIM, &g, pos, i);
-  val[i] = (unsigned)i;
+  const unsigned k = group * (unsigned)g.n_cells + (unsigned)wl_sph_cell_of(DIM, &g, pos, i);
+  key[i] = k;
+  atomicAdd(&count[k], 1);
 }
 
-/* begin[k] = first sorted index whose key is >= k, for k in [0, n_keys]
- * (the lower bound). The search starts at the previous step's begin[k]
- * (any value in [0, n] will do): a cell gains or loses a few particles a
- * step, so widening steps of 1, 2, 4, ... from there and a bisection of
- * what they bracket take a few loads where a bisection of all n takes
- * log2 n dependent ones. */
-__global__ void k_begin(const unsigned int *__restrict__ key, int n, int n_keys, int *begin) {
+/* Particle i into a free slot of its key's range of perm. */
+__global__ void k_scatter(const unsigned int *__restrict__ key, const int *__restrict__ begin,
+                          int *count, unsigned int *perm, int n, const struct dstats *st) {
+  const int i = tid();
+  if (i >= n || st->plan.stop) return;
+  const unsigned k = key[i];
+  perm[begin[k] + atomicAdd(&count[k], 1)] = (unsigned)i;
+}
+
+/* Range of key k of perm into ascending order (insertion sort; in
+ * registers up to CELLSORT_LOCAL entries, in place beyond). */
+enum { CELLSORT_LOCAL = 48 };
+__global__ void k_cellsort(const int *__restrict__ begin, unsigned int *perm, int n_keys,
+                           const struct dstats *st) {
   const int k = tid();
-  if (k > n_keys) return;
-  int g = begin[k];
-  g = g < 0 ? 0 : g > n ? n : g;
-  int lo, hi; /* the lower bound is in [lo, hi] */
-  if (g == n || key[g] >= (unsigned)k) {
-    hi = g;
-    for (int step = 1;; step <<= 1) {
-      const int p = hi - step;
-      if (p < 0) {
-        lo = 0;
-        break;
-      }
-      if (key[p] < (unsigned)k) {
-        lo = p + 1;
-        break;
-      }
-      hi = p;
+  if (k >= n_keys || st->plan.stop) return;
+  const int b = begin[k], m = begin[k + 1] - b;
+  if (m < 2) return;
+  unsigned int *p = perm + b;
+  if (m <= CELLSORT_LOCAL) {
+    unsigned int v[CELLSORT_LOCAL];
+    for (int a = 0; a < m; a++) {
+      const unsigned x = p[a];
+      int c = a;
+      for (; c > 0 && v[c - 1] > x; c--) v[c] = v[c - 1];
+      v[c] = x;
     }
+    for (int a = 0; a < m; a++) p[a] = v[a];
   } else {
-    lo = g + 1;
-    for (int step = 1;; step <<= 1) {
-      const int p = lo + step - 1;
-      if (p >= n) {
-        hi = n;
-        break;
-      }
-      if (key[p] >= (unsigned)k) {
-        hi = p;
-        break;
-      }
-      lo = p + 1;
+    for (int a = 1; a < m; a++) {
+      const unsigned x = p[a];
+      int c = a;
+      for (; c > 0 && p[c - 1] > x; c--) p[c] = p[c - 1];
+      p[c] = x;
     }
   }
-  while (lo < hi) {
-    const int mid = (lo + hi) >> 1;
-    if (key[mid] < (unsigned)k) lo = mid + 1;
-    else hi = mid;
-  }
-  begin[k] = lo;
 }
 
 /* State fields into sorted order (dst[s] = src[perm[s]]) and the pressure
  * of the sorted density. */
 struct permute_args {
   const unsigned int *perm;
+  const unsigned int *key;
+  unsigned int *key_d;
   const double *pos[WL_SPH_DIM_MAX];
   double *pos_d[WL_SPH_DIM_MAX];
   const wl_real *vel[WL_SPH_DIM_MAX];
@@ -327,6 +349,7 @@ __global__ void k_permute(struct permute_args a, struct wl_sph_const k, int n,
   const int s = tid();
   if (s >= n || st->plan.stop) return;
   const int j = (int)a.perm[s];
+  a.key_d[s] = a.key[j];
   for (int c = 0; c < DIM; c++) {
     a.pos_d[c][s] = a.pos[c][j];
     a.vel_d[c][s] = a.vel[c][j];
@@ -1215,39 +1238,37 @@ static struct wl_particles view(const struct gpu *c) {
   return p;
 }
 
-/* Rebuild the cell lists: keys, sort, begin, state into sorted order, the
- * pressure of the sorted density. The sort's scratch lives in arrays that
- * are free at this point of the step (ace, visc); pos_h, vel_h, rho_h
- * receive the sorted state and swap roles with it, and so does ar with id
+/* Rebuild the cell lists: keys, sort (the counting sort above), begin,
+ * state into sorted order, the pressure of the sorted density. The sort's
+ * scratch lives in arrays that are free at this point of the step (ace);
+ * key, pos_h, vel_h, rho_h receive the sorted keys and state and swap
+ * roles with the unsorted ones (key with ace[0]), and so does ar with id
  * (both 4-byte arrays; ar is rewritten by the next force evaluation). */
 static enum wl_status rebuild(struct gpu *c, struct wl_error *err) {
-  const int n = c->n, dim = c->dim;
-  unsigned int *key_alt = (unsigned int *)c->ace[0];
-  unsigned int *val = (unsigned int *)c->ace[1];
-  unsigned int *val_alt = (unsigned int *)(dim == 3 ? c->ace[2] : c->visc);
+  const int n = c->n, dim = c->dim, n_keys = 2 * c->grid.n_cells;
+  unsigned int *key_d = (unsigned int *)c->ace[0];
+  unsigned int *perm = (unsigned int *)c->ace[1];
+  const size_t count_bytes = sizeof(int) * (size_t)(n_keys + 1);
+  CK(cudaMemsetAsync(c->count, 0, count_bytes, c->stream));
   if (dim == 3)
     k_keys<3><<<blocks(n), THREADS, 0, c->stream>>>(c->grid, c->pos[0], c->pos[1], c->pos[2],
-                                                     c->kind, c->key, val, n, c->stats);
+                                                     c->kind, c->key, c->count, n, c->stats);
   else
     k_keys<2><<<blocks(n), THREADS, 0, c->stream>>>(c->grid, c->pos[0], c->pos[1], c->pos[1],
-                                                     c->kind, c->key, val, n, c->stats);
+                                                     c->kind, c->key, c->count, n, c->stats);
   CKL("keys");
-  cub::DoubleBuffer<unsigned int> dk(c->key, key_alt), dv(val, val_alt);
   size_t tmp = c->sort_tmp_bytes;
-  CK(cub::DeviceRadixSort::SortPairs(c->sort_tmp, tmp, dk, dv, n, 0, c->end_bit, c->stream));
-  if (dk.Current() != c->key) {
-    /* sorted keys landed in ace[0]'s array: swap the two roles */
-    wl_real *t = (wl_real *)c->key;
-    c->key = dk.Current();
-    c->ace[0] = t;
-  }
-  const unsigned int *perm = dv.Current();
-  const int n_keys = 2 * c->grid.n_cells;
-  k_begin<<<blocks(n_keys + 1), THREADS, 0, c->stream>>>(c->key, n, n_keys, c->begin);
-  CKL("begin");
+  CK(cub::DeviceScan::ExclusiveSum(c->sort_tmp, tmp, c->count, c->begin, n_keys + 1, c->stream));
+  CK(cudaMemsetAsync(c->count, 0, count_bytes, c->stream));
+  k_scatter<<<blocks(n), THREADS, 0, c->stream>>>(c->key, c->begin, c->count, perm, n, c->stats);
+  CKL("scatter");
+  k_cellsort<<<blocks(n_keys), THREADS, 0, c->stream>>>(c->begin, perm, n_keys, c->stats);
+  CKL("cell sort");
   struct permute_args a;
   memset(&a, 0, sizeof a);
   a.perm = perm;
+  a.key = c->key;
+  a.key_d = key_d;
   for (int q = 0; q < dim; q++) {
     a.pos[q] = c->pos[q];
     a.pos_d[q] = c->pos_h[q];
@@ -1274,6 +1295,11 @@ static enum wl_status rebuild(struct gpu *c, struct wl_error *err) {
   if (dim == 3) k_permute<3><<<blocks(n), THREADS, 0, c->stream>>>(a, c->k, n, c->stats);
   else k_permute<2><<<blocks(n), THREADS, 0, c->stream>>>(a, c->k, n, c->stats);
   CKL("permute");
+  {
+    wl_real *t = (wl_real *)c->key;
+    c->key = key_d;
+    c->ace[0] = t;
+  }
   for (int q = 0; q < dim; q++) {
     swap_ptr(c->pos[q], c->pos_h[q]);
     swap_ptr(c->vel[q], c->vel_h[q]);
@@ -1783,25 +1809,21 @@ static enum wl_status init_mode(void **ctx, const struct wl_sph_config *cfg,
     }
   }
   const int n = c->n, n_keys = 2 * c->grid.n_cells;
-  unsigned int mk = (unsigned int)(n_keys - 1);
-  c->end_bit = 1;
-  while (c->end_bit < 32 && (mk >> c->end_bit)) c->end_bit++;
 
   /* what the run needs, against what the GPU has free */
   {
-    cub::DoubleBuffer<unsigned int> dk(NULL, NULL), dv(NULL, NULL);
-    const cudaError_t e =
-        cub::DeviceRadixSort::SortPairs(NULL, c->sort_tmp_bytes, dk, dv, n, 0, c->end_bit);
+    const cudaError_t e = cub::DeviceScan::ExclusiveSum(NULL, c->sort_tmp_bytes, (int *)NULL,
+                                                        (int *)NULL, n_keys + 1);
     if (e != cudaSuccess) {
       cuda_free(c);
-      return wl_error_set(err, WL_EIO, "cuda backend: radix sort size query failed: %s",
+      return wl_error_set(err, WL_EIO, "cuda backend: scan size query failed: %s",
                           cudaGetErrorString(e));
     }
   }
   const int shifting = k->shift_coef > 0;
   const int verlet = k->integrator == WL_SPH_VERLET;
   const size_t per = bytes_per_particle(dim, shifting, verlet);
-  const size_t need = per * (size_t)n + sizeof(int) * (size_t)(n_keys + 1) + c->sort_tmp_bytes +
+  const size_t need = per * (size_t)n + 2 * sizeof(int) * (size_t)(n_keys + 1) + c->sort_tmp_bytes +
                       sizeof(struct dmeta) + sizeof(struct dstats);
   size_t free_b = 0, total_b = 0;
   {
@@ -1863,6 +1885,7 @@ static enum wl_status init_mode(void **ctx, const struct wl_sph_config *cfg,
   A(c->body, n8, "body");
   A(c->body_alt, n8, "body (sort copy)");
   A(c->begin, sizeof(int) * (size_t)(n_keys + 1), "cell index");
+  A(c->count, sizeof(int) * (size_t)(n_keys + 1), "cell counts");
   A(c->sort_tmp, c->sort_tmp_bytes, "sort scratch");
   A(c->meta, sizeof(struct dmeta), "configuration");
   A(c->stats, sizeof(struct dstats), "step record");
