@@ -4,10 +4,14 @@
  * dam break between free-slip side walls (the solver's mirror planes), the
  * 2D and the free-slip 3D dam breaks with particle shifting, and
  * the 2D and the free-slip 3D dam breaks with the Verlet integrator, the
- * 2D dam break with the split force loop and the free-slip 3D one with the
- * fast loop (the loops that are not their dimension's default), and each
- * run's GPU force loop (by default fast in 2D, split in 3D) against the
- * reference loop (the shared wl_sph_gather, one thread per particle). The
+ * 2D dam break with the split and the fast force loops and the free-slip
+ * 3D one with the fast loop (the loops that are not their dimension's
+ * default; fast is 2D's above WL_LANES_MAX_PARTICLES), and each run's GPU
+ * force loop (by default lanes in 2D, split in 3D) against the reference
+ * loop (the shared wl_sph_gather, one thread per particle). Then the 2D
+ * dam break on the GPU through the backend's blocks of steps (backend.h
+ * run) against step by step: the same bits, also where a guard stops it
+ * (blocks_vs_steps). The
  * product builds only its own loop per dimension; the others come from the
  * tests' build of cuda.cu (WL_CUDA_TEST_LOOPS, tests/CMakeLists.txt), one
  * backend table per loop. A build of this program without that library
@@ -489,8 +493,11 @@ int main(void) {
                                  "split"};
   const struct scene_case c3x = {3, 0.01, 100, "3D dam break with pillar between free-slip walls, "
                                  "fast force loop", 1, 0, 0, "fast"};
+  /* the 2D loop of runs of WL_LANES_MAX_PARTICLES (cuda.cu) and more */
+  const struct scene_case c2f = {2, 0.01, 300, "2D dam break, fast force loop", 0, 0, 0, "fast"};
   run_case(&c2x);
   run_case(&c3x);
+  run_case(&c2f);
   blocks_vs_steps("2D dam break, Verlet, blocks vs steps", 1, 0, 0);
   blocks_vs_steps("2D dam break, symplectic, blocks vs steps", 0, 0, 0);
   blocks_vs_steps("2D dam break, Verlet, density guard", 1, 1.02, 0);

@@ -104,20 +104,33 @@ enum { MODE_REF = 0, MODE_FAST = 1, MODE_SPLIT = 2, MODE_LANES = 3 };
 #define WL_CUDA_TEST_LOOPS 0
 #endif
 
-/* The product's loop of dimension dim: split in 3D, where staging pays
- * (cells of ~30 particles); lanes in 2D, where a cell holds ~8 and the
- * warp's rows are too short for split (split ran at half the rate of fast
- * there on the H100, docs/history/BENCHMARKS-history.md) and a flume of a
- * few ten thousand particles leaves most of the GPU idle with one thread
- * per particle (each walks ~70 candidates one after the other); fast in a
- * 3D build with double wl_real, which split's float staging would narrow. */
-static constexpr int default_mode(int dim) {
-  return dim == 2 ? MODE_LANES : !WL_REAL_DOUBLE ? MODE_SPLIT : MODE_FAST;
+/* 2D runs of fewer particles than this take the lanes loop, larger ones
+ * the fast loop: with one thread per particle a run under about the GPU's
+ * resident threads (132 SMs x 2048 on an H100) leaves the GPU waiting on
+ * each thread's walk over its ~70 candidates, one after the other; above
+ * it the fast loop's threads fill the GPU and the lanes' extra sums would
+ * only cost. A fixed count, not the GPU's, so that a run takes the same
+ * loop (and gives the same bits) on every GPU. */
+#ifndef WL_LANES_MAX_PARTICLES
+#define WL_LANES_MAX_PARTICLES 262144
+#endif
+
+/* The product's loop of dimension dim for n particles: split in 3D, where
+ * staging pays (cells of ~30 particles); in 2D, where a cell holds ~8 and
+ * the warp's rows are too short for split (split ran at half the rate of
+ * fast there on the H100, docs/history/BENCHMARKS-history.md), lanes or
+ * fast by size (WL_LANES_MAX_PARTICLES); fast in a 3D build with double
+ * wl_real, which split's float staging would narrow. */
+static constexpr int default_mode(int dim, int n) {
+  return dim == 2 ? (n < WL_LANES_MAX_PARTICLES ? MODE_LANES : MODE_FAST)
+                  : !WL_REAL_DOUBLE ? MODE_SPLIT : MODE_FAST;
 }
 
 /* Whether this build has loop `mode` for dimension dim. */
 static constexpr bool loop_built(int mode, int dim) {
-  return WL_CUDA_TEST_LOOPS ? mode != MODE_SPLIT || !WL_REAL_DOUBLE : mode == default_mode(dim);
+  return WL_CUDA_TEST_LOOPS ? mode != MODE_SPLIT || !WL_REAL_DOUBLE
+         : dim == 2         ? mode == MODE_LANES || mode == MODE_FAST
+                            : mode == default_mode(dim, 0);
 }
 
 /* Threads per particle of the lanes loop and the 2D wall condition (a
@@ -1788,7 +1801,7 @@ static enum wl_status init_mode(void **ctx, const struct wl_sph_config *cfg,
   c->dim = dim;
   c->n = host->n;
   c->nb = host->n_bound;
-  c->mode = mode < 0 ? default_mode(dim) : mode;
+  c->mode = mode < 0 ? default_mode(dim, host->n) : mode;
   if (!(dim == 3 ? loop_built(c->mode, 3) : loop_built(c->mode, 2))) {
     cuda_free(c);
     return wl_error_set(err, WL_EINPUT, "cuda backend: force loop %d is not in this build for "
