@@ -64,19 +64,90 @@ struct wl_sph_step_out {
 };
 
 /* The next step from the maxima over a step's force evaluations
- * (DualSPHysics DtVariable), for every backend: max |a|^2 and |v|^2 of the
- * fluid particles and max h|v.r|/(r^2 + eta^2) over their pairs; fills
- * dt_next, dt_force, dt_cv, ace_max and vel_max of out. */
-static inline void wl_sph_step_dt(const struct wl_sph_const *k, double ace2_max, double vel2_max,
-                                  double visc_max, struct wl_sph_step_out *out) {
+ * (DualSPHysics DtVariable), for every backend (the CUDA backend's block
+ * of steps evaluates it on the device): max |a|^2 and |v|^2 of the fluid
+ * particles and max h|v.r|/(r^2 + eta^2) over their pairs; fills dt_next,
+ * dt_force, dt_cv, ace_max and vel_max of out. The product stays unfused
+ * (WL_DMUL): the host and the device give the same bits. */
+WL_HD static inline void wl_sph_step_dt(const struct wl_sph_const *k, double ace2_max,
+                                        double vel2_max, double visc_max,
+                                        struct wl_sph_step_out *out) {
   const double h = k->h_d, c0 = k->c0_d;
-  const double amax = sqrt(ace2_max), vmax = sqrt(vel2_max);
+  const double amax = sqrt(ace2_max), vmax = sqrt(vel2_max), v10 = WL_DMUL(10.0, vmax);
   out->ace_max = amax;
   out->vel_max = vmax;
   out->dt_force = amax > 0 ? sqrt(h / amax) : INFINITY;
-  out->dt_cv = h / ((c0 > 10 * vmax ? c0 : 10 * vmax) + visc_max);
+  out->dt_cv = h / ((c0 > v10 ? c0 : v10) + visc_max);
   out->dt_next = k->cfl * (out->dt_force < out->dt_cv ? out->dt_force : out->dt_cv);
 }
+
+/* The driver's rules for the next step, for the host loop (src/sph/sim.c)
+ * and a backend that runs a block of steps on its own (run below): */
+
+/* The time-step collapse: the CFL step dt_cfl under dt_collapse of the
+ * first one, or not finite. */
+WL_HD static inline int wl_sph_dt_collapsed(const struct wl_sph_const *k, double dt_cfl,
+                                            double dt_initial) {
+  return !(dt_cfl >= k->dt_collapse * dt_initial) || !isfinite(dt_cfl);
+}
+
+/* The limit on the step toward an output time `rest` [s] ahead (> 0), with
+ * the CFL step dt: the step that lands on it when the rest fits in one
+ * (*lands = 1), half the rest when it fits in two (so no step is shorter
+ * than half the CFL step), else 0 (no limit). */
+WL_HD static inline double wl_sph_dt_toward(double rest, double dt, int *lands) {
+  *lands = rest <= dt;
+  return rest <= dt ? rest : rest < 2 * dt ? 0.5 * rest : 0.0;
+}
+
+/* The step taken: the CFL step dt_cfl, or dt_max when it is shorter (dt_max
+ * <= 0: no limit). */
+WL_HD static inline double wl_sph_dt_limit(double dt_max, double dt_cfl) {
+  return dt_max > 0 && dt_max < dt_cfl ? dt_max : dt_cfl;
+}
+
+/* Fluid particles that left the domain box so far (n_excluded of n_fluid):
+ * a few splash particles over the walls are DualSPHysics' "excluded"
+ * particles; more than WL_SPH_EXCLUDED_MAX of the fluid is a failed run. */
+#define WL_SPH_EXCLUDED_MAX 0.01
+WL_HD static inline int wl_sph_excluded_too_many(long n_excluded, long n_fluid) {
+  return n_excluded > WL_SPH_EXCLUDED_MAX * (double)n_fluid;
+}
+
+/* Input of a block of steps (run below): the driver's state at its start. */
+struct wl_sph_block_in {
+  double t;          /* time now [s] */
+  double t_out;      /* the next output time [s], > t: the block stops on it */
+  double dt_next;    /* the CFL step from the last force evaluations [s] */
+  double dt_last;    /* the last step taken [s] (0 before the first) */
+  double dt_initial; /* the first CFL step (the collapse guard's reference) [s] */
+  long step;         /* steps taken so far */
+  long max_steps;    /* at most this many steps (>= 1) */
+  long n_excluded;   /* fluid particles excluded so far (the guard on their share) */
+  long n_fluid;      /* fluid particles of the run */
+};
+
+/* Why a block stopped. */
+enum wl_sph_block_stop {
+  WL_SPH_BLOCK_COUNT = 0,    /* max_steps taken */
+  WL_SPH_BLOCK_LANDED = 1,   /* its last step landed on t_out (t = t_out exactly) */
+  WL_SPH_BLOCK_REACHED = 2,  /* t reached t_out by rounding, without landing */
+  WL_SPH_BLOCK_FAULT = 3,    /* the guard found a fault in its last step (last.fault) */
+  WL_SPH_BLOCK_COLLAPSE = 4, /* the next step would have collapsed (wl_sph_dt_collapsed) */
+  WL_SPH_BLOCK_EXCLUDED = 5  /* too many fluid particles left the box (wl_sph_excluded_too_many) */
+};
+
+/* Result of a block: the driver's state after it. */
+struct wl_sph_block_out {
+  int stop;          /* enum wl_sph_block_stop */
+  long steps;        /* steps taken in the block */
+  double t;          /* time after the last step [s] (t_out when landed) */
+  double dt_next;    /* the CFL step for the next step [s] */
+  double dt_last;    /* the last step taken [s] */
+  long n_limited;    /* wall-limiter corrections over the block */
+  long n_excluded;   /* fluid particles excluded over the block */
+  struct wl_sph_step_out last; /* the last step's out (its fault when stop is FAULT) */
+};
 
 /* What every backend's init checks of the host particles it is given
  * (backend: its name, for the message): their dimension is the
@@ -144,6 +215,16 @@ struct wl_backend_ops {
    * body. WL_OK, or the backend's error (outputs 0). */
   enum wl_status (*wall_load)(void *ctx, int body, double z_ref, double *force, double *moment,
                               struct wl_error *err);
+  /* Optional (NULL: the driver calls step once a step). Steps with no
+   * moving body in motion, chosen, guarded and counted on the backend's
+   * side by the driver's rules above exactly as the driver's own loop would
+   * (src/sph/sim.c wl_sph_sim_run), from in until one of
+   * enum wl_sph_block_stop; the steps stop advancing after the first fault
+   * or guard, so out says which step and time. For a backend that would
+   * otherwise wait for each step's record (a GPU). WL_OK or the backend's
+   * error. */
+  enum wl_status (*run)(void *ctx, const struct wl_sph_block_in *in, struct wl_sph_block_out *out,
+                        struct wl_error *err);
 };
 
 /* The OpenMP CPU backend (src/backend_cpu). */

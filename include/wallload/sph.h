@@ -233,7 +233,7 @@ long wl_sph_sim_limited(const struct wl_sph_sim *sim);         /* wall-limiter c
  * rest where they left it, sph/guard.h wl_sph_exclude); a run stops as
  * unstable when they exceed WL_SPH_EXCLUDED_MAX of the fluid. */
 long wl_sph_sim_excluded(const struct wl_sph_sim *sim);
-#define WL_SPH_EXCLUDED_MAX 0.01
+/* WL_SPH_EXCLUDED_MAX: backend.h (wl_sph_excluded_too_many) */
 long wl_sph_sim_steps(const struct wl_sph_sim *sim);           /* steps done */
 double wl_sph_sim_dt(const struct wl_sph_sim *sim);            /* next step [s] */
 double wl_sph_sim_dt_initial(const struct wl_sph_sim *sim);    /* first step [s] */

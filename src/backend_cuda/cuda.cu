@@ -4,10 +4,10 @@
  * include/wallload/sph/:
  *
  *   keys      key = group * n_cells + cell (sph/cells.h wl_sph_cell_of)
- *   sort      stable radix sort of (key, index) pairs (CUB), then the state
- *             fields gathered into sorted order; begin[key] = first sorted
- *             index of each key by binary search (every entry written, no
- *             memset, no atomics)
+ *   sort      counting sort by key in the stable order (k_keys, a CUB
+ *             scan that gives begin[key] = first sorted index of each key,
+ *             k_scatter, k_cellsort), then the state fields gathered into
+ *             sorted order
  *   walls     with the wall condition (the default), k_wall: one thread per
  *             boundary particle samples the fluid (sph/wall.h); the force
  *             loops then start at the first fluid particle
@@ -25,13 +25,29 @@
  *             fluid particle (sph/gather.h wl_sph_gather_wall_load), one
  *             block's sum in a fixed order
  *
- * The host reads back one small record per step (the maxima and the fault)
- * and touches particle data only in download. Everything is allocated in
- * init (no allocation in step); init checks cudaMemGetInfo first.
+ * Steps. No input of a step is a kernel argument: the step's plan (dt,
+ * the previous dt, the Euler flag, the bodies' motion) is in the device
+ * record, so one step is captured once as a CUDA graph from each of the
+ * two role sets of the arrays (a rebuild swaps them) and replayed. A step
+ * of the driver (backend.h step) uploads its plan, replays and reads the
+ * record back. A block (backend.h run) plans each step on the device by
+ * the driver's rules (k_plan, k_end: backend.h wl_sph_dt_toward and
+ * friends, the time step's wl_sph_step_dt, the guards), so the host
+ * enqueues the block's steps and reads one record at its end; after a
+ * fault, a collapse, the output time or the step count the plan stops
+ * and the remaining replays return at once (plan.stop), so the record
+ * names the first faulty step. A 2D flume of 20 000 particles steps in
+ * tens of microseconds, of the order of a launch and a synchronisation.
+ *
+ * The host touches particle data only in download. Everything is
+ * allocated in init (no allocation in step); init checks cudaMemGetInfo
+ * first.
  *
  * The force loops run the shared loop bodies of sph/gather.h and differ
  * only in how they find each particle's candidates:
- *  - k_gather (2D; 3D with double wl_real): wl_sph_gather_block itself, one
+ *  - k_gather_lanes (2D): WL_GATHER_LANES threads per particle, each
+ *    wl_sph_gather_range over its share of every row, their sums added;
+ *  - k_gather (3D with double wl_real): wl_sph_gather_block itself, one
  *    thread per particle, with the cut-off skip (a candidate beyond 2h is
  *    not evaluated; the same bits as without it);
  *  - k_gather_split (3D): the warp stages its particles' candidates in
@@ -45,12 +61,13 @@
  * file (WL_CUDA_TEST_LOOPS, tests/CMakeLists.txt), where test_cuda_backend
  * compares every loop with it and with the CPU. */
 #include <cuda_runtime.h>
+#include <stddef.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include <cub/device/device_radix_sort.cuh>
+#include <cub/device/device_scan.cuh>
 
 extern "C" {
 #include "wallload/backend.h"
@@ -70,12 +87,16 @@ extern "C" {
  * the tests' build of this file links beside the product's. */
 namespace {
 
+#define WL_STR_(x) #x
+#define WL_STR(x) WL_STR_(x)
+
 /* Threads per block of every particle kernel. */
 enum { THREADS = 128 };
 
 /* Force loops (see the file header): the reference loop (tests only),
- * the one-thread-per-particle loop with the cut-off skip, the split loop. */
-enum { MODE_REF = 0, MODE_FAST = 1, MODE_SPLIT = 2 };
+ * the one-thread-per-particle loop with the cut-off skip, the split loop,
+ * the loop with a few threads per particle. */
+enum { MODE_REF = 0, MODE_FAST = 1, MODE_SPLIT = 2, MODE_LANES = 3 };
 
 /* 1 in the tests' build of this file (tests/CMakeLists.txt), which has
  * every loop in both dimensions and exports one backend per loop. */
@@ -83,19 +104,41 @@ enum { MODE_REF = 0, MODE_FAST = 1, MODE_SPLIT = 2 };
 #define WL_CUDA_TEST_LOOPS 0
 #endif
 
-/* The product's loop of dimension dim: split in 3D, where staging pays
- * (cells of ~30 particles); fast in 2D, where a cell holds ~8 and the
- * warp's rows are too short for it (split ran at half the rate of fast
- * there on the H100, docs/history/BENCHMARKS-history.md), and in a build
- * with double wl_real, which split's float staging would narrow. */
-static constexpr int default_mode(int dim) {
-  return dim == 3 && !WL_REAL_DOUBLE ? MODE_SPLIT : MODE_FAST;
+/* 2D runs of fewer particles than this take the lanes loop, larger ones
+ * the fast loop: with one thread per particle a run under about the GPU's
+ * resident threads (132 SMs x 2048 on an H100) leaves the GPU waiting on
+ * each thread's walk over its ~70 candidates, one after the other; above
+ * it the fast loop's threads fill the GPU and the lanes' extra sums would
+ * only cost. A fixed count, not the GPU's, so that a run takes the same
+ * loop (and gives the same bits) on every GPU. */
+#ifndef WL_LANES_MAX_PARTICLES
+#define WL_LANES_MAX_PARTICLES 262144
+#endif
+
+/* The product's loop of dimension dim for n particles: split in 3D, where
+ * staging pays (cells of ~30 particles); in 2D, where a cell holds ~8 and
+ * the warp's rows are too short for split (split ran at half the rate of
+ * fast there on the H100, docs/history/BENCHMARKS-history.md), lanes or
+ * fast by size (WL_LANES_MAX_PARTICLES); fast in a 3D build with double
+ * wl_real, which split's float staging would narrow. */
+static constexpr int default_mode(int dim, int n) {
+  return dim == 2 ? (n < WL_LANES_MAX_PARTICLES ? MODE_LANES : MODE_FAST)
+                  : !WL_REAL_DOUBLE ? MODE_SPLIT : MODE_FAST;
 }
 
 /* Whether this build has loop `mode` for dimension dim. */
 static constexpr bool loop_built(int mode, int dim) {
-  return WL_CUDA_TEST_LOOPS ? mode != MODE_SPLIT || !WL_REAL_DOUBLE : mode == default_mode(dim);
+  return WL_CUDA_TEST_LOOPS ? mode != MODE_SPLIT || !WL_REAL_DOUBLE
+         : dim == 2         ? mode == MODE_LANES || mode == MODE_FAST
+                            : mode == default_mode(dim, 0);
 }
+
+/* Threads per particle of the lanes loop and the 2D wall condition (a
+ * power of two, at most 32): each takes a contiguous share of every row
+ * of candidates. */
+#ifndef WL_GATHER_LANES
+#define WL_GATHER_LANES 4
+#endif
 
 /* ---- error checking ----------------------------------------------------- */
 
@@ -114,7 +157,31 @@ static constexpr bool loop_built(int mode, int dim) {
 
 /* ---- device state ------------------------------------------------------- */
 
-/* Reductions and fault of one step (device record, copied back once). */
+/* The step under way, as its kernels read it (no step input is a kernel
+ * argument: a captured step replays with the same arguments). Written by
+ * the host before a step (cuda_step) or planned on the device in a block
+ * (cuda_run, plan_step). */
+struct dplan {
+  double dt, dt_prev; /* the step and the previous one [s] */
+  int euler;          /* Verlet: the Euler step (integrate.h wl_sph_verlet_euler) */
+  int stop;           /* the block has stopped: every step kernel returns at once */
+  int block;          /* 1: a block (k_end accounts and plans the next step), 0: one step */
+  int pad;
+  double body_vel[WL_SPH_BODIES_MAX + 1][WL_SPH_DIM_MAX]; /* backend.h wl_sph_step_in */
+  double body_acc[WL_SPH_BODIES_MAX + 1][WL_SPH_DIM_MAX];
+};
+
+/* A block's driver state on the device (backend.h wl_sph_block_in/out). */
+struct dblock {
+  double t, t_out, dt_next, dt_last, dt_initial;
+  long long step, max_steps, taken, n_excluded, n_fluid;
+  unsigned long long limited, excluded; /* sums over the block */
+  int why;                              /* enum wl_sph_block_stop */
+  int lands;                            /* the planned step lands on t_out */
+};
+
+/* Reductions and fault of one step, and the step's plan (device record,
+ * copied back once a step or block). */
 struct dstats {
   unsigned long long ace2, vel2, visc; /* bit patterns of non-negative doubles */
   int first;                           /* lowest faulty index, INT_MAX if none */
@@ -125,6 +192,8 @@ struct dstats {
   unsigned long long limited; /* particles the wall limiter moved */
   unsigned long long excluded; /* particles that left the domain box (guard.h wl_sph_exclude) */
   double load[2];              /* wall_load: force [N or N/m], moment [N m or N m/m] */
+  struct dplan plan;           /* uploaded (with blk in a block) before the step */
+  struct dblock blk;
 };
 
 /* Read-only configuration on the device (guard). */
@@ -134,15 +203,21 @@ struct dmeta {
   struct wl_sph_wall walls[WL_SPH_WALLS_MAX];
 };
 
-struct bodyvel {
-  double v[WL_SPH_BODIES_MAX + 1][WL_SPH_DIM_MAX];
+/* The arrays whose roles a rebuild swaps (struct gpu), for the captured
+ * steps: a rebuild from roles[0] gives roles[1] and back. */
+struct roles {
+  double *pos[WL_SPH_DIM_MAX], *pos_h[WL_SPH_DIM_MAX];
+  wl_real *vel[WL_SPH_DIM_MAX], *vel_h[WL_SPH_DIM_MAX], *ace0, *rho, *rho_h, *ar;
+  wl_real *vel_m1[WL_SPH_DIM_MAX], *vel_m1_alt[WL_SPH_DIM_MAX], *rho_m1, *rho_m1_alt;
+  unsigned int *key, *id;
+  unsigned char *kind, *kind_alt, *body, *body_alt;
 };
 
 struct gpu {
   struct wl_sph_config cfg;
   struct wl_sph_const k;
   struct wl_sph_grid grid;
-  int dim, n, nb, end_bit;
+  int dim, n, nb;
   int mode; /* force loop: MODE_FAST or MODE_SPLIT (MODE_REF in the tests' build) */
   /* device arrays (current roles; sorting swaps pos<->pos_h, vel<->vel_h,
    * rho<->rho_h, id<->ar, kind<->kind_alt, body<->body_alt) */
@@ -156,11 +231,21 @@ struct gpu {
   unsigned int *key, *id;
   unsigned char *kind, *kind_alt, *body, *body_alt;
   int *begin; /* 2 n_cells + 1 */
-  void *sort_tmp;
+  int *count; /* 2 n_cells + 1: particles per key, then the sort's fill counters */
+  void *sort_tmp; /* the scan's scratch */
   size_t sort_tmp_bytes;
   struct dmeta *meta;
   struct dstats *stats;   /* device */
   struct dstats *h_stats; /* pinned host copy */
+  struct dstats *h_up;    /* pinned host staging of the plan (and block) uploads */
+  /* one step captured as a CUDA graph from each of the two role sets (a
+   * step's kernels are a dozen launches of a few microseconds each at 20k
+   * particles: replayed as a graph they follow each other without the
+   * launch gaps) */
+  cudaGraph_t graph[2];
+  cudaGraphExec_t exec[2];
+  struct roles roles[2];
+  int graphs; /* exec[] captured */
   void *allocs[64];       /* everything cudaMalloc'd, for free */
   int n_allocs;
   size_t bytes;           /* device bytes allocated */
@@ -172,12 +257,29 @@ struct gpu {
 
 static __device__ __forceinline__ int tid(void) { return blockIdx.x * blockDim.x + threadIdx.x; }
 
-/* Sort keys and the identity permutation; thread 0 resets the step record. */
+/* The sort (rebuild): a counting sort by key whose order inside a key is
+ * the previous order, the order a stable sort gives. k_keys: each
+ * particle's key and the particles per key (count, zeroed before); their
+ * exclusive sum is begin (CUB scan); k_scatter: each particle into a free
+ * slot of its key's range (count, zeroed again, as the fill counters: the
+ * order inside a range depends on timing); k_cellsort: each range sorted
+ * by previous index, which makes it the stable order again, the same
+ * permutation on every run. A cell holds ~8 particles in 2D and ~30 in
+ * 3D, so the ranges are short; this takes a few short kernels where a
+ * radix sort of the keys takes two passes of decoupled look-back that
+ * run nearly serially at a few ten thousand particles.
+ *
+ * Every kernel of a step returns at once when the block has stopped
+ * (plan.stop); the memsets and the scan between them then clear and sum
+ * scratch, which the next step writes anew. */
+
+/* Keys and particles per key; thread 0 resets the step record. */
 template <int DIM>
 __global__ void k_keys(struct wl_sph_grid g, const double *__restrict__ x,
                        const double *__restrict__ y, const double *__restrict__ z,
-                       const unsigned char *__restrict__ kind, unsigned int *key,
-                       unsigned int *val, int n, struct dstats *st) {
+                       const unsigned char *__restrict__ kind, unsigned int *key, int *count,
+                       int n, struct dstats *st) {
+  if (st->plan.stop) return;
   const int i = tid();
   if (i == 0) {
     st->ace2 = st->vel2 = st->visc = 0ull;
@@ -190,27 +292,55 @@ __global__ void k_keys(struct wl_sph_grid g, const double *__restrict__ x,
   double *pos[WL_SPH_DIM_MAX] = {(double *)x, (double *)y, (double *)z};
   if (DIM == 2) pos[1] = (double *)z;
   const unsigned group = kind[i] == WL_KIND_FLUID ? 1u : 0u;
-  key[i] = group * (unsigned)g.n_cells + (unsigned)wl_sph_cell_of(DIM, &g, pos, i);
-  val[i] = (unsigned)i;
+  const unsigned k = group * (unsigned)g.n_cells + (unsigned)wl_sph_cell_of(DIM, &g, pos, i);
+  key[i] = k;
+  atomicAdd(&count[k], 1);
 }
 
-/* begin[k] = first sorted index whose key is >= k, for k in [0, n_keys]. */
-__global__ void k_begin(const unsigned int *__restrict__ key, int n, int n_keys, int *begin) {
+/* Particle i into a free slot of its key's range of perm. */
+__global__ void k_scatter(const unsigned int *__restrict__ key, const int *__restrict__ begin,
+                          int *count, unsigned int *perm, int n, const struct dstats *st) {
+  const int i = tid();
+  if (i >= n || st->plan.stop) return;
+  const unsigned k = key[i];
+  perm[begin[k] + atomicAdd(&count[k], 1)] = (unsigned)i;
+}
+
+/* Range of key k of perm into ascending order (insertion sort; in
+ * registers up to CELLSORT_LOCAL entries, in place beyond). */
+enum { CELLSORT_LOCAL = 48 };
+__global__ void k_cellsort(const int *__restrict__ begin, unsigned int *perm, int n_keys,
+                           const struct dstats *st) {
   const int k = tid();
-  if (k > n_keys) return;
-  int lo = 0, hi = n; /* lower bound */
-  while (lo < hi) {
-    const int mid = (lo + hi) >> 1;
-    if (key[mid] < (unsigned)k) lo = mid + 1;
-    else hi = mid;
+  if (k >= n_keys || st->plan.stop) return;
+  const int b = begin[k], m = begin[k + 1] - b;
+  if (m < 2) return;
+  unsigned int *p = perm + b;
+  if (m <= CELLSORT_LOCAL) {
+    unsigned int v[CELLSORT_LOCAL];
+    for (int a = 0; a < m; a++) {
+      const unsigned x = p[a];
+      int c = a;
+      for (; c > 0 && v[c - 1] > x; c--) v[c] = v[c - 1];
+      v[c] = x;
+    }
+    for (int a = 0; a < m; a++) p[a] = v[a];
+  } else {
+    for (int a = 1; a < m; a++) {
+      const unsigned x = p[a];
+      int c = a;
+      for (; c > 0 && p[c - 1] > x; c--) p[c] = p[c - 1];
+      p[c] = x;
+    }
   }
-  begin[k] = lo;
 }
 
 /* State fields into sorted order (dst[s] = src[perm[s]]) and the pressure
  * of the sorted density. */
 struct permute_args {
   const unsigned int *perm;
+  const unsigned int *key;
+  unsigned int *key_d;
   const double *pos[WL_SPH_DIM_MAX];
   double *pos_d[WL_SPH_DIM_MAX];
   const wl_real *vel[WL_SPH_DIM_MAX];
@@ -227,10 +357,12 @@ struct permute_args {
 };
 
 template <int DIM>
-__global__ void k_permute(struct permute_args a, struct wl_sph_const k, int n) {
+__global__ void k_permute(struct permute_args a, struct wl_sph_const k, int n,
+                          const struct dstats *st) {
   const int s = tid();
-  if (s >= n) return;
+  if (s >= n || st->plan.stop) return;
   const int j = (int)a.perm[s];
+  a.key_d[s] = a.key[j];
   for (int c = 0; c < DIM; c++) {
     a.pos_d[c][s] = a.pos[c][j];
     a.vel_d[c][s] = a.vel[c][j];
@@ -296,6 +428,7 @@ template <int DIM, int LAM, int CUT>
 __global__ void __launch_bounds__(THREADS, DIM == 2 && CUT ? WL_GATHER_MIN_BLOCKS : 1)
     k_gather(const struct wl_sph_const kp, const struct wl_sph_grid gp,
              const struct wl_sph_eval ep, int i0, int n, int nb, struct dstats *st) {
+  if (st->plan.stop) return;
   const struct wl_sph_const k = kp;
   const struct wl_sph_grid g = gp;
   const struct wl_sph_eval e = ep;
@@ -303,6 +436,100 @@ __global__ void __launch_bounds__(THREADS, DIM == 2 && CUT ? WL_GATHER_MIN_BLOCK
   double a2 = 0, v2 = 0, vi = 0;
   if (i < n) {
     wl_sph_gather_block(DIM, LAM, 1, CUT, &k, &g, &e, nb, i, 1, 0);
+    wl_sph_eval_dt_input(DIM, &e, i, nb, &a2, &v2, &vi);
+  }
+  block_max3(a2, v2, vi, st);
+}
+
+/* The sum of v over the R threads of a particle (consecutive lanes): a
+ * butterfly, whose every step adds two partial sums commutatively, so all
+ * R threads end with the same bits, whatever the timing. */
+template <int R> static __device__ __forceinline__ wl_real lanes_sum(wl_real v) {
+  for (int o = 1; o < R; o <<= 1) v += __shfl_xor_sync(0xffffffffu, v, o);
+  return v;
+}
+template <int R> static __device__ __forceinline__ wl_real lanes_max(wl_real v) {
+  for (int o = 1; o < R; o <<= 1) v = wl_sph_max_nonneg(v, __shfl_xor_sync(0xffffffffu, v, o));
+  return v;
+}
+template <int R> static __device__ __forceinline__ void lanes_acc(struct wl_sph_acc *a) {
+  for (int c = 0; c < 3; c++) a->a[c][0] = lanes_sum<R>(a->a[c][0]);
+  a->cont[0] = lanes_sum<R>(a->cont[0]);
+  a->ddt[0] = lanes_sum<R>(a->ddt[0]);
+  a->wsum[0] = lanes_sum<R>(a->wsum[0]);
+  a->visc[0] = lanes_max<R>(a->visc[0]);
+}
+
+/* Thread q of R's share [*c0, *c1) of the candidates [j0, j1). */
+template <int R> static __device__ __forceinline__ void lanes_share(int j0, int j1, int q, int *c0,
+                                                                     int *c1) {
+  const int len = j1 - j0;
+  *c0 = j0 + (len * q) / R;
+  *c1 = j0 + (len * (q + 1)) / R;
+}
+
+/* The lanes force loop (2D default): R consecutive threads per particle,
+ * each summing its share of every row (wl_sph_gather_range with the
+ * cut-off skip, the rows in wl_sph_gather_block's order), then the R
+ * partial sums added (lanes_sum) and the particle finished by its first
+ * thread (wl_sph_finish); the mirror planes' rows (3D) by the first thread
+ * alone. The same terms as the reference loop, associated in R runs: equal
+ * to it to float rounding, and the same bits on every run. */
+template <int DIM, int LAM, int R>
+__global__ void __launch_bounds__(THREADS)
+    k_gather_lanes(const struct wl_sph_const kp, const struct wl_sph_grid gp,
+                   const struct wl_sph_eval ep, int i0, int n, int nb, struct dstats *st) {
+  if (st->plan.stop) return;
+  const struct wl_sph_const k = kp;
+  const struct wl_sph_grid g = gp;
+  const struct wl_sph_eval e = ep;
+  const int t = tid(), q = t & (R - 1);
+  const int i = i0 + t / R;
+  const bool active = i < n;
+  const int il = active ? i : n - 1; /* every thread takes part in the sums */
+  const int nc = g.n_cells, fluid = il >= nb;
+  const int cell = (int)e.key[il] - (fluid ? nc : 0);
+  int first[9], last[9];
+  const int nr = wl_sph_cell_rows(DIM, &g, cell, 0, first, last);
+  const int *const bf = e.begin + nc, *const bb = e.begin;
+  struct wl_sph_lanes in;
+  for (int a = 0; a < DIM; a++) {
+    in.x[a][0] = e.pos[a][il];
+    in.v[a][0] = e.vel[a][il];
+  }
+  in.rho[0] = e.rho[il];
+  in.inv_rho[0] = wl_sph_rcp(e.rho[il]);
+  in.p[0] = e.press[il];
+  struct wl_sph_acc f, b;
+  for (int c = 0; c < 3; c++) f.a[c][0] = 0;
+  f.cont[0] = f.ddt[0] = f.wsum[0] = f.visc[0] = 0;
+  b = f;
+  if (active) {
+    int c0, c1;
+    if (fluid) {
+      for (int r = 0; r < nr; r++) {
+        lanes_share<R>(bf[first[r]], bf[last[r] + 1], q, &c0, &c1);
+        wl_sph_gather_range(DIM, LAM, 1, 1, 1, 1, &k, &e, &in, c0, c1, k.av_ff, k.lam_ff, 0, &f);
+      }
+      for (int r = 0; r < nr; r++) {
+        lanes_share<R>(bb[first[r]], bb[last[r] + 1], q, &c0, &c1);
+        wl_sph_gather_range(DIM, LAM, 1, 0, 1, 1, &k, &e, &in, c0, c1, k.av_fb, k.lam_fb, 0, &b);
+      }
+      if (q == 0) wl_sph_gather_mirrors(DIM, LAM, 1, 1, &k, &g, &e, &in, 1, cell, 0, &f, &b);
+    } else {
+      for (int r = 0; r < nr; r++) {
+        lanes_share<R>(bf[first[r]], bf[last[r] + 1], q, &c0, &c1);
+        wl_sph_gather_range(DIM, LAM, 0, 0, 1, 1, &k, &e, &in, c0, c1, k.av_fb, k.lam_fb, 0, &f);
+      }
+      if (q == 0) wl_sph_gather_mirrors(DIM, LAM, 1, 1, &k, &g, &e, &in, 0, cell, 0, &f, &f);
+    }
+  }
+  lanes_acc<R>(&f);
+  lanes_acc<R>(&b);
+  double a2 = 0, v2 = 0, vi = 0;
+  if (active && q == 0) {
+    if (fluid) wl_sph_finish(DIM, &k, &e, i, 1, in.rho[0], &f, &b, 0);
+    else wl_sph_finish(DIM, &k, &e, i, 0, in.rho[0], &f, &f, 0);
     wl_sph_eval_dt_input(DIM, &e, i, nb, &a2, &v2, &vi);
   }
   block_max3(a2, v2, vi, st);
@@ -602,6 +829,7 @@ __global__ void __launch_bounds__(WL_SPLIT_THREADS, WL_SPLIT_MIN_BLOCKS)
                    const struct wl_sph_eval ep, int i0, int n, int nb, float skip2,
                    struct dstats *st) {
   __shared__ struct split_warp warps[WL_SPLIT_THREADS / 32];
+  if (st->plan.stop) return;
   const struct wl_sph_const k = kp;
   const struct wl_sph_grid g = gp;
   const struct wl_sph_eval e = ep;
@@ -743,23 +971,59 @@ __global__ void __launch_bounds__(WL_SPLIT_THREADS, WL_SPLIT_MIN_BLOCKS)
 
 /* The wall condition (sph/wall.h), one thread per boundary particle:
  * its density and pressure from the fluid's, before the fluid's force
- * loop reads them. ba: the moving bodies' accelerations [m/s^2]. */
+ * loop reads them; the moving bodies' accelerations [m/s^2] from the
+ * plan. */
 struct wallin {
   const unsigned char *kind, *body;
   wl_real *rho, *press;
-  double acc[WL_SPH_BODIES_MAX + 1][WL_SPH_DIM_MAX];
 };
 template <int DIM>
 __global__ void __launch_bounds__(THREADS)
     k_wall(const struct wl_sph_const kp, const struct wl_sph_grid gp, const struct wl_sph_eval ep,
-           int nb, const struct wallin w) {
+           int nb, const struct wallin w, const struct dstats *st) {
   const struct wl_sph_const k = kp;
   const struct wl_sph_grid g = gp;
   const struct wl_sph_eval e = ep;
   const int i = tid();
-  if (i >= nb) return;
-  const double *aw = w.kind[i] == WL_KIND_MOVING ? w.acc[w.body[i]] : NULL;
+  if (i >= nb || st->plan.stop) return;
+  const double *aw = w.kind[i] == WL_KIND_MOVING ? st->plan.body_acc[w.body[i]] : NULL;
   wl_sph_wall_sample(DIM, &k, &g, &e, aw, i, w.rho, w.press);
+}
+
+/* The wall condition in 2D with R consecutive threads per boundary
+ * particle: each sums its share of every fluid row (wl_sph_wall_range),
+ * the R sums are added (lanes_sum) and the first thread stores the result
+ * (wl_sph_wall_store): wl_sph_wall_sample's terms, associated in R runs. A
+ * wall particle walks ~70 candidates; one thread each leaves a flume's few
+ * thousand wall particles on a few dozen of the GPU's SMs. */
+template <int R>
+__global__ void __launch_bounds__(THREADS)
+    k_wall_lanes(const struct wl_sph_const kp, const struct wl_sph_grid gp,
+                 const struct wl_sph_eval ep, int nb, const struct wallin w,
+                 const struct dstats *st) {
+  if (st->plan.stop) return;
+  const struct wl_sph_const k = kp;
+  const struct wl_sph_grid g = gp;
+  const struct wl_sph_eval e = ep;
+  const int t = tid(), q = t & (R - 1), i = t / R;
+  const bool active = i < nb;
+  const int il = active ? i : nb - 1;
+  int first[9], last[9];
+  const int nr = wl_sph_cell_rows(2, &g, (int)e.key[il], 0, first, last);
+  const int *const bf = e.begin + g.n_cells;
+  const double xi[3] = {e.pos[0][il], 0.0, e.pos[1][il]};
+  wl_real ga[3];
+  wl_sph_wall_ga(2, &k, w.kind[il] == WL_KIND_MOVING ? st->plan.body_acc[w.body[il]] : NULL, ga);
+  struct wl_sph_wall_acc s = {0, 0};
+  if (active)
+    for (int r = 0; r < nr; r++) {
+      int c0, c1;
+      lanes_share<R>(bf[first[r]], bf[last[r] + 1], q, &c0, &c1);
+      wl_sph_wall_range(2, &k, &e, xi, ga, c0, c1, 0, &s);
+    }
+  s.sw = lanes_sum<R>(s.sw);
+  s.spw = lanes_sum<R>(s.spw);
+  if (active && q == 0) wl_sph_wall_store(2, &k, &e, &s, i, w.rho, w.press);
 }
 
 /* Predictor (sph/integrate.h) and the pressure of the half-step density. */
@@ -771,37 +1035,37 @@ struct shiftptr {
 template <int DIM>
 __global__ void __launch_bounds__(THREADS)
     k_shift(const struct wl_sph_const kp, const struct wl_sph_grid gp, const struct wl_sph_eval ep,
-            int n, int nb, double dt, struct shiftptr sp) {
+            int n, int nb, struct shiftptr sp, const struct dstats *st) {
   const struct wl_sph_const k = kp;
   const struct wl_sph_grid g = gp;
   const struct wl_sph_eval e = ep;
   const int i = nb + tid();
-  if (i < n) wl_sph_shift(DIM, &k, &g, &e, nb, i, dt, sp.s);
+  if (i < n && !st->plan.stop) wl_sph_shift(DIM, &k, &g, &e, nb, i, st->plan.dt, sp.s);
 }
 
 template <int DIM>
-__global__ void k_predict(struct wl_sph_const kp, struct wl_particles p, double dt,
-                          struct bodyvel bv, int n) {
+__global__ void k_predict(struct wl_sph_const kp, struct wl_particles p, int n,
+                          const struct dstats *st) {
   const int i = tid();
-  if (i >= n) return;
+  if (i >= n || st->plan.stop) return;
   const struct wl_sph_const k = kp;
-  wl_sph_predict(DIM, &k, &p, dt, (const double(*)[WL_SPH_DIM_MAX])bv.v, i);
+  wl_sph_predict(DIM, &k, &p, st->plan.dt, st->plan.body_vel, i);
   p.press[i] = wl_sph_eos_p(&k, p.rho_h[i]);
 }
 
 /* The update (when update != 0: the corrector, or the Verlet step with
- * its Euler flag) and guard; the lowest faulty index. */
+ * its Euler flag, as planned) and guard; the lowest faulty index. */
 template <int DIM>
-__global__ void k_correct_guard(struct wl_sph_const kp, struct wl_particles p, double dt,
-                                double dt_prev, struct bodyvel bv, int n, int update, int euler,
+__global__ void k_correct_guard(struct wl_sph_const kp, struct wl_particles p, int n, int update,
                                 const struct dmeta *m, struct dstats *st) {
   const int i = tid();
-  if (i >= n) return;
+  if (i >= n || st->plan.stop) return;
   const struct wl_sph_const k = kp;
+  const struct dplan *pl = &st->plan;
   if (update && k.integrator == WL_SPH_VERLET)
-    wl_sph_verlet(DIM, &k, &p, dt, dt_prev, (const double(*)[WL_SPH_DIM_MAX])bv.v, euler, i);
+    wl_sph_verlet(DIM, &k, &p, pl->dt, pl->dt_prev, pl->body_vel, pl->euler, i);
   else if (update)
-    wl_sph_correct(DIM, &k, &p, dt, (const double(*)[WL_SPH_DIM_MAX])bv.v, i);
+    wl_sph_correct(DIM, &k, &p, pl->dt, pl->body_vel, i);
   if (update && k.wall_limiter && wl_sph_wall_limit(DIM, &p, m->walls, m->n_walls, k.penetration, i))
     atomicAdd(&st->limited, 1ull);
   if (update && wl_sph_exclude(DIM, &p, m->lo, m->hi, i)) atomicAdd(&st->excluded, 1ull);
@@ -810,13 +1074,12 @@ __global__ void k_correct_guard(struct wl_sph_const kp, struct wl_particles p, d
     atomicMin(&st->first, i);
 }
 
-/* The fault record of the first faulty particle (one thread). */
+/* The fault record of faulty particle f. */
 template <int DIM>
-__global__ void k_fault(struct wl_sph_const kp, struct wl_particles p, int n,
-                        const struct dmeta *m, struct dstats *st) {
-  const struct wl_sph_const k = kp;
-  const int f = st->first;
-  if (f >= n) return;
+static __device__ void fault_record(const struct wl_sph_const *kp, const struct wl_particles *pp,
+                                    int f, const struct dmeta *m, struct dstats *st) {
+  const struct wl_sph_const &k = *kp;
+  const struct wl_particles &p = *pp;
   int w = -1;
   st->fault = wl_sph_guard(DIM, &k, &p, m->lo, m->hi, m->walls, m->n_walls, f, &w);
   st->wall = w;
@@ -827,6 +1090,78 @@ __global__ void k_fault(struct wl_sph_const kp, struct wl_particles p, int n,
     st->vel[a] = a < DIM ? (double)p.vel[a][f] : 0;
   }
   st->rho = p.rho[f];
+}
+
+/* The plan of a block's next step on the device, as the host's loop
+ * (src/sph/sim.c wl_sph_sim_run and wl_sph_sim_step) would choose it, by
+ * the driver's rules of backend.h; or the block's stop. */
+static __device__ void plan_step(const struct wl_sph_const *k, struct dstats *st) {
+  struct dblock *b = &st->blk;
+  struct dplan *pl = &st->plan;
+  const double dt_cfl = b->dt_next, rest = b->t_out - b->t;
+  int why = -1;
+  if (b->taken >= b->max_steps) why = WL_SPH_BLOCK_COUNT;
+  else if (!(rest > 0)) why = WL_SPH_BLOCK_REACHED;
+  else if (wl_sph_dt_collapsed(k, dt_cfl, b->dt_initial)) why = WL_SPH_BLOCK_COLLAPSE;
+  if (why >= 0) {
+    b->why = why;
+    pl->stop = 1;
+    return;
+  }
+  int lands;
+  pl->dt = wl_sph_dt_limit(wl_sph_dt_toward(rest, dt_cfl, &lands), dt_cfl);
+  pl->dt_prev = b->dt_last;
+  pl->euler = k->integrator == WL_SPH_VERLET && wl_sph_verlet_euler(k, (long)b->step);
+  b->lands = lands;
+}
+
+/* A block's first plan (one thread). */
+__global__ void k_plan(struct wl_sph_const kp, struct dstats *st) {
+  const struct wl_sph_const k = kp;
+  plan_step(&k, st);
+}
+
+/* The end of a step (one thread): the fault record of the first faulty
+ * particle; in a block, the step counted as the host's loop counts it
+ * (time, step, the next CFL step, the guards in its order) and the next
+ * one planned, or the block stopped after it. */
+template <int DIM>
+__global__ void k_end(struct wl_sph_const kp, struct wl_particles p, int n,
+                      const struct dmeta *m, struct dstats *st) {
+  if (st->plan.stop) return;
+  const struct wl_sph_const k = kp;
+  const int f = st->first;
+  if (f < n) fault_record<DIM>(&k, &p, f, m, st);
+  if (!st->plan.block) return;
+  struct dblock *b = &st->blk;
+  const double dt = st->plan.dt;
+  b->t += dt;
+  b->dt_last = dt;
+  b->step++;
+  b->taken++;
+  double ace2, vel2, visc;
+  memcpy(&ace2, &st->ace2, sizeof ace2);
+  memcpy(&vel2, &st->vel2, sizeof vel2);
+  memcpy(&visc, &st->visc, sizeof visc);
+  struct wl_sph_step_out o;
+  wl_sph_step_dt(&k, ace2, vel2, visc, &o);
+  b->dt_next = o.dt_next;
+  b->limited += st->limited;
+  b->excluded += st->excluded;
+  b->n_excluded += (long long)st->excluded;
+  int why = -1;
+  if (f < n) why = WL_SPH_BLOCK_FAULT;
+  else if (wl_sph_excluded_too_many((long)b->n_excluded, (long)b->n_fluid)) why = WL_SPH_BLOCK_EXCLUDED;
+  else if (b->lands) {
+    b->t = b->t_out; /* exact, against rounding of t + dt */
+    why = WL_SPH_BLOCK_LANDED;
+  }
+  if (why >= 0) {
+    b->why = why;
+    st->plan.stop = 1;
+  } else {
+    plan_step(&k, st);
+  }
 }
 
 /* The wall load (backend.h wall_load): each fluid particle's share
@@ -916,39 +1251,37 @@ static struct wl_particles view(const struct gpu *c) {
   return p;
 }
 
-/* Rebuild the cell lists: keys, sort, begin, state into sorted order, the
- * pressure of the sorted density. The sort's scratch lives in arrays that
- * are free at this point of the step (ace, visc); pos_h, vel_h, rho_h
- * receive the sorted state and swap roles with it, and so does ar with id
+/* Rebuild the cell lists: keys, sort (the counting sort above), begin,
+ * state into sorted order, the pressure of the sorted density. The sort's
+ * scratch lives in arrays that are free at this point of the step (ace);
+ * key, pos_h, vel_h, rho_h receive the sorted keys and state and swap
+ * roles with the unsorted ones (key with ace[0]), and so does ar with id
  * (both 4-byte arrays; ar is rewritten by the next force evaluation). */
 static enum wl_status rebuild(struct gpu *c, struct wl_error *err) {
-  const int n = c->n, dim = c->dim;
-  unsigned int *key_alt = (unsigned int *)c->ace[0];
-  unsigned int *val = (unsigned int *)c->ace[1];
-  unsigned int *val_alt = (unsigned int *)(dim == 3 ? c->ace[2] : c->visc);
+  const int n = c->n, dim = c->dim, n_keys = 2 * c->grid.n_cells;
+  unsigned int *key_d = (unsigned int *)c->ace[0];
+  unsigned int *perm = (unsigned int *)c->ace[1];
+  const size_t count_bytes = sizeof(int) * (size_t)(n_keys + 1);
+  CK(cudaMemsetAsync(c->count, 0, count_bytes, c->stream));
   if (dim == 3)
     k_keys<3><<<blocks(n), THREADS, 0, c->stream>>>(c->grid, c->pos[0], c->pos[1], c->pos[2],
-                                                     c->kind, c->key, val, n, c->stats);
+                                                     c->kind, c->key, c->count, n, c->stats);
   else
     k_keys<2><<<blocks(n), THREADS, 0, c->stream>>>(c->grid, c->pos[0], c->pos[1], c->pos[1],
-                                                     c->kind, c->key, val, n, c->stats);
+                                                     c->kind, c->key, c->count, n, c->stats);
   CKL("keys");
-  cub::DoubleBuffer<unsigned int> dk(c->key, key_alt), dv(val, val_alt);
   size_t tmp = c->sort_tmp_bytes;
-  CK(cub::DeviceRadixSort::SortPairs(c->sort_tmp, tmp, dk, dv, n, 0, c->end_bit, c->stream));
-  if (dk.Current() != c->key) {
-    /* sorted keys landed in ace[0]'s array: swap the two roles */
-    wl_real *t = (wl_real *)c->key;
-    c->key = dk.Current();
-    c->ace[0] = t;
-  }
-  const unsigned int *perm = dv.Current();
-  const int n_keys = 2 * c->grid.n_cells;
-  k_begin<<<blocks(n_keys + 1), THREADS, 0, c->stream>>>(c->key, n, n_keys, c->begin);
-  CKL("begin");
+  CK(cub::DeviceScan::ExclusiveSum(c->sort_tmp, tmp, c->count, c->begin, n_keys + 1, c->stream));
+  CK(cudaMemsetAsync(c->count, 0, count_bytes, c->stream));
+  k_scatter<<<blocks(n), THREADS, 0, c->stream>>>(c->key, c->begin, c->count, perm, n, c->stats);
+  CKL("scatter");
+  k_cellsort<<<blocks(n_keys), THREADS, 0, c->stream>>>(c->begin, perm, n_keys, c->stats);
+  CKL("cell sort");
   struct permute_args a;
   memset(&a, 0, sizeof a);
   a.perm = perm;
+  a.key = c->key;
+  a.key_d = key_d;
   for (int q = 0; q < dim; q++) {
     a.pos[q] = c->pos[q];
     a.pos_d[q] = c->pos_h[q];
@@ -972,9 +1305,14 @@ static enum wl_status rebuild(struct gpu *c, struct wl_error *err) {
     a.rho_m1 = c->rho_m1;
     a.rho_m1_d = c->rho_m1_alt;
   }
-  if (dim == 3) k_permute<3><<<blocks(n), THREADS, 0, c->stream>>>(a, c->k, n);
-  else k_permute<2><<<blocks(n), THREADS, 0, c->stream>>>(a, c->k, n);
+  if (dim == 3) k_permute<3><<<blocks(n), THREADS, 0, c->stream>>>(a, c->k, n, c->stats);
+  else k_permute<2><<<blocks(n), THREADS, 0, c->stream>>>(a, c->k, n, c->stats);
   CKL("permute");
+  {
+    wl_real *t = (wl_real *)c->key;
+    c->key = key_d;
+    c->ace[0] = t;
+  }
   for (int q = 0; q < dim; q++) {
     swap_ptr(c->pos[q], c->pos_h[q]);
     swap_ptr(c->vel[q], c->vel_h[q]);
@@ -1011,6 +1349,14 @@ static void launch_gather(const struct gpu *c, const struct wl_sph_eval &e, int 
       return;
     }
   }
+  if constexpr (loop_built(MODE_LANES, DIM)) {
+    if (c->mode == MODE_LANES) {
+      const int R = WL_GATHER_LANES;
+      k_gather_lanes<DIM, LAM, R><<<blocks((n - i0) * R), THREADS, 0, s>>>(c->k, c->grid, e, i0,
+                                                                           n, nb, c->stats);
+      return;
+    }
+  }
   if constexpr (loop_built(MODE_FAST, DIM)) {
     if (c->mode == MODE_FAST) {
       k_gather<DIM, LAM, 1><<<blocks(n - i0), THREADS, 0, s>>>(c->k, c->grid, e, i0, n, nb,
@@ -1027,11 +1373,10 @@ static void launch_gather(const struct gpu *c, const struct wl_sph_eval &e, int 
 
 /* One force evaluation at (pos, vel, rho) with press already filled; with
  * the wall condition, the boundary particles' rho and press are sampled
- * first (body_acc: the moving bodies' accelerations, NULL at rest) and the
- * force loop visits the fluid only. */
+ * first (the moving bodies' accelerations from the plan) and the force
+ * loop visits the fluid only. */
 static enum wl_status evaluate(struct gpu *c, double *const *pos, wl_real *const *vel,
-                               wl_real *rho, const double (*body_acc)[WL_SPH_DIM_MAX],
-                               struct wl_error *err) {
+                               wl_real *rho, struct wl_error *err) {
   struct wl_sph_eval e;
   memset(&e, 0, sizeof e);
   for (int a = 0; a < WL_SPH_DIM_MAX; a++) {
@@ -1055,9 +1400,10 @@ static enum wl_status evaluate(struct gpu *c, double *const *pos, wl_real *const
     w.body = c->body;
     w.rho = rho;
     w.press = c->press;
-    if (body_acc) memcpy(w.acc, body_acc, sizeof w.acc);
-    if (c->dim == 3) k_wall<3><<<blocks(nb), THREADS, 0, s>>>(c->k, c->grid, e, nb, w);
-    else k_wall<2><<<blocks(nb), THREADS, 0, s>>>(c->k, c->grid, e, nb, w);
+    if (c->dim == 3) k_wall<3><<<blocks(nb), THREADS, 0, s>>>(c->k, c->grid, e, nb, w, c->stats);
+    else
+      k_wall_lanes<WL_GATHER_LANES><<<blocks(nb * WL_GATHER_LANES), THREADS, 0, s>>>(
+          c->k, c->grid, e, nb, w, c->stats);
     CKL("wall");
   }
   if (n == i0) return WL_OK;
@@ -1069,27 +1415,34 @@ static enum wl_status evaluate(struct gpu *c, double *const *pos, wl_real *const
   return WL_OK;
 }
 
-/* The update (in != NULL) and guard, the fault record, then the step record
- * back to the host (the one synchronisation of a step). */
-static enum wl_status finish(struct gpu *c, const struct wl_sph_step_in *in,
-                             const struct bodyvel *bv, struct wl_sph_step_out *out,
-                             struct wl_error *err) {
+/* The update (update != 0; the plan says how) and guard, then the end of
+ * the step (k_end). */
+static enum wl_status enqueue_update(struct gpu *c, int update, struct wl_error *err) {
   const struct wl_particles p = view(c);
   const int n = c->n;
-  const double dt = in ? in->dt : 0.0, dt_prev = in ? in->dt_prev : 0.0;
-  const int euler = in && c->k.integrator == WL_SPH_VERLET && wl_sph_verlet_euler(&c->k, in->step);
   if (c->dim == 3) {
-    k_correct_guard<3><<<blocks(n), THREADS, 0, c->stream>>>(c->k, p, dt, dt_prev, *bv, n, in != NULL, euler, c->meta, c->stats);
+    k_correct_guard<3><<<blocks(n), THREADS, 0, c->stream>>>(c->k, p, n, update, c->meta, c->stats);
     CKL("correct");
-    k_fault<3><<<1, 1, 0, c->stream>>>(c->k, p, n, c->meta, c->stats);
+    k_end<3><<<1, 1, 0, c->stream>>>(c->k, p, n, c->meta, c->stats);
   } else {
-    k_correct_guard<2><<<blocks(n), THREADS, 0, c->stream>>>(c->k, p, dt, dt_prev, *bv, n, in != NULL, euler, c->meta, c->stats);
+    k_correct_guard<2><<<blocks(n), THREADS, 0, c->stream>>>(c->k, p, n, update, c->meta, c->stats);
     CKL("correct");
-    k_fault<2><<<1, 1, 0, c->stream>>>(c->k, p, n, c->meta, c->stats);
+    k_end<2><<<1, 1, 0, c->stream>>>(c->k, p, n, c->meta, c->stats);
   }
-  CKL("fault");
+  CKL("end of step");
+  return WL_OK;
+}
+
+/* The step record back to the host (the one synchronisation of a step or
+ * block). */
+static enum wl_status fetch_record(struct gpu *c, struct wl_error *err) {
   CK(cudaMemcpyAsync(c->h_stats, c->stats, sizeof *c->stats, cudaMemcpyDeviceToHost, c->stream));
   CK(cudaStreamSynchronize(c->stream));
+  return WL_OK;
+}
+
+/* The last step's out from the fetched record. */
+static void step_out_of(const struct gpu *c, struct wl_sph_step_out *out) {
   const struct dstats *st = c->h_stats;
   double ace2, vel2, visc;
   memcpy(&ace2, &st->ace2, sizeof ace2);
@@ -1100,7 +1453,7 @@ static enum wl_status finish(struct gpu *c, const struct wl_sph_step_in *in,
   out->fault = WL_SPH_FAULT_NONE;
   out->n_limited = (long)st->limited;
   out->n_excluded = (long)st->excluded;
-  if (st->first < n) {
+  if (st->first < c->n) {
     out->fault = st->fault;
     out->fault_index = st->first;
     out->fault_id = st->id;
@@ -1112,24 +1465,27 @@ static enum wl_status finish(struct gpu *c, const struct wl_sph_step_in *in,
     }
     out->fault_rho = st->rho;
   }
-  return WL_OK;
 }
 
 static void cuda_free(void *ctx) {
   struct gpu *c = (struct gpu *)ctx;
   if (!c) return;
+  for (int q = 0; q < 2; q++) {
+    if (c->exec[q]) cudaGraphExecDestroy(c->exec[q]);
+    if (c->graph[q]) cudaGraphDestroy(c->graph[q]);
+  }
   for (int q = 0; q < c->n_allocs; q++) cudaFree(c->allocs[q]);
   if (c->h_stats) cudaFreeHost(c->h_stats);
+  if (c->h_up) cudaFreeHost(c->h_up);
   if (c->stream) cudaStreamDestroy(c->stream);
   free(c);
 }
 
-static enum wl_status cuda_step(void *ctx, const struct wl_sph_step_in *in,
-                                struct wl_sph_step_out *out, struct wl_error *err) {
-  struct gpu *c = (struct gpu *)ctx;
-  memset(out, 0, sizeof *out);
-  struct bodyvel bv;
-  memcpy(bv.v, in->body_vel, sizeof bv.v);
+/* The kernels of one step (the plan in the device record): rebuild,
+ * shifting, forces, the symplectic predictor and half-step forces, update
+ * and guard, end of step. Enqueued only; the roles of the arrays are those
+ * after the step's rebuild. */
+static enum wl_status enqueue_step(struct gpu *c, struct wl_error *err) {
   enum wl_status st = rebuild(c, err);
   if (st) return st;
   if (c->k.shift_coef > 0 && c->n > c->nb) {
@@ -1138,19 +1494,183 @@ static enum wl_status cuda_step(void *ctx, const struct wl_sph_step_in *in,
     memset(&sp, 0, sizeof sp);
     for (int a = 0; a < c->dim; a++) sp.s[a] = c->shift[a];
     const int nf = c->n - c->nb;
-    if (c->dim == 3) k_shift<3><<<blocks(nf), THREADS, 0, c->stream>>>(c->k, c->grid, e, c->n, c->nb, in->dt, sp);
-    else k_shift<2><<<blocks(nf), THREADS, 0, c->stream>>>(c->k, c->grid, e, c->n, c->nb, in->dt, sp);
+    if (c->dim == 3) k_shift<3><<<blocks(nf), THREADS, 0, c->stream>>>(c->k, c->grid, e, c->n, c->nb, sp, c->stats);
+    else k_shift<2><<<blocks(nf), THREADS, 0, c->stream>>>(c->k, c->grid, e, c->n, c->nb, sp, c->stats);
     CKL("shift");
   }
-  const double(*acc)[WL_SPH_DIM_MAX] = in->body_acc;
-  if ((st = evaluate(c, c->pos, c->vel, c->rho, acc, err))) return st;
-  if (c->k.integrator == WL_SPH_VERLET) return finish(c, in, &bv, out, err);
-  struct wl_particles p = view(c);
-  if (c->dim == 3) k_predict<3><<<blocks(c->n), THREADS, 0, c->stream>>>(c->k, p, in->dt, bv, c->n);
-  else k_predict<2><<<blocks(c->n), THREADS, 0, c->stream>>>(c->k, p, in->dt, bv, c->n);
-  CKL("predict");
-  if ((st = evaluate(c, c->pos_h, c->vel_h, c->rho_h, acc, err))) return st;
-  return finish(c, in, &bv, out, err);
+  if ((st = evaluate(c, c->pos, c->vel, c->rho, err))) return st;
+  if (c->k.integrator != WL_SPH_VERLET) {
+    struct wl_particles p = view(c);
+    if (c->dim == 3) k_predict<3><<<blocks(c->n), THREADS, 0, c->stream>>>(c->k, p, c->n, c->stats);
+    else k_predict<2><<<blocks(c->n), THREADS, 0, c->stream>>>(c->k, p, c->n, c->stats);
+    CKL("predict");
+    if ((st = evaluate(c, c->pos_h, c->vel_h, c->rho_h, err))) return st;
+  }
+  return enqueue_update(c, 1, err);
+}
+
+static void save_roles(const struct gpu *c, struct roles *r) {
+  memset(r, 0, sizeof *r);
+  for (int a = 0; a < WL_SPH_DIM_MAX; a++) {
+    r->pos[a] = c->pos[a];
+    r->pos_h[a] = c->pos_h[a];
+    r->vel[a] = c->vel[a];
+    r->vel_h[a] = c->vel_h[a];
+    r->vel_m1[a] = c->vel_m1[a];
+    r->vel_m1_alt[a] = c->vel_m1_alt[a];
+  }
+  r->ace0 = c->ace[0];
+  r->rho = c->rho;
+  r->rho_h = c->rho_h;
+  r->ar = c->ar;
+  r->rho_m1 = c->rho_m1;
+  r->rho_m1_alt = c->rho_m1_alt;
+  r->key = c->key;
+  r->id = c->id;
+  r->kind = c->kind;
+  r->kind_alt = c->kind_alt;
+  r->body = c->body;
+  r->body_alt = c->body_alt;
+}
+
+static void load_roles(struct gpu *c, const struct roles *r) {
+  for (int a = 0; a < WL_SPH_DIM_MAX; a++) {
+    c->pos[a] = r->pos[a];
+    c->pos_h[a] = r->pos_h[a];
+    c->vel[a] = r->vel[a];
+    c->vel_h[a] = r->vel_h[a];
+    c->vel_m1[a] = r->vel_m1[a];
+    c->vel_m1_alt[a] = r->vel_m1_alt[a];
+  }
+  c->ace[0] = r->ace0;
+  c->rho = r->rho;
+  c->rho_h = r->rho_h;
+  c->ar = r->ar;
+  c->rho_m1 = r->rho_m1;
+  c->rho_m1_alt = r->rho_m1_alt;
+  c->key = r->key;
+  c->id = r->id;
+  c->kind = r->kind;
+  c->kind_alt = r->kind_alt;
+  c->body = r->body;
+  c->body_alt = r->body_alt;
+}
+
+/* Which of the captured role sets the arrays are in now (a rebuild, in a
+ * step or a wall load, flips it); -1: neither. */
+static int role_set(const struct gpu *c) {
+  struct roles r;
+  save_roles(c, &r);
+  for (int q = 0; q < 2; q++)
+    if (!memcmp(&r, &c->roles[q], sizeof r)) return q;
+  return -1;
+}
+
+/* One step captured as a graph from each role set (exec[0] from the
+ * current roles, exec[1] from those after it); nothing runs. A rebuild
+ * swaps every pair of arrays it uses, so two steps give the roles back:
+ * checked. */
+static enum wl_status capture_steps(struct gpu *c, struct wl_error *err) {
+  save_roles(c, &c->roles[0]);
+  for (int q = 0; q < 2; q++) {
+    CK(cudaStreamBeginCapture(c->stream, cudaStreamCaptureModeThreadLocal));
+    const enum wl_status st = enqueue_step(c, err);
+    cudaGraph_t g = NULL;
+    const cudaError_t e = cudaStreamEndCapture(c->stream, &g);
+    if (st) {
+      if (g) cudaGraphDestroy(g);
+      return st;
+    }
+    CK(e);
+    c->graph[q] = g;
+    CK(cudaGraphInstantiate(&c->exec[q], g, 0));
+    if (q == 0) save_roles(c, &c->roles[1]);
+  }
+  if (role_set(c) != 0)
+    return wl_error_set(err, WL_EIO, "cuda backend: two captured steps do not give the arrays' "
+                        "roles back");
+  c->graphs = 1;
+  return WL_OK;
+}
+
+/* Enqueue the next step: the captured graph of the current role set (the
+ * kernels themselves before the capture). */
+static enum wl_status launch_step(struct gpu *c, struct wl_error *err) {
+  const int q = role_set(c);
+  if (!c->graphs || q < 0) return enqueue_step(c, err);
+  CK(cudaGraphLaunch(c->exec[q], c->stream));
+  load_roles(c, &c->roles[q ^ 1]);
+  return WL_OK;
+}
+
+static enum wl_status cuda_step(void *ctx, const struct wl_sph_step_in *in,
+                                struct wl_sph_step_out *out, struct wl_error *err) {
+  struct gpu *c = (struct gpu *)ctx;
+  memset(out, 0, sizeof *out);
+  struct dplan *pl = &c->h_up->plan;
+  memset(pl, 0, sizeof *pl);
+  pl->dt = in->dt;
+  pl->dt_prev = in->dt_prev;
+  pl->euler = c->k.integrator == WL_SPH_VERLET && wl_sph_verlet_euler(&c->k, in->step);
+  memcpy(pl->body_vel, in->body_vel, sizeof pl->body_vel);
+  memcpy(pl->body_acc, in->body_acc, sizeof pl->body_acc);
+  CK(cudaMemcpyAsync(&c->stats->plan, pl, sizeof *pl, cudaMemcpyHostToDevice, c->stream));
+  enum wl_status st = launch_step(c, err);
+  if (!st) st = fetch_record(c, err);
+  if (!st) step_out_of(c, out);
+  return st;
+}
+
+/* backend.h run: the block's state and first plan uploaded, its steps
+ * enqueued (each returns at once after the block stopped), one record
+ * back. */
+static enum wl_status cuda_run(void *ctx, const struct wl_sph_block_in *in,
+                               struct wl_sph_block_out *out, struct wl_error *err) {
+  struct gpu *c = (struct gpu *)ctx;
+  memset(out, 0, sizeof *out);
+  struct dstats *up = c->h_up;
+  memset(&up->plan, 0, sizeof up->plan);
+  memset(&up->blk, 0, sizeof up->blk);
+  up->plan.block = 1;
+  struct dblock *b = &up->blk;
+  b->t = in->t;
+  b->t_out = in->t_out;
+  b->dt_next = in->dt_next;
+  b->dt_last = in->dt_last;
+  b->dt_initial = in->dt_initial;
+  b->step = in->step;
+  b->max_steps = in->max_steps;
+  b->n_excluded = in->n_excluded;
+  b->n_fluid = in->n_fluid;
+  /* plan and blk are adjacent: one upload */
+  const size_t off = offsetof(struct dstats, plan);
+  const size_t len = offsetof(struct dstats, blk) + sizeof up->blk - off;
+  CK(cudaMemcpyAsync((char *)c->stats + off, (const char *)up + off, len, cudaMemcpyHostToDevice,
+                     c->stream));
+  k_plan<<<1, 1, 0, c->stream>>>(c->k, c->stats);
+  CKL("plan");
+  const int q0 = role_set(c);
+  if (!c->graphs || q0 < 0)
+    return wl_error_set(err, WL_EIO, "cuda backend: a block of steps without its captured steps");
+  for (long s = 0; s < in->max_steps; s++)
+    CK(cudaGraphLaunch(c->exec[(q0 + s) & 1], c->stream));
+  CK(cudaMemcpyAsync(c->h_stats, c->stats, sizeof *c->stats, cudaMemcpyDeviceToHost, c->stream));
+  /* kernels after the block (wall_load's rebuild, the next step) run */
+  CK(cudaMemsetAsync(&c->stats->plan.stop, 0, sizeof c->stats->plan.stop, c->stream));
+  CK(cudaStreamSynchronize(c->stream));
+  const struct dblock *hb = &c->h_stats->blk;
+  /* the roles after the steps taken (the launches after the stop did
+   * nothing) */
+  load_roles(c, &c->roles[(q0 + hb->taken) & 1]);
+  out->stop = hb->why;
+  out->steps = (long)hb->taken;
+  out->t = hb->t;
+  out->dt_next = hb->dt_next;
+  out->dt_last = hb->dt_last;
+  out->n_limited = (long)hb->limited;
+  out->n_excluded = (long)hb->excluded;
+  if (hb->taken > 0) step_out_of(c, &out->last);
+  return WL_OK;
 }
 
 /* backend.h wall_load: the cell lists of the current state (whose sort
@@ -1192,6 +1712,7 @@ static void cuda_describe(void *ctx, char *buf, size_t size) {
            "%.1f MiB on the device, %.0f B/particle)",
            c->dev.name, c->dev.sm_major, c->dev.sm_minor, c->dev.n_sm,
            c->mode == MODE_SPLIT  ? "split (warp-shared candidates, pairs split evenly over the lanes)"
+           : c->mode == MODE_LANES ? "lanes (" WL_STR(WL_GATHER_LANES) " threads per particle)"
            : c->mode == MODE_FAST ? "fast (cut-off skip, one thread per particle)"
                                   : "reference (wl_sph_gather, one thread per particle)",
            c->k.integrator == WL_SPH_VERLET ? "Verlet steps" : "symplectic steps", c->grid.n_cells,
@@ -1280,7 +1801,7 @@ static enum wl_status init_mode(void **ctx, const struct wl_sph_config *cfg,
   c->dim = dim;
   c->n = host->n;
   c->nb = host->n_bound;
-  c->mode = mode < 0 ? default_mode(dim) : mode;
+  c->mode = mode < 0 ? default_mode(dim, host->n) : mode;
   if (!(dim == 3 ? loop_built(c->mode, 3) : loop_built(c->mode, 2))) {
     cuda_free(c);
     return wl_error_set(err, WL_EINPUT, "cuda backend: force loop %d is not in this build for "
@@ -1301,25 +1822,21 @@ static enum wl_status init_mode(void **ctx, const struct wl_sph_config *cfg,
     }
   }
   const int n = c->n, n_keys = 2 * c->grid.n_cells;
-  unsigned int mk = (unsigned int)(n_keys - 1);
-  c->end_bit = 1;
-  while (c->end_bit < 32 && (mk >> c->end_bit)) c->end_bit++;
 
   /* what the run needs, against what the GPU has free */
   {
-    cub::DoubleBuffer<unsigned int> dk(NULL, NULL), dv(NULL, NULL);
-    const cudaError_t e =
-        cub::DeviceRadixSort::SortPairs(NULL, c->sort_tmp_bytes, dk, dv, n, 0, c->end_bit);
+    const cudaError_t e = cub::DeviceScan::ExclusiveSum(NULL, c->sort_tmp_bytes, (int *)NULL,
+                                                        (int *)NULL, n_keys + 1);
     if (e != cudaSuccess) {
       cuda_free(c);
-      return wl_error_set(err, WL_EIO, "cuda backend: radix sort size query failed: %s",
+      return wl_error_set(err, WL_EIO, "cuda backend: scan size query failed: %s",
                           cudaGetErrorString(e));
     }
   }
   const int shifting = k->shift_coef > 0;
   const int verlet = k->integrator == WL_SPH_VERLET;
   const size_t per = bytes_per_particle(dim, shifting, verlet);
-  const size_t need = per * (size_t)n + sizeof(int) * (size_t)(n_keys + 1) + c->sort_tmp_bytes +
+  const size_t need = per * (size_t)n + 2 * sizeof(int) * (size_t)(n_keys + 1) + c->sort_tmp_bytes +
                       sizeof(struct dmeta) + sizeof(struct dstats);
   size_t free_b = 0, total_b = 0;
   {
@@ -1381,14 +1898,16 @@ static enum wl_status init_mode(void **ctx, const struct wl_sph_config *cfg,
   A(c->body, n8, "body");
   A(c->body_alt, n8, "body (sort copy)");
   A(c->begin, sizeof(int) * (size_t)(n_keys + 1), "cell index");
+  A(c->count, sizeof(int) * (size_t)(n_keys + 1), "cell counts");
   A(c->sort_tmp, c->sort_tmp_bytes, "sort scratch");
   A(c->meta, sizeof(struct dmeta), "configuration");
   A(c->stats, sizeof(struct dstats), "step record");
 #undef A
-  {
-    const cudaError_t e = cudaMallocHost((void **)&c->h_stats, sizeof *c->h_stats);
+  for (int q = 0; q < 2; q++) {
+    struct dstats **h = q ? &c->h_up : &c->h_stats;
+    const cudaError_t e = cudaMallocHost((void **)h, sizeof **h);
     if (e != cudaSuccess) {
-      c->h_stats = NULL;
+      *h = NULL;
       cuda_free(c);
       return wl_error_set(err, WL_ENOMEM, "cuda backend: cudaMallocHost of the step record: %s",
                           cudaGetErrorString(e));
@@ -1425,12 +1944,14 @@ static enum wl_status init_mode(void **ctx, const struct wl_sph_config *cfg,
     for (int a = 0; a < dim; a++) C(cudaMemcpy(c->vel_m1[a], c->vel[a], nr, cudaMemcpyDeviceToDevice));
     C(cudaMemcpy(c->rho_m1, c->rho, nr, cudaMemcpyDeviceToDevice));
   }
+  /* the plan at rest: no stop, no moving body in motion */
+  C(cudaMemsetAsync(c->stats, 0, sizeof *c->stats, c->stream));
 #undef C
-  /* forces of the initial state give the first dt (as the CPU backend) */
-  struct bodyvel bv;
-  memset(&bv, 0, sizeof bv);
-  if ((st = rebuild(c, err)) || (st = evaluate(c, c->pos, c->vel, c->rho, NULL, err)) ||
-      (st = finish(c, NULL, &bv, out, err))) {
+  /* forces of the initial state give the first dt (as the CPU backend);
+   * then the steps are captured */
+  if ((st = rebuild(c, err)) || (st = evaluate(c, c->pos, c->vel, c->rho, err)) ||
+      (st = enqueue_update(c, 0, err)) || (st = fetch_record(c, err)) ||
+      (step_out_of(c, out), st = capture_steps(c, err))) {
     cuda_free(c);
     return st;
   }
@@ -1449,6 +1970,7 @@ static enum wl_status cuda_init(void **ctx, const struct wl_sph_config *cfg,
 
 extern "C" const struct wl_backend_ops wl_backend_cuda_ops = {
     "cuda", cuda_init, cuda_step, cuda_download, cuda_describe, cuda_free, cuda_wall_load,
+    cuda_run,
 };
 #else
 /* The tests' build: one backend per force loop, for test_cuda_backend to
@@ -1463,6 +1985,7 @@ extern "C" const struct wl_backend_ops wl_backend_cuda_ops = {
   }                                                                                              \
   extern "C" const struct wl_backend_ops wl_backend_cuda_##loop##_ops = {                        \
       "cuda", init_##loop, cuda_step, cuda_download, cuda_describe, cuda_free, cuda_wall_load,   \
+      cuda_run,                                                                                  \
   };
 TEST_OPS(ref, MODE_REF)
 TEST_OPS(fast, MODE_FAST)

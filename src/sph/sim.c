@@ -17,6 +17,10 @@ struct body_motion {
   void *user;
 };
 
+/* Most steps in one block of the backend (backend.h run): the progress
+ * callback and the host's view of the run come at least this often. */
+#define WL_SPH_BLOCK_STEPS 256
+
 struct wl_sph_sim {
   const struct wl_backend_ops *ops;
   void *ctx;
@@ -98,6 +102,28 @@ static enum wl_status report_fault(const struct wl_sph_sim *sim, const struct wl
                       "unstable at t = %.6g s, step %ld: %s particle %d (id %u) %s%s; %s",
                       sim->t, sim->steps, kind_name(o->fault_kind), o->fault_index, o->fault_id,
                       fault_name(o->fault), detail, where);
+}
+
+/* The time-step collapse (wl_sph_dt_collapsed of sim->dt_next) as
+ * WL_EUNSTABLE, with the last step's maxima. */
+static enum wl_status report_collapse(const struct wl_sph_sim *sim, struct wl_error *err) {
+  const double dt_cfl = sim->dt_next;
+  const struct wl_sph_step_out *o = &sim->last;
+  return wl_error_set(err, WL_EUNSTABLE,
+                      "unstable at t = %.6g s, step %ld: time step collapsed to %.3g s (%.3g of "
+                      "the initial %.3g s; limit %.4g): max |a| = %.4g m/s^2, max |v| = %.4g m/s",
+                      sim->t, sim->steps, dt_cfl, dt_cfl / sim->dt_initial, sim->dt_initial,
+                      sim->k.dt_collapse, o->ace_max, o->vel_max);
+}
+
+/* Too many fluid particles left the box (wl_sph_excluded_too_many) as
+ * WL_EUNSTABLE. */
+static enum wl_status report_excluded(const struct wl_sph_sim *sim, struct wl_error *err) {
+  return wl_error_set(err, WL_EUNSTABLE,
+                      "unstable at t = %.6g s, step %ld: %ld of %ld fluid particles (more than "
+                      "%.1f %%) have left the domain box [%g, %g] x ... m and were taken out of "
+                      "the run", sim->t, sim->steps, sim->n_excluded, sim->n_fluid,
+                      100 * WL_SPH_EXCLUDED_MAX, sim->cfg.lo[0], sim->cfg.hi[0]);
 }
 
 enum wl_status wl_sph_sim_alloc(struct wl_sph_sim **out, const struct wl_backend_ops *ops,
@@ -196,18 +222,11 @@ static double motion_x(const struct body_motion *m, double t) {
 
 enum wl_status wl_sph_sim_step(struct wl_sph_sim *sim, double dt_max, struct wl_error *err) {
   const double dt_cfl = sim->dt_next;
-  if (!(dt_cfl >= sim->k.dt_collapse * sim->dt_initial) || !isfinite(dt_cfl)) {
-    struct wl_sph_step_out o = sim->last;
-    return wl_error_set(err, WL_EUNSTABLE,
-                        "unstable at t = %.6g s, step %ld: time step collapsed to %.3g s (%.3g of "
-                        "the initial %.3g s; limit %.4g): max |a| = %.4g m/s^2, max |v| = %.4g m/s",
-                        sim->t, sim->steps, dt_cfl, dt_cfl / sim->dt_initial, sim->dt_initial,
-                        sim->k.dt_collapse, o.ace_max, o.vel_max);
-  }
+  if (wl_sph_dt_collapsed(&sim->k, dt_cfl, sim->dt_initial)) return report_collapse(sim, err);
   struct wl_sph_step_in in;
   memset(&in, 0, sizeof in);
   in.t = sim->t;
-  in.dt = dt_max > 0 && dt_max < dt_cfl ? dt_max : dt_cfl;
+  in.dt = wl_sph_dt_limit(dt_max, dt_cfl);
   in.dt_prev = sim->dt_last;
   in.step = sim->steps;
   for (int b = 1; b <= WL_SPH_BODIES_MAX; b++)
@@ -234,15 +253,61 @@ enum wl_status wl_sph_sim_step(struct wl_sph_sim *sim, double dt_max, struct wl_
   sim->n_excluded += out.n_excluded;
   sim->dt_next = out.dt_next;
   if (out.fault) return report_fault(sim, &out, err);
-  /* a few splash particles over the walls are DualSPHysics' "excluded"
-   * particles; a large share of the fluid leaving is a failed run */
-  const long n_fluid = sim->n_fluid;
-  if (sim->n_excluded > WL_SPH_EXCLUDED_MAX * (double)n_fluid)
-    return wl_error_set(err, WL_EUNSTABLE,
-                        "unstable at t = %.6g s, step %ld: %ld of %ld fluid particles (more than "
-                        "%.1f %%) have left the domain box [%g, %g] x ... m and were taken out of "
-                        "the run", sim->t, sim->steps, sim->n_excluded, n_fluid,
-                        100 * WL_SPH_EXCLUDED_MAX, sim->cfg.lo[0], sim->cfg.hi[0]);
+  if (wl_sph_excluded_too_many(sim->n_excluded, sim->n_fluid)) return report_excluded(sim, err);
+  return WL_OK;
+}
+
+/* Whether the run's steps may go to the backend in blocks (backend.h run):
+ * the backend has them and no body moves (the motion is sampled here, on
+ * the host, step by step). */
+static int blocks_possible(const struct wl_sph_sim *sim) {
+  if (!sim->ops->run) return 0;
+  for (int b = 1; b <= WL_SPH_BODIES_MAX; b++)
+    if (sim->motion[b].type != WL_SPH_MOTION_NONE) return 0;
+  return 1;
+}
+
+/* Steps toward t_out in one block of the backend (backend.h run), with the
+ * driver's state before and after it and the messages of wl_sph_sim_step;
+ * *landed: the last step landed on t_out. */
+static enum wl_status step_block(struct wl_sph_sim *sim, double t_out, long max_steps,
+                                 int *landed, struct wl_error *err) {
+  *landed = 0;
+  struct wl_sph_block_in in;
+  memset(&in, 0, sizeof in);
+  in.t = sim->t;
+  in.t_out = t_out;
+  in.dt_next = sim->dt_next;
+  in.dt_last = sim->dt_last;
+  in.dt_initial = sim->dt_initial;
+  in.step = sim->steps;
+  in.max_steps = max_steps;
+  in.n_excluded = sim->n_excluded;
+  in.n_fluid = sim->n_fluid;
+  struct wl_sph_block_out out;
+  memset(&out, 0, sizeof out);
+  enum wl_status st = sim->ops->run(sim->ctx, &in, &out, err);
+  if (out.steps > 0) sim->host_valid = 0;
+  if (st != WL_OK) {
+    wl_error_prefix(err, "%s backend, t = %.6g s, step %ld: ", sim->ops->name, sim->t, sim->steps);
+    return st;
+  }
+  if (out.steps > 0) {
+    sim->t = out.t;
+    sim->dt_last = out.dt_last;
+    sim->steps += out.steps;
+    sim->last = out.last;
+    sim->n_limited += out.n_limited;
+    sim->n_excluded += out.n_excluded;
+    sim->dt_next = out.dt_next;
+  }
+  switch (out.stop) {
+  case WL_SPH_BLOCK_FAULT: return report_fault(sim, &out.last, err);
+  case WL_SPH_BLOCK_COLLAPSE: return report_collapse(sim, err);
+  case WL_SPH_BLOCK_EXCLUDED: return report_excluded(sim, err);
+  case WL_SPH_BLOCK_LANDED: *landed = 1; break;
+  default: break;
+  }
   return WL_OK;
 }
 
@@ -266,6 +331,7 @@ enum wl_status wl_sph_sim_run(struct wl_sph_sim *sim, const struct wl_sph_run_op
   enum wl_status st = WL_OK;
   if (o->output) st = o->output(o->user, sim, sim->t, err);
   m = 1;
+  const int blocks = blocks_possible(sim);
   while (st == WL_OK && sim->t < o->t_end) {
     double t_out = o->output_dt > 0 ? t0 + (double)m * o->output_dt : o->t_end;
     if (t_out > o->t_end) t_out = o->t_end;
@@ -276,12 +342,19 @@ enum wl_status wl_sph_sim_run(struct wl_sph_sim *sim, const struct wl_sph_run_op
       m++;
       continue;
     }
-    double dt_max = 0;
-    if (rest <= dt) dt_max = rest;
-    else if (rest < 2 * dt) dt_max = 0.5 * rest;
-    st = wl_sph_sim_step(sim, dt_max, err);
+    int lands;
+    if (blocks) {
+      /* about the steps to t_out, and one more for a split rest: a block
+       * that ends short of it is followed by another */
+      const double est = rest / dt + 2;
+      const long max_steps = est < WL_SPH_BLOCK_STEPS ? (long)est : WL_SPH_BLOCK_STEPS;
+      st = step_block(sim, t_out, max_steps, &lands, err);
+    } else {
+      const double dt_max = wl_sph_dt_toward(rest, dt, &lands);
+      st = wl_sph_sim_step(sim, dt_max, err);
+    }
     if (st != WL_OK) break;
-    if (rest <= dt) {
+    if (lands) {
       sim->t = t_out; /* exact, against rounding of t + dt */
       if (o->output) st = o->output(o->user, sim, sim->t, err);
       m++;

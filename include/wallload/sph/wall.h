@@ -86,12 +86,38 @@ WL_HD static WL_INLINE void wl_sph_wall_range(const int dim, const struct wl_sph
   }
 }
 
+/* g - a_w [m/s^2] of a wall particle with acceleration acc_w (NULL: a
+ * fixed wall), in the (x, y, z) slots wl_sph_wall_range reads (2D: x, z). */
+WL_HD static WL_INLINE void wl_sph_wall_ga(const int dim, const struct wl_sph_const *k,
+                                           const double *acc_w, wl_real *ga) {
+  const int az = dim - 1;
+  ga[0] = ga[1] = ga[2] = 0;
+  for (int a = 0; a < dim; a++)
+    ga[a == az ? 2 : a] = k->gravity[a] - (acc_w ? (wl_real)acc_w[a] : WL_R(0.0));
+}
+
+/* The end of wall particle i's sample from its sums s: its pressure
+ * press_out[i] and density rho_out[i]; its ace, ar and visc set to 0. */
+WL_HD static WL_INLINE void wl_sph_wall_store(const int dim, const struct wl_sph_const *k,
+                                              const struct wl_sph_eval *e,
+                                              const struct wl_sph_wall_acc *s, int i,
+                                              wl_real *rho_out, wl_real *press_out) {
+  wl_real p = s->sw > WL_R(0.0) ? s->spw / s->sw : WL_R(0.0);
+  p = p > WL_R(0.0) ? p : WL_R(0.0);
+  press_out[i] = p;
+  rho_out[i] = wl_sph_eos_rho_of_p_fast(k, p);
+  for (int a = 0; a < dim; a++) e->ace[a][i] = 0;
+  e->ar[i] = 0;
+  e->visc[i] = 0;
+}
+
 /* The wall condition for boundary particle i (sorted index, < n_bound):
  * samples the fluid around it and writes its density rho_out[i] and
  * pressure press_out[i]; its ace, ar and visc are set to 0 (it does not
  * integrate density, and the fluid's own pair with it carries the time-step
  * input). acc_w: the particle's acceleration [m/s^2] (a moving body's; NULL
- * for a fixed wall). dim: compile-time constant. */
+ * for a fixed wall). dim: compile-time constant. (cuda.cu's 2D loop splits
+ * each row among several threads and adds their sums.) */
 WL_HD static WL_INLINE void wl_sph_wall_sample(const int dim, const struct wl_sph_const *k,
                                                const struct wl_sph_grid *g,
                                                const struct wl_sph_eval *e, const double *acc_w,
@@ -105,9 +131,8 @@ WL_HD static WL_INLINE void wl_sph_wall_sample(const int dim, const struct wl_sp
   xi[0] = e->pos[0][i];
   xi[1] = dim == 3 ? e->pos[1][i] : 0.0;
   xi[2] = e->pos[az][i];
-  wl_real ga[3] = {0, 0, 0};
-  for (int a = 0; a < dim; a++)
-    ga[a == az ? 2 : a] = k->gravity[a] - (acc_w ? (wl_real)acc_w[a] : WL_R(0.0));
+  wl_real ga[3];
+  wl_sph_wall_ga(dim, k, acc_w, ga);
   struct wl_sph_wall_acc s = {0, 0};
   for (int r = 0; r < nr; r++) wl_sph_wall_range(dim, k, e, xi, ga, bf[first[r]], bf[last[r] + 1], 0, &s);
   if (dim == 3 && k->mirror) {
@@ -118,13 +143,7 @@ WL_HD static WL_INLINE void wl_sph_wall_sample(const int dim, const struct wl_sp
         wl_sph_wall_range(dim, k, e, xi, ga, bf[mfirst[side][r]], bf[mlast[side][r] + 1],
                           side + 1, &s);
   }
-  wl_real p = s.sw > WL_R(0.0) ? s.spw / s.sw : WL_R(0.0);
-  p = p > WL_R(0.0) ? p : WL_R(0.0);
-  press_out[i] = p;
-  rho_out[i] = wl_sph_eos_rho_of_p_fast(k, p);
-  for (int a = 0; a < dim; a++) e->ace[a][i] = 0;
-  e->ar[i] = 0;
-  e->visc[i] = 0;
+  wl_sph_wall_store(dim, k, e, &s, i, rho_out, press_out);
 }
 
 #endif

@@ -1,0 +1,129 @@
+#!/usr/bin/env bash
+# gpu_step.sh: the CUDA backend's per-step overhead (issue 21) on the device
+# machine, two builds side by side in one call: microseconds per step of
+# seawall.yaml's solitary case alone at its finest default dp (0.012 m;
+# with the default outputs every 0.01 s and with outputs every 0.5 s, so
+# that the steps alone show), the whole `wallload assess
+# scenarios/seawall.yaml --backend cuda`, whether the two builds' results
+# are the same bits, and the GPU tests of the second build.
+#
+#   bench/gpu_step.sh pack BASE_BUILD NEW_BUILD DIR   here: the two builds'
+#       wallload, test_cuda_backend and h5_series_equal into DIR/base and
+#       DIR/new, the shared libraries the device machine lacks (ldd) into
+#       DIR/lib, fonts for the report (as bench/assess_e2e.sh pack)
+#   bench/gpu_step.sh run DIR [ROUNDS]   there (DIR carried): ROUNDS (1)
+#       alternations of the timings; then the tests; $OUT/gpu_step.log and
+#       $OUT/gpu_step.tgz (summaries). GPU_STEP_ALSO=NAME: a third build
+#       DIR/NAME (packed by hand: its wallload) runs the solitary case too,
+#       compared bit for bit with the new build's.
+set -u
+here=$(cd "$(dirname "$0")/.." && pwd)
+case ${1:-} in
+pack)
+  set -e
+  base=$2 new=$3 D=$4
+  rm -rf "$D/base" "$D/new" "$D/lib" "$D/fonts"
+  mkdir -p "$D/base" "$D/new" "$D/lib" "$D/fonts"
+  for b in base new; do
+    src=$base; [ $b = new ] && src=$new
+    cp "$src/wallload" "$src/tests/test_cuda_backend" "$src/tests/h5_series_equal" "$D/$b/"
+    strip "$D/$b/"*
+  done
+  for f in "$D"/base/* "$D"/new/*; do ldd "$f"; done | awk '$3 ~ /^\// {print $3}' | sort -u |
+    grep -v -E '/(libc|libm|libdl|libpthread|librt|libresolv|ld-linux-x86-64)\.so' |
+    xargs -I{} cp -L {} "$D/lib/"
+  cp /usr/share/fonts/truetype/dejavu/DejaVuSans{,-Bold,Mono}.ttf "$D/fonts/"
+  cat >"$D/fonts.conf" <<'XML'
+<?xml version="1.0"?>
+<!DOCTYPE fontconfig SYSTEM "fonts.dtd">
+<fontconfig>
+  <dir prefix="relative">fonts</dir>
+  <cachedir>/tmp/wl-fontcache</cachedir>
+</fontconfig>
+XML
+  du -sh "$D"
+  ;;
+run)
+  D=$(cd "$2" && pwd) rounds=${3:-1}
+  out=${OUT:-/tmp}
+  R=/tmp/gpu_step
+  rm -rf $R && mkdir -p $R
+  export LD_LIBRARY_PATH=$D/lib FONTCONFIG_FILE=$D/fonts.conf
+  # the solitary case alone at the ladder's finest dp
+  sed -e '/^  explosion:$/,/^    at: 12 m$/d' -e 's/^  dp: auto$/  dp: 0.012 m/' \
+    -e '/^  particles_per_height:/d' -e '/^  convergence:/d' "$here/scenarios/seawall.yaml" >$R/sol.yaml
+  sed 's/^run:$/run:\n  output_interval: 0.5 s/' $R/sol.yaml >$R/sol_few.yaml
+  one() { # build name scenario
+    local a b rc
+    a=$(date +%s.%N)
+    timeout 150 "$D/$1/wallload" assess "$3" --backend cuda --quiet --force -o $R/$1_$2 >$R/$1_$2.log 2>&1
+    rc=$?
+    b=$(date +%s.%N)
+    python3 - "$1" "$2" "$rc" "$(awk "BEGIN{print $b - $a}")" "$R/$1_$2/summary.json" <<'PY'
+import json, sys
+b, n, rc, wall, f = sys.argv[1:6]
+line = "%-4s %-9s rc=%s wall %6.2f s" % (b, n, rc, float(wall))
+try:
+    for name, c in json.load(open(f))["cases"].items():
+        steps = c["steps"]["value"]; rt = c["runtime"]["value"]
+        line += " | %s %d steps %.2f s %.1f us/step" % (name, steps, rt, 1e6 * rt / steps)
+except Exception as e:
+    line += " | (%s)" % e
+print(line)
+PY
+  }
+  {
+    echo "# $(date -u +%FT%TZ) $(nvidia-smi --query-gpu=name,memory.total,driver_version --format=csv,noheader 2>&1)"
+    echo "# host: $(lscpu | grep 'Model name' | sed 's/  */ /g'), $(nproc) cores"
+    for r in $(seq "$rounds"); do
+      for b in base new; do
+        one $b sol$r $R/sol.yaml
+        one $b few$r $R/sol_few.yaml
+        one $b sea$r "$here/scenarios/seawall.yaml"
+      done
+    done
+    if [ -n "${GPU_STEP_ALSO:-}" ]; then
+      one "$GPU_STEP_ALSO" sol1 $R/sol.yaml
+      "$D/new/h5_series_equal" $R/${GPU_STEP_ALSO}_sol1/results.h5 $R/new_sol1/results.h5 \
+        /cases/solitary/time /cases/solitary/wall/force /cases/solitary/wall/pressure \
+        /cases/solitary/gauges/G1/eta 2>&1 | sed "s/^/$GPU_STEP_ALSO vs new, sol1: /"
+    fi
+    echo "== base vs new, bit for bit"
+    for n in sol1 few1 sea1; do
+      for load in solitary explosion; do
+        [ -f $R/base_$n/results.h5 ] || continue
+        "$D/new/h5_series_equal" $R/base_$n/results.h5 $R/new_$n/results.h5 \
+          /cases/$load/time /cases/$load/wall/force /cases/$load/wall/force_boundary \
+          /cases/$load/wall/pressure /cases/$load/wall/moment /cases/$load/gauges/G1/eta \
+          2>&1 | sed "s/^/$n $load: /" | grep -v 'cannot be read' | head -8
+      done
+      python3 - $R/base_$n/summary.json $R/new_$n/summary.json "$n" <<'PY'
+import json, sys
+def leaves(x, p=""):
+    if isinstance(x, dict):
+        for k, v in x.items(): yield from leaves(v, p + "/" + k)
+    elif isinstance(x, list):
+        for i, v in enumerate(x): yield from leaves(v, p + "/%d" % i)
+    elif isinstance(x, (int, float)) and not isinstance(x, bool):
+        yield p, x
+a = dict(leaves(json.load(open(sys.argv[1])))); b = dict(leaves(json.load(open(sys.argv[2]))))
+skip = ("runtime", "rate", "wall_s", "seconds")
+diff = [(k, a[k], b.get(k)) for k in a if not any(s in k for s in skip) and a[k] != b.get(k)]
+print("%s summary.json: %d numbers, %d differ" % (sys.argv[3], len(a), len(diff)))
+for k, x, y in diff[:15]: print("   %s: %r vs %r" % (k, x, y))
+PY
+    done
+    echo "== tests (new build)"
+    (cd $R && timeout 300 "$D/new/test_cuda_backend" >$R/test_cuda_backend.log 2>&1; echo "test_cuda_backend rc=$?")
+    grep -E '^(FAIL|#.*blocks)' $R/test_cuda_backend.log | head -30
+    echo "PASS: $(grep -c '^PASS' $R/test_cuda_backend.log) FAIL: $(grep -c '^FAIL' $R/test_cuda_backend.log)"
+    timeout 300 bash "$here/tests/cli_gpu_assess.sh" "$D/new/wallload" >$R/cli_gpu_assess.log 2>&1
+    echo "cli_gpu_assess.sh rc=$?"; grep -E '^(FAIL|SKIP)' $R/cli_gpu_assess.log | head
+    (cd $R && WL_H5_SERIES_EQUAL=$D/new/h5_series_equal timeout 300 bash "$here/tests/cli_sweep_run.sh" \
+      "$D/new/wallload" "$here" cuda >$R/cli_sweep_run.log 2>&1; echo "cli_sweep_run.sh cuda rc=$?")
+    grep -E '^(FAIL|SKIP)' $R/cli_sweep_run.log | head
+  } 2>&1 | tee "$out/gpu_step.log"
+  (cd $R && tar czf "$out/gpu_step.tgz" */summary.json *.log 2>/dev/null)
+  ;;
+*) echo "usage: bench/gpu_step.sh pack BASE_BUILD NEW_BUILD DIR | run DIR [ROUNDS]" >&2; exit 2 ;;
+esac
