@@ -364,6 +364,31 @@ static enum wl_status write_series(struct wl_store *h5, const char *group,
   return wl_store_write_vector(h5, p, data, n, s->unit, s->description, err);
 }
 
+/* A load case's group under /plan: its keys and its initial free surface. */
+struct load_plan {
+  const char *group;
+  const struct key *keys;
+  size_t n_keys;
+};
+static const struct load_plan SOLITARY_PLAN = {"plan/solitary", SOLITARY_KEYS,
+                                               N_OF(SOLITARY_KEYS)};
+static const struct load_plan EXPLOSION_PLAN = {"plan/explosion", EXPLOSION_KEYS,
+                                                N_OF(EXPLOSION_KEYS)};
+static const struct series SURFACE_X = {"surface_x", "m", "initial free surface: x", 0};
+static const struct series SURFACE_Z = {
+    "surface_z", "m", "initial free surface above the flume floor (NaN: below the bed)", 0};
+
+static enum wl_status write_load_plan(struct wl_store *h5, const struct load_plan *lp,
+                                      const void *base, const double *x, const double *z,
+                                      size_t n, struct wl_error *err) {
+  enum wl_status st = write_keys(h5, lp->group, lp->keys, lp->n_keys, base, err);
+  if (!st && n)
+    st = write_series(h5, lp->group, &SURFACE_X, x, n, err);
+  if (!st && n)
+    st = write_series(h5, lp->group, &SURFACE_Z, z, n, err);
+  return st;
+}
+
 enum wl_status wl_store_results_write_run(struct wl_store *h5, const struct wl_results *r,
                                           struct wl_error *err) {
   /* scenario_text third, as results.h5 always held it */
@@ -404,28 +429,11 @@ enum wl_status wl_store_results_write_run(struct wl_store *h5, const struct wl_r
   }
   const struct wl_results_solitary *ps = &pl->solitary;
   if (!st && ps->present)
-    st = write_keys(h5, "plan/solitary", SOLITARY_KEYS, N_OF(SOLITARY_KEYS), ps, err);
-  if (!st && ps->present && ps->n_surface) {
-    st = wl_store_write_vector(h5, "plan/solitary/surface_x", ps->surface_x, ps->n_surface, "m",
-                               "initial free surface: x", err);
-    if (!st)
-      st = wl_store_write_vector(h5, "plan/solitary/surface_z", ps->surface_z, ps->n_surface,
-                                 "m",
-                                 "initial free surface above the flume floor (NaN: below the bed)",
-                                 err);
-  }
+    st = write_load_plan(h5, &SOLITARY_PLAN, ps, ps->surface_x, ps->surface_z, ps->n_surface, err);
   const struct wl_results_explosion *px = &pl->explosion;
   if (!st && px->present)
-    st = write_keys(h5, "plan/explosion", EXPLOSION_KEYS, N_OF(EXPLOSION_KEYS), px, err);
-  if (!st && px->present && px->n_surface) {
-    st = wl_store_write_vector(h5, "plan/explosion/surface_x", px->surface_x, px->n_surface,
-                               "m", "initial free surface: x", err);
-    if (!st)
-      st = wl_store_write_vector(h5, "plan/explosion/surface_z", px->surface_z, px->n_surface,
-                                 "m",
-                                 "initial free surface above the flume floor (NaN: below the bed)",
-                                 err);
-  }
+    st = write_load_plan(h5, &EXPLOSION_PLAN, px, px->surface_x, px->surface_z, px->n_surface,
+                         err);
   return st;
 }
 
@@ -895,6 +903,30 @@ static void read_settings(hid_t file, struct wl_results *r) {
   H5Oclose(grp);
 }
 
+/* A load case's group under /plan, when stored (*present 1 then). */
+static enum wl_status read_load_plan(hid_t file, const char *file_name, const struct load_plan *lp,
+                                     void *base, int *present, double *x, double *z, size_t *n,
+                                     struct wl_error *err) {
+  hid_t grp;
+  enum wl_status st = open_group(file, file_name, lp->group, &grp, err);
+  if (st || grp < 0)
+    return st;
+  *present = 1;
+  st = read_keys(grp, file_name, lp->group, lp->keys, lp->n_keys, base, err);
+  H5Oclose(grp);
+  char p[160];
+  size_t nz = 0;
+  snprintf(p, sizeof p, "%s/%s", lp->group, SURFACE_X.name);
+  if (!st)
+    st = read_fixed(file, file_name, p, x, WL_RESULTS_SURFACE_POINTS, n, err);
+  snprintf(p, sizeof p, "%s/%s", lp->group, SURFACE_Z.name);
+  if (!st)
+    st = read_fixed(file, file_name, p, z, WL_RESULTS_SURFACE_POINTS, &nz, err);
+  if (!st && nz != *n)
+    *n = 0; /* a damaged drawing is not drawn */
+  return st;
+}
+
 /* /plan and its load cases, when stored. */
 static enum wl_status read_plan(hid_t file, const char *file_name, struct wl_results_plan *pl,
                                 struct wl_error *err) {
@@ -933,37 +965,12 @@ static enum wl_status read_plan(hid_t file, const char *file_name, struct wl_res
   }
   struct wl_results_solitary *ps = &pl->solitary;
   if (!st)
-    st = open_group(file, file_name, "plan/solitary", &grp, err);
-  if (!st && grp >= 0) {
-    ps->present = 1;
-    st = read_keys(grp, file_name, "plan/solitary", SOLITARY_KEYS, N_OF(SOLITARY_KEYS), ps, err);
-    H5Oclose(grp);
-    if (!st)
-      st = read_fixed(file, file_name, "plan/solitary/surface_x", ps->surface_x,
-                      WL_RESULTS_SURFACE_POINTS, &ps->n_surface, err);
-    if (!st)
-      st = read_fixed(file, file_name, "plan/solitary/surface_z", ps->surface_z,
-                      WL_RESULTS_SURFACE_POINTS, &nz, err);
-    if (!st && nz != ps->n_surface)
-      ps->n_surface = 0; /* a damaged drawing is not drawn */
-  }
+    st = read_load_plan(file, file_name, &SOLITARY_PLAN, ps, &ps->present, ps->surface_x,
+                        ps->surface_z, &ps->n_surface, err);
   struct wl_results_explosion *px = &pl->explosion;
   if (!st)
-    st = open_group(file, file_name, "plan/explosion", &grp, err);
-  if (!st && grp >= 0) {
-    px->present = 1;
-    st = read_keys(grp, file_name, "plan/explosion", EXPLOSION_KEYS, N_OF(EXPLOSION_KEYS), px,
-                   err);
-    H5Oclose(grp);
-    if (!st)
-      st = read_fixed(file, file_name, "plan/explosion/surface_x", px->surface_x,
-                      WL_RESULTS_SURFACE_POINTS, &px->n_surface, err);
-    if (!st)
-      st = read_fixed(file, file_name, "plan/explosion/surface_z", px->surface_z,
-                      WL_RESULTS_SURFACE_POINTS, &nz, err);
-    if (!st && nz != px->n_surface)
-      px->n_surface = 0;
-  }
+    st = read_load_plan(file, file_name, &EXPLOSION_PLAN, px, &px->present, px->surface_x,
+                        px->surface_z, &px->n_surface, err);
   return st;
 }
 
