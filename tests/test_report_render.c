@@ -803,6 +803,18 @@ static void test_errors(void) {
   CHECK_TRUE(wl_report_render(path, NULL, pdf, &err) == WL_EINPUT &&
                  contains(err.msg, "no scenario_name"),
              "foreign HDF5: WL_EINPUT");
+  /* a case without its required status (store's schema): bad input naming file and key */
+  snprintf(path, sizeof path, "%s/nostatus.h5", tmpdir);
+  if (wl_store_open(path, &h5, &err) == WL_OK) {
+    double v = 1;
+    wl_store_attr_text(h5, "/", "scenario_name", "x", &err);
+    wl_store_write_vector(h5, "cases/solitary/time", &v, 1, "s", "x", &err);
+    wl_store_close(h5, 1, &err);
+  }
+  wl_error_clear(&err);
+  CHECK_TRUE(wl_report_render(path, NULL, pdf, &err) == WL_EINPUT && contains(err.msg, path) &&
+                 contains(err.msg, "/cases/solitary") && contains(err.msg, "'status'"),
+             "a case without 'status': WL_EINPUT naming the file, the group and the key");
   CHECK_TRUE(!file_exists(pdf), "no PDF left after failures");
   /* a template with an unknown section type */
   char tpl[500], res[500];
