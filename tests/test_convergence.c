@@ -22,7 +22,7 @@
 #include "wallload/plan.h"
 #include "wallload/scenario.h"
 
-#include "../src/report/results.h"
+#include "wallload/store.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -239,16 +239,16 @@ static void test_storage(void) {
             res.cases[0].dp == cv->lv[2].dp,
         msg);
 
-  /* results.h5 through the report's reader */
+  /* results.h5 through the store's reader (the report's) */
   char h5[700];
   snprintf(h5, sizeof h5, "%s/results.h5", out);
-  struct wl_report_results *rr = malloc(sizeof *rr);
+  struct wl_results *rr = malloc(sizeof *rr);
   wl_error_clear(&err);
-  st = rr ? wl_report_results_load(h5, rr, &err) : WL_ENOMEM;
+  st = rr ? wl_store_results_read(h5, rr, &err) : WL_ENOMEM;
   check(st == WL_OK && rr->conv[0].present && rr->conv[0].n_levels == 3,
         "results.h5 holds /convergence/solitary with 3 levels");
   if (st == WL_OK && cv->n_levels == 3) {
-    const struct wl_report_convergence *rc = &rr->conv[0];
+    const struct wl_results_convergence *rc = &rr->conv[0];
     int same = 1;
     for (int l = 0; l < 3; l++) {
       const struct wl_assess_level *lv = &cv->lv[l];
@@ -282,7 +282,7 @@ static void test_storage(void) {
           "the peak-force estimate recomputed from the stored levels equals the stored one");
   }
   if (rr) {
-    wl_report_results_clear(rr);
+    wl_store_results_clear(rr);
     free(rr);
   }
 

@@ -16,7 +16,7 @@
 
 #include "wallload/report.h"
 
-#include "../src/report/draw.h"
+#include "wallload/draw.h"
 #include "testutil.h"
 
 #include <math.h>

@@ -60,6 +60,7 @@
 #include "wallload/plan.h"
 #include "wallload/scenario.h"
 #include "wallload/sph.h"
+#include "wallload/store.h"
 
 /* Time series recorded at every output time of one case. */
 struct wl_record {
@@ -265,5 +266,19 @@ enum wl_status wl_assess_case(const struct wl_scenario *s, const struct wl_plan 
                               struct wl_error *err);
 
 void wl_assess_case_clear(struct wl_case_result *c);
+
+/* The part of results.h5 that scenario s and its plan decide (store.h):
+ * the scenario's name, file, text (r->scenario_text points at s->text, not
+ * owned), dp, report template, length unit and convergence levels as
+ * written; /settings (the numerical settings as resolved); /plan (depth,
+ * density, gravity, the flume as drawn, the notes, each case's derived
+ * initial conditions and initial free surface). *r is initialised first;
+ * the run's own keys (version, created, backend, threads) are the caller's. */
+void wl_assess_results_plan(const struct wl_scenario *s, const struct wl_plan *plan,
+                            struct wl_results *r);
+
+/* A solitary wave's initial free surface is stored over +-this/K about its
+ * crest (sech^2(6) ~ 2.5e-5 of its height). */
+#define WL_ASSESS_SOLITARY_HALF 6.0
 
 #endif

@@ -169,22 +169,24 @@ const char *wl_report_section_default_title(enum wl_report_section_type type);
 /* Render the design report of an assessment to the PDF `pdf_path` from
  * `results_h5` alone (the results.h5 of `wallload assess`, with the particle
  * snapshots particles_<case>.h5 read from its directory when there) and a
- * template. The stored scenario text is re-parsed and re-planned for the
- * bathymetry and the derived initial conditions; peaks are recomputed from
- * the stored series with the definitions of loads.h (so they equal
- * summary.json's).
+ * template, read through the store's schema (wl_store_results_read): the
+ * bathymetry, the derived initial conditions and the numerical settings
+ * come from the /plan and /settings that assess stored (the scenario is not
+ * re-planned); peaks are derived by the reader from the stored series with
+ * the definitions of loads.h (so they equal summary.json's).
  *
- * template_path: a template file; NULL: the stored scenario's
- * report.template (default "design"), looked up as a file (a path as given,
+ * template_path: a template file; NULL: the stored report_template (the
+ * scenario's report.template, default "design"), looked up as a file (a path as given,
  * beside the scenario file or beside results.h5; a name as NAME.yaml in
  * $WALLLOAD_TEMPLATE_DIR, ./report_templates, report_templates beside or
  * above the executable); "design" falls back to a built-in copy of
  * report_templates/design.yaml.
  *
- * A missing load case, an unstable or short record, missing snapshots or a
- * stored scenario this version cannot re-read are said on the pages, not
- * errors. Returns WL_OK; WL_EUSAGE (a NULL or empty path); WL_EINPUT (a bad
- * template, "file:line:col: key: ..."; a results file that is not one);
+ * A missing load case, an unstable or short record, missing snapshots or
+ * results without /plan (written before it was stored) are said on the
+ * pages, not errors. Returns WL_OK; WL_EUSAGE (a NULL or empty path);
+ * WL_EINPUT (a bad template, "file:line:col: key: ..."; a results file that
+ * is not one, or lacks a key the schema requires: file, group and key);
  * WL_EIO (results or template unreadable, PDF not writable); WL_ENOMEM.
  * The PDF is written as pdf_path.part and renamed when complete; on failure
  * no file is left at pdf_path (an existing one is kept). Nothing prints. */

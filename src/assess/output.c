@@ -1,5 +1,7 @@
-/* output.c: results.h5, summary.json and CSV files of an assessment, each
- * written atomically (store module). Layout documented in README.md. */
+/* output.c: results.h5 (through the store module's schema: the cases, their
+ * ladders, and what the plan derived for the report), summary.json and CSV
+ * files of an assessment, each written atomically. Layout in
+ * docs/outputs.md. */
 #include <math.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -10,8 +12,10 @@
 
 #include "assess_private.h"
 #include "wallload/config.h"
+#include "wallload/explosion.h"
 #include "wallload/store.h"
 #include "wallload/units.h"
+#include "wallload/waves.h"
 
 
 /* A JSON number: non-finite values are written as null. */
@@ -62,54 +66,41 @@ static const char *status_word(enum wl_status st) {
 
 /* ---- convergence ladder ------------------------------------------------------ */
 
-/* The per-level quantities of a ladder: name (HDF5 dataset, JSON key, CSV
- * column stem), unit, description, and where the value is. */
-struct level_field {
-  const char *name, *unit, *desc;
-  size_t offset;
-  int kind; /* 0 double, 1 int, 2 long, 3 status word */
-};
-#define LF(m) offsetof(struct wl_assess_level, m)
-static const struct level_field LEVEL_FIELDS[] = {
-    {"factor", "1", "level's factor of the scenario's dp", LF(factor), 0},
-    {"dp", "m", "particle spacing of the level", LF(dp), 0},
-    {"particles", "1", "fluid and boundary particles", LF(n_particles), 1},
-    {"steps", "1", "time steps", LF(steps), 2},
-    {"runtime", "s", "wall-clock time of the level's run", LF(runtime_s), 0},
-    {"particle_steps_per_second", "1/s", "particles x steps / runtime", LF(rate), 0},
-    {"time_reached", "s", "simulated time reached", LF(t_reached), 0},
-    {"peak_force", "N/m", "peak of the filtered pressure-probe force", LF(peak_force), 0},
-    {"peak_force_boundary", "N/m", "peak of the filtered boundary-particle force",
-     LF(peak_force_bound), 0},
-    {"impulse", "N s/m", "integral of (probe force - static force) dt to the end", LF(impulse), 0},
-    {"impulse_positive_phase", "N s/m",
-     "integral of (probe force - static force) dt over the peak's positive phase",
-     LF(impulse_phase), 0},
-    {"impulse_positive", "N s/m",
-     "integral of max(0, filtered probe force - force at rest) dt: every wave's push",
-     LF(impulse_positive), 0},
-    {"peak_moment", "N m/m", "peak of the filtered overturning moment about the toe",
-     LF(peak_moment), 0},
-    {"max_runup", "m", "highest water level at the wall face above still water", LF(runup), 0},
-    {"estimated_error", "1",
-     "relative error of the level: larger of peak force and positive impulse, against "
-     "the Richardson value (or the finest level); the finest level's is the case's "
-     "uncertainty (loads.h)",
-     LF(error), 0},
-    {"status", "", "complete, unstable, interrupted or failed", LF(status), 3},
-};
-#undef LF
-enum { N_LEVEL_FIELDS = sizeof LEVEL_FIELDS / sizeof LEVEL_FIELDS[0] };
-
-static double level_value(const struct wl_assess_level *lv, const struct level_field *f) {
-  const char *p = (const char *)lv + f->offset;
-  switch (f->kind) {
-  case 1: return (double)*(const int *)(const void *)p;
-  case 2: return (double)*(const long *)(const void *)p;
-  case 3: return (double)*(const enum wl_status *)(const void *)p;
-  default: return *(const double *)(const void *)p;
+/* The ladder as results.h5 holds it (the level columns of store.h, which
+ * summary.json and convergence.csv follow). */
+static void ladder_columns(const struct wl_assess_convergence *cv,
+                           struct wl_results_convergence *out) {
+  wl_store_results_convergence_init(out);
+  out->present = 1;
+  out->n_levels = cv->n_levels;
+  for (int l = 0; l < cv->n_levels; l++) {
+    const struct wl_assess_level *lv = &cv->lv[l];
+    out->factor[l] = lv->factor, out->dp[l] = lv->dp;
+    out->particles[l] = (double)lv->n_particles, out->steps[l] = (double)lv->steps;
+    out->runtime[l] = lv->runtime_s, out->rate[l] = lv->rate;
+    out->time_reached[l] = lv->t_reached;
+    out->peak_force[l] = lv->peak_force, out->peak_force_b[l] = lv->peak_force_bound;
+    out->impulse[l] = lv->impulse, out->impulse_phase[l] = lv->impulse_phase;
+    out->impulse_pos[l] = lv->impulse_positive, out->peak_moment[l] = lv->peak_moment;
+    out->runup[l] = lv->runup, out->error[l] = lv->error;
+    out->status[l] = (int)lv->status;
   }
+  out->levels_planned = cv->n_planned, out->levels_run = cv->n_levels;
+  out->ratio = cv->force.r32;
+  out->force_order = cv->force.order, out->force_order_ok = cv->force.order_ok;
+  out->force_extrapolated = cv->force.extrapolated, out->force_error = cv->force.error;
+  out->pos_order = cv->impulse_pos.order, out->pos_order_ok = cv->impulse_pos.order_ok;
+  out->pos_extrapolated = cv->impulse_pos.extrapolated, out->pos_error = cv->impulse_pos.error;
+  out->error_estimate = cv->error_estimate, out->target = cv->target;
+  out->target_given = cv->target_given, out->target_met = cv->target_met;
+  out->stopped_early = cv->stopped_early;
+  snprintf(out->force_basis, sizeof out->force_basis, "%s", wl_loads_estimate_name(cv->force.basis));
+  snprintf(out->pos_basis, sizeof out->pos_basis, "%s",
+           wl_loads_estimate_name(cv->impulse_pos.basis));
+  snprintf(out->note, sizeof out->note, "%s", cv->note);
 }
+
+static int is_status_column(int k) { return !wl_store_results_levels[k].unit[0]; }
 
 static const char *bool_word(int b) { return b ? "true" : "false"; }
 
@@ -129,27 +120,27 @@ static void json_estimate(struct wl_text *t, const char *key, const struct wl_lo
 }
 
 static void json_convergence(struct wl_text *t, const struct wl_assess_convergence *cv) {
+  struct wl_results_convergence col;
+  ladder_columns(cv, &col);
   wl_text_put(t, "      \"convergence\": {\n        \"units\": {");
-  for (int k = 0; k < N_LEVEL_FIELDS; k++) {
-    if (LEVEL_FIELDS[k].kind == 3) continue;
+  for (int k = 0; k < wl_store_results_n_levels; k++) {
+    if (is_status_column(k)) continue;
     wl_text_put(t, "%s", k ? ", " : " ");
-    jstr(t, LEVEL_FIELDS[k].name);
+    jstr(t, wl_store_results_levels[k].name);
     wl_text_put(t, ": ");
-    jstr(t, LEVEL_FIELDS[k].unit);
+    jstr(t, wl_store_results_levels[k].unit);
   }
   wl_text_put(t, " },\n        \"levels\": [\n");
   for (int l = 0; l < cv->n_levels; l++) {
-    const struct wl_assess_level *lv = &cv->lv[l];
     wl_text_put(t, "          {");
-    for (int k = 0; k < N_LEVEL_FIELDS; k++) {
-      const struct level_field *f = &LEVEL_FIELDS[k];
+    for (int k = 0; k < wl_store_results_n_levels; k++) {
       wl_text_put(t, "%s", k ? ", " : " ");
-      jstr(t, f->name);
+      jstr(t, wl_store_results_levels[k].name);
       wl_text_put(t, ": ");
-      if (f->kind == 3)
-        jstr(t, status_word(lv->status));
+      if (is_status_column(k))
+        jstr(t, status_word((enum wl_status)col.status[l]));
       else
-        jnum(t, level_value(lv, f));
+        jnum(t, wl_store_results_level_value(&col, k, l));
     }
     wl_text_put(t, " }%s\n", l + 1 < cv->n_levels ? "," : "");
   }
@@ -174,70 +165,14 @@ static void json_convergence(struct wl_text *t, const struct wl_assess_convergen
   wl_text_put(t, "\n      }\n");
 }
 
-static enum wl_status write_convergence_h5(struct wl_store *h5, const struct wl_case_result *c,
-                                           const struct wl_assess_convergence *cv,
-                                           struct wl_error *err) {
-  char g[64], p[160];
-  snprintf(g, sizeof g, "convergence/%s", c->name);
-  size_t n = (size_t)cv->n_levels;
-  double col[WL_ASSESS_MAX_LEVELS];
-  enum wl_status st = WL_OK;
-  for (int k = 0; !st && k < N_LEVEL_FIELDS; k++) {
-    const struct level_field *f = &LEVEL_FIELDS[k];
-    snprintf(p, sizeof p, "%s/%s", g, f->name);
-    if (f->kind == 3) {
-      int code[WL_ASSESS_MAX_LEVELS];
-      for (size_t l = 0; l < n; l++) code[l] = (int)cv->lv[l].status;
-      st = wl_store_write_vector_i(h5, p, code, n,
-                                   "run status per level: 0 complete, else the failure code "
-                                   "(enum wl_status: unstable, interrupted, ...)",
-                                   err);
-      continue;
-    }
-    for (size_t l = 0; l < n; l++) col[l] = level_value(&cv->lv[l], f);
-    st = wl_store_write_vector(h5, p, col, n, f->unit, f->desc, err);
-  }
-  struct {
-    const char *name;
-    double v;
-    const char *unit;
-  } attrs[] = {
-      {"levels_planned", cv->n_planned, "1"},
-      {"levels_run", cv->n_levels, "1"},
-      {"ratio", cv->force.r32, "1"},
-      {"peak_force_order", cv->force.order, "1"},
-      {"peak_force_order_meaningful", cv->force.order_ok, "1"},
-      {"peak_force_extrapolated", cv->force.extrapolated, "N/m"},
-      {"peak_force_error_estimate", cv->force.error, "1"},
-      {"impulse_positive_order", cv->impulse_pos.order, "1"},
-      {"impulse_positive_order_meaningful", cv->impulse_pos.order_ok, "1"},
-      {"impulse_positive_extrapolated", cv->impulse_pos.extrapolated, "N s/m"},
-      {"impulse_positive_error_estimate", cv->impulse_pos.error, "1"},
-      {"error_estimate", cv->error_estimate, "1"},
-      {"target", cv->target, "1"},
-      {"target_given", cv->target_given, "1"},
-      {"target_met", cv->target_met, "1"},
-      {"stopped_early", cv->stopped_early, "1"},
-  };
-  for (size_t i = 0; !st && i < sizeof attrs / sizeof attrs[0]; i++)
-    st = wl_store_attr_double(h5, g, attrs[i].name, attrs[i].v, attrs[i].unit, err);
-  if (!st)
-    st = wl_store_attr_text(h5, g, "peak_force_basis", wl_loads_estimate_name(cv->force.basis), err);
-  if (!st)
-    st = wl_store_attr_text(h5, g, "impulse_positive_basis",
-                            wl_loads_estimate_name(cv->impulse_pos.basis), err);
-  if (!st) st = wl_store_attr_text(h5, g, "note", cv->note, err);
-  return st;
-}
-
 /* convergence.csv: one row per case and level. */
 static enum wl_status write_convergence_csv(const struct wl_assess_result *res,
                                             struct wl_store_batch *b, struct wl_error *err) {
   struct wl_text t = {0};
   wl_text_put(&t, "case,level");
-  for (int k = 0; k < N_LEVEL_FIELDS; k++) {
-    const struct level_field *f = &LEVEL_FIELDS[k];
-    if (f->kind == 3 || !strcmp(f->unit, "1")) {
+  for (int k = 0; k < wl_store_results_n_levels; k++) {
+    const struct wl_results_column *f = &wl_store_results_levels[k];
+    if (is_status_column(k) || !strcmp(f->unit, "1")) {
       wl_text_put(&t, ",%s", f->name);
       continue;
     }
@@ -256,15 +191,15 @@ static enum wl_status write_convergence_csv(const struct wl_assess_result *res,
   }
   wl_text_put(&t, "\n");
   for (int i = 0; i < res->n_cases; i++) {
-    const struct wl_assess_convergence *cv = &res->conv[i];
-    for (int l = 0; l < cv->n_levels; l++) {
+    struct wl_results_convergence col;
+    ladder_columns(&res->conv[i], &col);
+    for (int l = 0; l < col.n_levels; l++) {
       wl_text_put(&t, "%s,%d", res->cases[i].name, l + 1);
-      for (int k = 0; k < N_LEVEL_FIELDS; k++) {
-        const struct level_field *f = &LEVEL_FIELDS[k];
-        if (f->kind == 3)
-          wl_text_put(&t, ",%s", status_word(cv->lv[l].status));
+      for (int k = 0; k < wl_store_results_n_levels; k++) {
+        if (is_status_column(k))
+          wl_text_put(&t, ",%s", status_word((enum wl_status)col.status[l]));
         else
-          wl_text_put(&t, ",%.10g", level_value(&cv->lv[l], f));
+          wl_text_put(&t, ",%.10g", wl_store_results_level_value(&col, k, l));
       }
       wl_text_put(&t, "\n");
     }
@@ -469,102 +404,246 @@ static enum wl_status write_csv(const struct wl_assess_result *res, const struct
   return st;
 }
 
-static enum wl_status write_case_h5(struct wl_store *h5, const struct wl_case_result *c,
-                                    struct wl_error *err) {
+/* Case c as results.h5 holds it (store.h); the series stay c's, the
+ * gauges' columns are copied into eta (n x n_gauges, freed by the caller). */
+static enum wl_status case_columns(const struct wl_case_result *c, struct wl_results_case *out,
+                                   double **eta, struct wl_error *err) {
   const struct wl_record *r = &c->rec;
   const struct wl_case_loads *l = &c->loads;
   const struct wl_flume *f = &c->flume;
-  char g[64], p[160];
-  snprintf(g, sizeof g, "cases/%s", c->name);
-  enum wl_status st = WL_OK;
-#define VEC(name, data, unit, desc)                                                           \
-  if (!st) {                                                                                  \
-    snprintf(p, sizeof p, "%s/%s", g, name);                                                  \
-    st = wl_store_write_vector(h5, p, data, r->n, unit, desc, err);                           \
+  wl_store_results_case_init(out);
+  out->present = 1;
+  snprintf(out->name, sizeof out->name, "%s", c->name);
+  snprintf(out->status, sizeof out->status, "%s", status_word(c->status));
+  if (c->status != WL_OK) snprintf(out->stopped, sizeof out->stopped, "%s", c->message);
+  snprintf(out->caution, sizeof out->caution, "%s", c->caution);
+  out->dp = c->dp, out->h = c->h, out->c0 = c->c0;
+  out->particles = c->n_particles, out->fluid_particles = c->n_fluid;
+  out->steps = (double)c->steps, out->runtime = c->runtime_s;
+  out->end_time = c->t_end, out->time_reached = c->t_reached;
+  out->cutoff = l->cutoff, out->peaks_from = c->peak_from;
+  out->static_force = c->static_force, out->static_moment = c->static_moment;
+  out->rest_force = l->rest_force, out->rest_force_b = l->rest_force_bound;
+  out->rest_moment = l->rest_moment, out->rest_from = l->rest_from, out->rest_to = l->rest_to;
+  out->wall_x = f->x_wall, out->wall_toe_z = f->z_toe, out->wall_crest_z = f->z_crest;
+  out->still_water_z = f->depth;
+  if (f->dims == 3) {
+    out->width = (f->symmetry ? 2 : 1) * f->width;
+    snprintf(out->symmetry, sizeof out->symmetry, "%s", f->symmetry ? "centreline" : "none");
+    snprintf(out->side_walls, sizeof out->side_walls, "%s",
+             f->slip_walls ? "free-slip" : "particles");
   }
-  VEC("time", r->t, "s", "output times");
-  VEC("wall/force", r->force, "N/m", "force per metre from the pressure probes (raw)");
-  VEC("wall/force_filtered", l->force_filtered, "N/m", "low-pass filtered force (see cutoff)");
-  VEC("wall/force_boundary", r->force_bound, "N/m",
-      "force per metre summed on the wall's boundary particles (raw)");
-  VEC("wall/force_boundary_filtered", l->force_bound_filtered, "N/m", "low-pass filtered");
-  VEC("wall/impulse", l->impulse, "N s/m", "integral of (probe force - static force) dt");
-  VEC("wall/impulse_boundary", l->impulse_bound, "N s/m",
-      "integral of (boundary force - static force) dt");
-  VEC("wall/moment", r->moment, "N m/m", "overturning moment about the toe (raw)");
-  VEC("wall/moment_boundary", r->moment_bound, "N m/m",
-      "moment about the toe of the boundary-particle force (raw)");
-  VEC("wall/moment_filtered", l->moment_filtered, "N m/m", "low-pass filtered");
-  VEC("energy/kinetic", r->kinetic, "J/m", "fluid kinetic energy");
-  VEC("energy/potential", r->potential, "J/m", "fluid potential energy above the floor");
-  VEC("momentum/x", r->momentum, "N s/m",
-      "fluid horizontal momentum; its change is the impulse given to all boundaries");
-#undef VEC
-  if (!st) {
-    snprintf(p, sizeof p, "%s/wall/pressure", g);
-    st = wl_store_write_matrix(h5, p, r->pressure, r->n, (size_t)r->n_probes, "Pa",
-                               "probe pressure, time x probe", err);
+  out->n = r->n;
+  out->t = r->t;
+  out->force = r->force, out->force_f = l->force_filtered;
+  out->force_b = r->force_bound, out->force_bf = l->force_bound_filtered;
+  out->impulse = l->impulse, out->impulse_b = l->impulse_bound;
+  out->moment = r->moment, out->moment_f = l->moment_filtered, out->moment_b = r->moment_bound;
+  out->kinetic = r->kinetic, out->potential = r->potential, out->momentum = r->momentum;
+  out->n_probes = (size_t)r->n_probes;
+  out->probe_z = (double *)f->probe_z;
+  out->pressure = r->pressure;
+  out->n_gauges = r->n_gauges;
+  *eta = malloc((r->n ? r->n : 1) * (size_t)(r->n_gauges ? r->n_gauges : 1) * sizeof **eta);
+  if (!*eta) return wl_error_set(err, WL_ENOMEM, "results: no memory");
+  for (int gi = 0; gi < r->n_gauges; gi++) {
+    struct wl_results_gauge *g = &out->gauges[gi];
+    snprintf(g->name, sizeof g->name, "%s", f->gauge_name[gi]);
+    g->x = f->gauge_x[gi];
+    g->eta = *eta + (size_t)gi * r->n;
+    for (size_t k = 0; k < r->n; k++) g->eta[k] = r->eta[k * (size_t)r->n_gauges + (size_t)gi];
   }
-  if (!st) {
-    snprintf(p, sizeof p, "%s/wall/probe_z", g);
-    st = wl_store_write_vector(h5, p, f->probe_z, (size_t)f->n_probes, "m",
-                               "probe heights above the flume floor", err);
-  }
-  double *col = malloc((r->n ? r->n : 1) * sizeof *col);
-  if (!col) return wl_error_set(err, WL_ENOMEM, "results: no memory");
-  for (int gi = 0; !st && gi < r->n_gauges; gi++) {
-    for (size_t k = 0; k < r->n; k++) col[k] = r->eta[k * (size_t)r->n_gauges + (size_t)gi];
-    snprintf(p, sizeof p, "%s/gauges/%s/eta", g, f->gauge_name[gi]);
-    st = wl_store_write_vector(h5, p, col, r->n, "m", "free-surface elevation above still water",
-                               err);
-    if (!st) {
-      snprintf(p, sizeof p, "%s/gauges/%s", g, f->gauge_name[gi]);
-      st = wl_store_attr_double(h5, p, "x", f->gauge_x[gi], "m", err);
-    }
-  }
-  free(col);
-  struct {
-    const char *name;
-    double v;
-    const char *unit;
-  } attrs[] = {
-      {"dp", c->dp, "m"},
-      {"smoothing_length", c->h, "m"},
-      {"c0", c->c0, "m/s"},
-      {"particles", c->n_particles, "1"},
-      {"fluid_particles", c->n_fluid, "1"},
-      {"steps", (double)c->steps, "1"},
-      {"runtime", c->runtime_s, "s"},
-      {"end_time", c->t_end, "s"},
-      {"time_reached", c->t_reached, "s"},
-      {"filter_cutoff", l->cutoff, "Hz"},
-      {"peaks_from", c->peak_from, "s"},
-      {"static_force", c->static_force, "N/m"},
-      {"static_moment", c->static_moment, "N m/m"},
-      {"rest_force", l->rest_force, "N/m"},
-      {"rest_force_boundary", l->rest_force_bound, "N/m"},
-      {"rest_moment", l->rest_moment, "N m/m"},
-      {"rest_from", l->rest_from, "s"},
-      {"rest_to", l->rest_to, "s"},
-      {"wall_x", f->x_wall, "m"},
-      {"wall_toe_z", f->z_toe, "m"},
-      {"wall_crest_z", f->z_crest, "m"},
-      {"still_water_z", f->depth, "m"},
-  };
-  for (size_t i = 0; !st && i < sizeof attrs / sizeof attrs[0]; i++)
-    st = wl_store_attr_double(h5, g, attrs[i].name, attrs[i].v, attrs[i].unit, err);
-  /* 3D: the flume width (twice the modelled half with a symmetry plane);
-   * the series stay per metre, per wall = per metre x width */
-  if (!st && f->dims == 3)
-    st = wl_store_attr_double(h5, g, "width", (f->symmetry ? 2 : 1) * f->width, "m", err);
-  if (!st && f->dims == 3)
-    st = wl_store_attr_text(h5, g, "symmetry", f->symmetry ? "centreline" : "none", err);
-  if (!st && f->dims == 3)
-    st = wl_store_attr_text(h5, g, "side_walls", f->slip_walls ? "free-slip" : "particles", err);
-  if (!st) st = wl_store_attr_text(h5, g, "status", status_word(c->status), err);
-  if (!st && c->status != WL_OK) st = wl_store_attr_text(h5, g, "stopped", c->message, err);
-  if (!st && c->caution[0]) st = wl_store_attr_text(h5, g, "caution", c->caution, err);
+  return WL_OK;
+}
+
+static enum wl_status write_case_h5(struct wl_store *h5, const struct wl_case_result *c,
+                                    struct wl_error *err) {
+  struct wl_results_case *out = malloc(sizeof *out);
+  if (!out) return wl_error_set(err, WL_ENOMEM, "results: no memory");
+  double *eta = NULL;
+  enum wl_status st = case_columns(c, out, &eta, err);
+  if (!st) st = wl_store_results_write_case(h5, out, err);
+  free(eta);
+  free(out);
   return st;
+}
+
+static enum wl_status write_convergence_h5(struct wl_store *h5, const struct wl_case_result *c,
+                                           const struct wl_assess_convergence *cv,
+                                           struct wl_error *err) {
+  struct wl_results_convergence col;
+  ladder_columns(cv, &col);
+  return wl_store_results_write_convergence(h5, c->name, &col, err);
+}
+
+/* ---- what assess planned, for results.h5's /plan and /settings --------------------- */
+
+/* The initial free surface of a case between x0 and x1 [m], as the
+ * report draws it: z above the floor, NAN where the bed is above it. */
+struct surface_source {
+  const struct wl_plan *plan;
+  const struct wl_scenario *s;
+  double xc; /* the crest or the crater's centre [m] */
+};
+
+static double surface_eta(const struct surface_source *src, int explosion, double x) {
+  if (!explosion) return wl_waves_solitary_eta(&src->plan->solitary.wave, x - src->xc);
+  const struct wl_plan_explosion *px = &src->plan->explosion;
+  double eta = 0.0;
+  struct wl_error e;
+  wl_error_clear(&e);
+  if (wl_explosion_eta(px->shape, px->eta0, px->r0, fabs(x - src->xc), &eta, &e)) eta = NAN;
+  return eta;
+}
+
+static size_t sample_surface(const struct surface_source *src, int explosion, double a, double b,
+                             double *x, double *z) {
+  if (!(b > a)) return 0;
+  const int n = WL_RESULTS_SURFACE_POINTS;
+  for (int i = 0; i < n; i++) {
+    x[i] = a + (b - a) * i / (n - 1);
+    z[i] = src->plan->h + surface_eta(src, explosion, x[i]);
+    if (z[i] <= wl_scenario_bed_z(src->s, x[i])) z[i] = NAN;
+  }
+  return (size_t)n;
+}
+
+/* The crater's scenario source, in words. */
+static const char *explosion_source_text(enum wl_explosion_source source) {
+  static const char *const from[] = {"charge weight", "crater energy",
+                                     "energy of the solitary wave", "crater size"};
+  return (int)source >= 0 && source <= WL_SOURCE_CRATER ? from[source] : "?";
+}
+
+static void plan_solitary(const struct wl_scenario *s, const struct wl_plan *plan,
+                          struct wl_results_solitary *out) {
+  const struct wl_plan_solitary *ps = &plan->solitary;
+  out->present = 1;
+  snprintf(out->theory, sizeof out->theory, "%s", wl_waves_solitary_theory_text(ps->wave.theory, 0));
+  out->H = ps->wave.H;
+  out->K = ps->wave.K;
+  out->celerity = wl_waves_solitary_celerity(&ps->wave);
+  out->energy_integrated = ps->integrated.energy;
+  out->energy_first_order = ps->first_order.energy;
+  out->energy_seed001 = ps->energy_seed001;
+  out->paddle = ps->paddle;
+  if (ps->paddle)
+    out->paddle_stroke = ps->goring.stroke, out->paddle_duration = ps->goring.duration;
+  else
+    out->crest_x0 = ps->crest_x0;
+  out->arrival_time = ps->arrival_time;
+  out->x_left = ps->x_left;
+  if (!ps->paddle && ps->wave.K > 0) {
+    /* the wave over +-WL_ASSESS_SOLITARY_HALF/K about its crest, in the flume */
+    const struct surface_source src = {plan, s, ps->crest_x0};
+    const double half = WL_ASSESS_SOLITARY_HALF / ps->wave.K;
+    out->n_surface = sample_surface(&src, 0, fmax(0.0, ps->crest_x0 - half),
+                                    fmin(s->wall.x.q.si, ps->crest_x0 + half), out->surface_x,
+                                    out->surface_z);
+  }
+}
+
+static void plan_explosion(const struct wl_scenario *s, const struct wl_plan *plan,
+                           struct wl_results_explosion *out) {
+  const struct wl_plan_explosion *px = &plan->explosion;
+  const struct wl_explosion_chain *ch = &px->chain;
+  out->present = 1;
+  snprintf(out->source, sizeof out->source, "%s", explosion_source_text(px->source));
+  out->sized_to_solitary = px->source == WL_SOURCE_SOLITARY;
+  if (out->sized_to_solitary) {
+    snprintf(out->basis, sizeof out->basis, "%s",
+             px->basis == WL_BASIS_SEED001 ? "seed-001" : "per-width");
+    out->matched_energy = px->matched_energy;
+  }
+  out->charge = ch->charge_kg;
+  out->chain_r0 = ch->r0, out->chain_eta0 = ch->eta0, out->hr = ch->hr;
+  out->whalin_coef = ch->whalin_coef;
+  out->crater_energy = ch->crater_energy, out->chemical_energy = ch->chemical_energy;
+  out->chain_wave_fraction = ch->wave_fraction, out->wave_fraction = px->wave_fraction;
+  snprintf(out->shape, sizeof out->shape, "%s", wl_explosion_shape_name(px->shape));
+  out->eta0 = px->eta0, out->r0 = px->r0, out->x_center = px->x_center, out->extent = px->extent;
+  out->energy = px->energy, out->energy_quad = px->energy_quad;
+  out->net_volume = px->net_volume;
+  out->conserves_mass = px->conserves_mass;
+  out->arrival_time = px->arrival_time;
+  out->x_left = px->x_left;
+  if (px->r0 > 0) {
+    const struct surface_source src = {plan, s, px->x_center};
+    out->n_surface = sample_surface(&src, 1, fmax(0.0, px->x_center - px->extent),
+                                    fmin(s->wall.x.q.si, px->x_center + px->extent),
+                                    out->surface_x, out->surface_z);
+  }
+}
+
+void wl_assess_results_plan(const struct wl_scenario *s, const struct wl_plan *plan,
+                            struct wl_results *r) {
+  wl_store_results_init(r);
+  snprintf(r->scenario_name, sizeof r->scenario_name, "%s", s->name.text);
+  snprintf(r->scenario_file, sizeof r->scenario_file, "%s", s->path);
+  r->scenario_text = s->text;
+  r->dp = plan->dp;
+  snprintf(r->report_template, sizeof r->report_template, "%s", s->report.template_name.text);
+  snprintf(r->length_unit, sizeof r->length_unit, "%s", s->water.depth.q.unit);
+  if (s->resolution.levels_given) {
+    size_t used = (size_t)snprintf(r->convergence_asked, sizeof r->convergence_asked, "[");
+    for (int i = 0; i < s->resolution.n_levels && used < sizeof r->convergence_asked; i++)
+      used += (size_t)snprintf(r->convergence_asked + used, sizeof r->convergence_asked - used,
+                               "%s%s", i ? ", " : "", s->resolution.levels[i].text);
+    if (used < sizeof r->convergence_asked)
+      snprintf(r->convergence_asked + used, sizeof r->convergence_asked - used, "]");
+  }
+  const struct {
+    const char *key;
+    const struct wl_scenario_value *v;
+  } settings[] = {
+      {"numerics.coefh", &s->numerics.coefh},
+      {"numerics.coefsound", &s->numerics.coefsound},
+      {"numerics.cfl", &s->numerics.cfl},
+      {"numerics.alpha", &s->numerics.alpha},
+      {"numerics.viscosity", &s->numerics.viscosity},
+      {"numerics.nu", &s->numerics.nu},
+      {"numerics.density_diffusion", &s->numerics.density_diffusion},
+      {"numerics.shifting", &s->numerics.shifting},
+      {"numerics.integrator", &s->numerics.integrator},
+      {"numerics.verlet_steps", &s->numerics.verlet_steps},
+      {"numerics.boundary", &s->numerics.boundary},
+      {"run.output_interval", &s->run.output_interval},
+      {"run.end_time", &s->run.end_time},
+  };
+  for (size_t i = 0; i < sizeof settings / sizeof settings[0]; i++) {
+    struct wl_results_setting *o = &r->settings[r->n_settings++];
+    snprintf(o->key, sizeof o->key, "%s", settings[i].key);
+    snprintf(o->value, sizeof o->value, "%s", settings[i].v->text);
+    o->given = settings[i].v->given;
+  }
+
+  struct wl_results_plan *pl = &r->plan;
+  const double xw = s->wall.x.q.si;
+  pl->present = 1;
+  pl->dims = plan->dims;
+  pl->depth = plan->h, pl->rho = plan->rho, pl->g = plan->g;
+  pl->wall_x = xw;
+  pl->wall_toe_z = wl_scenario_bed_z(s, xw);
+  pl->wall_crest_z = pl->wall_toe_z + s->wall.height.q.si;
+  pl->land_length = plan->land_length > 0 ? plan->land_length : s->domain.length.q.si - xw;
+  /* the bed's corners: the flume's start, each segment's start before the
+   * wall, the wall's toe */
+  pl->bed_x[pl->n_bed] = 0.0, pl->bed_z[pl->n_bed++] = wl_scenario_bed_z(s, 0.0);
+  for (int i = 0; i < s->n_bed && pl->n_bed + 1 < WL_RESULTS_MAX_BED; i++) {
+    const double xb = s->bed[i].from.q.si;
+    if (xb > 0.0 && xb < xw) pl->bed_x[pl->n_bed] = xb, pl->bed_z[pl->n_bed++] = wl_scenario_bed_z(s, xb);
+  }
+  pl->bed_x[pl->n_bed] = xw, pl->bed_z[pl->n_bed++] = pl->wall_toe_z;
+  for (int i = 0; i < s->n_gauges && i < WL_RESULTS_MAX_GAUGES; i++) {
+    snprintf(pl->gauge_name[i], sizeof pl->gauge_name[i], "%s", s->gauges[i].name.text);
+    pl->gauge_x[pl->n_gauges++] = s->gauges[i].x.q.si;
+  }
+  size_t used = 0;
+  for (int i = 0; i < plan->n_notes && used < sizeof pl->notes; i++)
+    used += (size_t)snprintf(pl->notes + used, sizeof pl->notes - used, "%s%s", i ? "\n" : "",
+                             plan->notes[i]);
+  if (plan->solitary.present) plan_solitary(s, plan, &pl->solitary);
+  if (plan->explosion.present) plan_explosion(s, plan, &pl->explosion);
 }
 
 /* After new results moved into place: remove the result files of the
@@ -612,17 +691,18 @@ enum wl_status write_results(const struct wl_scenario *s, const struct wl_plan *
   struct wl_store *h5;
   enum wl_status st = wl_store_open(path, &h5, err);
   if (st) return st;
-  char when[64];
-  time_t now = time(NULL);
-  strftime(when, sizeof when, "%Y-%m-%dT%H:%M:%SZ", gmtime(&now));
-  if (!st) st = wl_store_attr_text(h5, "/", "scenario_name", s->name.text, err);
-  if (!st) st = wl_store_attr_text(h5, "/", "scenario_file", s->path, err);
-  if (!st) st = wl_store_attr_text(h5, "/", "scenario_text", s->text ? s->text : "", err);
-  if (!st) st = wl_store_attr_text(h5, "/", "wallload_version", WL_VERSION, err);
-  if (!st) st = wl_store_attr_text(h5, "/", "created", when, err);
-  if (!st) st = wl_store_attr_text(h5, "/", "backend", res->backend, err);
-  if (!st) st = wl_store_attr_double(h5, "/", "threads", res->threads, "1", err);
-  if (!st) st = wl_store_attr_double(h5, "/", "dp", plan->dp, "m", err);
+  struct wl_results *run = malloc(sizeof *run);
+  if (!run) st = wl_error_set(err, WL_ENOMEM, "results: no memory");
+  if (!st) {
+    wl_assess_results_plan(s, plan, run);
+    time_t now = time(NULL);
+    strftime(run->created, sizeof run->created, "%Y-%m-%dT%H:%M:%SZ", gmtime(&now));
+    snprintf(run->version, sizeof run->version, "%s", WL_VERSION);
+    snprintf(run->backend, sizeof run->backend, "%s", res->backend);
+    run->threads = res->threads;
+    st = wl_store_results_write_run(h5, run, err);
+  }
+  free(run);
   for (int i = 0; !st && i < res->n_cases; i++) st = write_case_h5(h5, &res->cases[i], err);
   for (int i = 0; !st && i < res->n_cases; i++)
     if (res->conv[i].n_levels) st = write_convergence_h5(h5, &res->cases[i], &res->conv[i], err);

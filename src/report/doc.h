@@ -12,7 +12,7 @@
 #include <cairo.h>
 #include <math.h>
 
-#include "draw.h"
+#include "wallload/draw.h"
 
 #if defined(WL_REPORT_NO_PANGO)
 #define WL_HAVE_PANGO 0

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "draw.h"
+#include "wallload/draw.h"
 
 #define REL_EPS 1e-9 /* relative slack when a value sits on a tick multiple */
 

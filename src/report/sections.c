@@ -56,7 +56,7 @@ const char *wl_report_fmt(double v, int sig, char *buf, size_t size) {
 }
 
 const char *wl_report_case_label(int i) {
-  return i == WL_REPORT_CASE_SOLITARY ? "solitary wave" : "explosion wave";
+  return i == WL_RESULTS_CASE_SOLITARY ? "solitary wave" : "explosion wave";
 }
 
 enum wl_status wl_report_section_begin(struct wl_report_ctx *c, const struct wl_report_section *s,
@@ -83,11 +83,11 @@ enum wl_status wl_report_paragraphf(struct wl_report_doc *d, struct wl_error *er
 
 int wl_report_governs(double a, double b) {
   if (isfinite(a) && isfinite(b))
-    return a >= b ? WL_REPORT_CASE_SOLITARY : WL_REPORT_CASE_EXPLOSION;
+    return a >= b ? WL_RESULTS_CASE_SOLITARY : WL_RESULTS_CASE_EXPLOSION;
   if (isfinite(a))
-    return WL_REPORT_CASE_SOLITARY;
+    return WL_RESULTS_CASE_SOLITARY;
   if (isfinite(b))
-    return WL_REPORT_CASE_EXPLOSION;
+    return WL_RESULTS_CASE_EXPLOSION;
   return -1;
 }
 
@@ -139,18 +139,18 @@ static void today(char *out, size_t size) {
 
 /* The summary of findings, from the peaks the report recomputed. */
 static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
-  const struct wl_report_results *r = c->res;
-  const struct wl_report_case *cs = r->cases;
+  const struct wl_results *r = c->res;
+  const struct wl_results_case *cs = r->cases;
   struct buf b = {out, size, 0};
   out[0] = '\0';
   int dg = c->digits;
   char f[2][64], im[2][64], tf[2][64];
-  for (int i = 0; i < WL_REPORT_N_CASES; i++) {
+  for (int i = 0; i < WL_RESULTS_N_CASES; i++) {
     wl_report_fmt(cs[i].force_peak.value / KILO, dg, f[i], sizeof f[i]);
     wl_report_fmt(cs[i].impulse_positive / KILO, dg, im[i], sizeof im[i]);
     wl_report_fmt(cs[i].force_peak.time, TIME_DIGITS, tf[i], sizeof tf[i]);
   }
-  const int S = WL_REPORT_CASE_SOLITARY, X = WL_REPORT_CASE_EXPLOSION;
+  const int S = WL_RESULTS_CASE_SOLITARY, X = WL_RESULTS_CASE_EXPLOSION;
   if (r->n_cases == 0) {
     put(&b, "The results hold no load case: there is nothing to compare. ");
   } else if (r->n_cases == 1) {
@@ -182,7 +182,7 @@ static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
     }
   }
   int first = -1;
-  for (int i = 0; i < WL_REPORT_N_CASES; i++)
+  for (int i = 0; i < WL_RESULTS_N_CASES; i++)
     if (cs[i].present && cs[i].n) {
       first = i;
       break;
@@ -201,7 +201,7 @@ static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
         wl_report_fmt(cs[first].static_force / KILO, dg, fs0, sizeof fs0));
     put(&b, "Second measurement: the force summed on the wall's boundary particles peaks at");
     int k = 0;
-    for (int i = 0; i < WL_REPORT_N_CASES; i++) {
+    for (int i = 0; i < WL_RESULTS_N_CASES; i++) {
       if (!cs[i].present || !cs[i].n)
         continue;
       char fb[64], d[64], pc[64];
@@ -217,8 +217,8 @@ static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
             "converged: only a convergence ladder estimates the error of the resolution. ");
   }
   /* the convergence ladder's estimate, where one was run */
-  for (int i = 0; i < WL_REPORT_N_CASES; i++) {
-    const struct wl_report_convergence *cv = &r->conv[i];
+  for (int i = 0; i < WL_RESULTS_N_CASES; i++) {
+    const struct wl_results_convergence *cv = &r->conv[i];
     if (!cv->present || cv->n_levels < 1)
       continue;
     char ef[64], ei[64], dpf[64];
@@ -229,18 +229,18 @@ static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
       put(&b,
           "The %s case's convergence ladder ran %d level%s (finest dp = %s m): too few complete "
           "levels for an uncertainty. ",
-          wl_report_case_name(i), cv->n_levels,
+          wl_store_results_case_name(i), cv->n_levels,
           cv->n_levels == 1 ? "" : "s", dpf);
     else
       put(&b,
           "Convergence ladder of the %s case (%d levels, finest dp = %s m): uncertainty of the "
           "resolution +-%s %% of the peak force (%s) and +-%s %% of the positive impulse (%s)%s. ",
-          wl_report_case_name(i), cv->n_levels, dpf, ef, cv->force_basis, ei, cv->pos_basis,
+          wl_store_results_case_name(i), cv->n_levels, dpf, ef, cv->force_basis, ei, cv->pos_basis,
           !isfinite(cv->target)     ? ""
           : cv->target_met > 0      ? ", within the target"
                                     : ", above the target");
   }
-  for (int i = 0; i < WL_REPORT_N_CASES; i++) {
+  for (int i = 0; i < WL_RESULTS_N_CASES; i++) {
     if (!cs[i].present || !strcmp(cs[i].status, "complete"))
       continue;
     char tr[64], te[64];
@@ -254,7 +254,7 @@ static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
     if (cs[i].n == 0)
       put(&b, "It stored no samples at all. ");
   }
-  for (int i = 0; i < WL_REPORT_N_CASES; i++)
+  for (int i = 0; i < WL_RESULTS_N_CASES; i++)
     if (cs[i].present && cs[i].caution[0])
       put(&b, "Caution, %s case: %s. ", cs[i].name, cs[i].caution);
 }
@@ -262,7 +262,7 @@ static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
 enum wl_status wl_report_render_title(struct wl_report_ctx *c, const struct wl_report_section *s,
                                       struct wl_error *err) {
   const struct wl_report_template *t = c->tpl;
-  const struct wl_report_results *r = c->res;
+  const struct wl_results *r = c->res;
   struct wl_report_doc *d = c->doc;
   enum wl_status st = WL_OK;
   if (s->page_break)
@@ -309,7 +309,7 @@ enum wl_status wl_report_render_title(struct wl_report_ctx *c, const struct wl_r
     st = wl_report_paragraphf(d, err,
                               "Input digest (SHA-256 of the scenario text stored with the "
                               "results, %zu bytes):\n%s",
-                              r->scenario_len, r->digest);
+                              r->scenario_len, c->digest);
   if (!st && s->text[0])
     st = wl_report_add_paragraph(d, s->text, err);
   if (!st)
@@ -327,19 +327,19 @@ enum wl_status wl_report_render_title(struct wl_report_ctx *c, const struct wl_r
 
 enum wl_status wl_report_render_peaks(struct wl_report_ctx *c, const struct wl_report_section *s,
                                       struct wl_error *err) {
-  const struct wl_report_results *r = c->res;
-  const struct wl_report_case *cs = r->cases;
+  const struct wl_results *r = c->res;
+  const struct wl_results_case *cs = r->cases;
   struct wl_report_doc *d = c->doc;
   enum wl_status st = wl_report_section_begin(c, s, err);
   int dg = s->digits;
-  char cut[WL_REPORT_N_CASES][64];
-  for (int i = 0; i < WL_REPORT_N_CASES; i++)
+  char cut[WL_RESULTS_N_CASES][64];
+  for (int i = 0; i < WL_RESULTS_N_CASES; i++)
     wl_report_fmt(cs[i].cutoff, 3, cut[i], sizeof cut[i]);
   if (!st) {
     char cuts[256] = "";
     struct buf b = {cuts, sizeof cuts, 0};
     int k = 0;
-    for (int i = 0; i < WL_REPORT_N_CASES; i++)
+    for (int i = 0; i < WL_RESULTS_N_CASES; i++)
       if (cs[i].present)
         put(&b, "%s%s Hz for the %s case", k++ ? ", " : "", cut[i], cs[i].name);
     st = wl_report_paragraphf(
@@ -379,11 +379,11 @@ enum wl_status wl_report_render_peaks(struct wl_report_ctx *c, const struct wl_r
   memcpy(cols, cols0, sizeof cols);
   for (int k = 1; k < NC; k++)
     cols[k].sig = dg;
-  struct wl_report_cell cells[(WL_REPORT_N_CASES + 1) * NC];
+  struct wl_report_cell cells[(WL_RESULTS_N_CASES + 1) * NC];
   int rows = 0;
   static const struct wl_report_cell blank = {"", 0};
-  for (int i = 0; i < WL_REPORT_N_CASES; i++) {
-    const struct wl_report_case *k = &cs[i];
+  for (int i = 0; i < WL_RESULTS_N_CASES; i++) {
+    const struct wl_results_case *k = &cs[i];
     struct wl_report_cell *row = &cells[rows * NC];
     row[0] = (struct wl_report_cell){k->name, 0};
     if (!k->present) {
@@ -434,7 +434,7 @@ enum wl_status wl_report_render_peaks(struct wl_report_ctx *c, const struct wl_r
   /* The same peaks in US customary units, per foot of wall, when the
    * scenario wrote its lengths in feet or inches (units.h). */
   struct wl_load_units u;
-  if (!st && r->have_scenario && wl_scenario_load_units(&r->scenario, &u)) {
+  if (!st && wl_units_load_units(r->length_unit, &u)) {
     const struct wl_report_column ucols[] = {
         {"case", NULL, WL_REPORT_ALIGN_LEFT, 0},
         {"peak force", u.force, WL_REPORT_ALIGN_AUTO, dg},
@@ -445,10 +445,10 @@ enum wl_status wl_report_render_peaks(struct wl_report_ctx *c, const struct wl_r
         {"run-up", u.length, WL_REPORT_ALIGN_AUTO, dg},
     };
     enum { NU = 7 };
-    struct wl_report_cell ucells[WL_REPORT_N_CASES * NU];
+    struct wl_report_cell ucells[WL_RESULTS_N_CASES * NU];
     int urows = 0;
-    for (int i = 0; i < WL_REPORT_N_CASES; i++) {
-      const struct wl_report_case *k = &cs[i];
+    for (int i = 0; i < WL_RESULTS_N_CASES; i++) {
+      const struct wl_results_case *k = &cs[i];
       if (!k->present)
         continue;
       struct wl_report_cell *row = &ucells[urows++ * NU];
@@ -483,10 +483,10 @@ enum wl_status wl_report_render_peaks(struct wl_report_ctx *c, const struct wl_r
   for (int k = 1; k < NE; k++)
     ecols[k].sig = dg;
   ecols[5].sig = 2;
-  struct wl_report_cell ecells[WL_REPORT_N_CASES * NE];
+  struct wl_report_cell ecells[WL_RESULTS_N_CASES * NE];
   int erows = 0;
-  for (int i = 0; i < WL_REPORT_N_CASES; i++) {
-    const struct wl_report_case *k = &cs[i];
+  for (int i = 0; i < WL_RESULTS_N_CASES; i++) {
+    const struct wl_results_case *k = &cs[i];
     if (!k->present)
       continue;
     struct wl_report_cell *row = &ecells[erows * NE];
@@ -517,8 +517,8 @@ enum wl_status wl_report_render_peaks(struct wl_report_ctx *c, const struct wl_r
     if (!st)
       st = wl_report_add_table(d, &et, err);
   }
-  for (int i = 0; !st && i < WL_REPORT_N_CASES; i++) {
-    const struct wl_report_case *k = &cs[i];
+  for (int i = 0; !st && i < WL_RESULTS_N_CASES; i++) {
+    const struct wl_results_case *k = &cs[i];
     if (!k->present)
       st = wl_report_paragraphf(d, err,
                                 "The %s case is not in the results: the scenario or the "
@@ -545,7 +545,7 @@ static double change_pct(double b, double a) {
 /* One case's ladder: level by level, with the change between levels. */
 static enum wl_status convergence_case_table(struct wl_report_ctx *c, int i, int dg,
                                              struct wl_error *err) {
-  const struct wl_report_convergence *cv = &c->res->conv[i];
+  const struct wl_results_convergence *cv = &c->res->conv[i];
   static const struct wl_report_column cols0[] = {
       {"level", NULL, WL_REPORT_ALIGN_RIGHT, 0},
       {"dp", "m", WL_REPORT_ALIGN_AUTO, 0},
@@ -562,8 +562,8 @@ static enum wl_status convergence_case_table(struct wl_report_ctx *c, int i, int
   struct wl_report_column cols[NC];
   memcpy(cols, cols0, sizeof cols);
   cols[1].sig = cols[3].sig = cols[4].sig = cols[6].sig = dg;
-  struct wl_report_cell cells[WL_REPORT_MAX_LEVELS * NC];
-  char txt[WL_REPORT_MAX_LEVELS][2][32];
+  struct wl_report_cell cells[WL_RESULTS_MAX_LEVELS * NC];
+  char txt[WL_RESULTS_MAX_LEVELS][2][32];
   for (int l = 0; l < cv->n_levels; l++) {
     struct wl_report_cell *row = &cells[l * NC];
     snprintf(txt[l][0], sizeof txt[l][0], "%d", l + 1);
@@ -583,7 +583,7 @@ static enum wl_status convergence_case_table(struct wl_report_ctx *c, int i, int
   char caption[160];
   snprintf(caption, sizeof caption, "Convergence ladder of the %s case (peak force from the "
            "filtered probe force; change from the level above; the finest level's error is "
-           "its uncertainty)", c->res->cases[i].name[0] ? c->res->cases[i].name : wl_report_case_name(i));
+           "its uncertainty)", c->res->cases[i].name[0] ? c->res->cases[i].name : wl_store_results_case_name(i));
   struct wl_report_table t = {caption, cols, NC, cells, cv->n_levels};
   return wl_report_add_table(c->doc, &t, err);
 }
@@ -592,7 +592,7 @@ static enum wl_status convergence_case_table(struct wl_report_ctx *c, int i, int
  * quantity and one for the case's estimate against the target. */
 static enum wl_status convergence_summary_table(struct wl_report_ctx *c, int dg,
                                                 struct wl_error *err) {
-  const struct wl_report_results *r = c->res;
+  const struct wl_results *r = c->res;
   static const struct wl_report_column cols0[] = {
       {"case", NULL, WL_REPORT_ALIGN_LEFT, 0},
       {"quantity", NULL, WL_REPORT_ALIGN_LEFT, 0},
@@ -607,17 +607,17 @@ static enum wl_status convergence_summary_table(struct wl_report_ctx *c, int dg,
   struct wl_report_column cols[NC];
   memcpy(cols, cols0, sizeof cols);
   cols[3].sig = dg;
-  struct wl_report_cell cells[WL_REPORT_N_CASES * ROWS * NC];
+  struct wl_report_cell cells[WL_RESULTS_N_CASES * ROWS * NC];
   static const struct wl_report_cell blank = {"", 0};
   int rows = 0;
-  for (int i = 0; i < WL_REPORT_N_CASES; i++) {
-    const struct wl_report_convergence *cv = &r->conv[i];
+  for (int i = 0; i < WL_RESULTS_N_CASES; i++) {
+    const struct wl_results_convergence *cv = &r->conv[i];
     if (!cv->present)
       continue;
     struct wl_report_cell *a = &cells[rows * NC], *b = a + NC, *e = b + NC;
     for (int k = 0; k < ROWS * NC; k++)
       a[k] = blank;
-    a[0] = (struct wl_report_cell){wl_report_case_name(i), 0};
+    a[0] = (struct wl_report_cell){wl_store_results_case_name(i), 0};
     a[1] = (struct wl_report_cell){"peak force [kN/m]", 0};
     a[2] = (struct wl_report_cell){NULL, cv->force_order};
     a[3] = (struct wl_report_cell){NULL, cv->force_extrapolated / KILO};
@@ -646,13 +646,13 @@ static enum wl_status convergence_summary_table(struct wl_report_ctx *c, int dg,
 
 /* Estimated error of each level against its runtime, log-log, a line per case. */
 static enum wl_status convergence_plot(struct wl_report_ctx *c, struct wl_error *err) {
-  const struct wl_report_results *r = c->res;
-  struct wl_report_series ser[WL_REPORT_N_CASES];
-  double x[WL_REPORT_N_CASES][WL_REPORT_MAX_LEVELS], y[WL_REPORT_N_CASES][WL_REPORT_MAX_LEVELS];
+  const struct wl_results *r = c->res;
+  struct wl_report_series ser[WL_RESULTS_N_CASES];
+  double x[WL_RESULTS_N_CASES][WL_RESULTS_MAX_LEVELS], y[WL_RESULTS_N_CASES][WL_RESULTS_MAX_LEVELS];
   int n = 0, drawable = 0;
   double target = NAN;
-  for (int i = 0; i < WL_REPORT_N_CASES; i++) {
-    const struct wl_report_convergence *cv = &r->conv[i];
+  for (int i = 0; i < WL_RESULTS_N_CASES; i++) {
+    const struct wl_results_convergence *cv = &r->conv[i];
     if (!cv->present)
       continue;
     memset(&ser[n], 0, sizeof ser[n]);
@@ -712,18 +712,11 @@ static enum wl_status convergence_plot(struct wl_report_ctx *c, struct wl_error 
 enum wl_status wl_report_render_convergence(struct wl_report_ctx *c,
                                             const struct wl_report_section *s,
                                             struct wl_error *err) {
-  const struct wl_report_results *r = c->res;
+  const struct wl_results *r = c->res;
   enum wl_status st = wl_report_section_begin(c, s, err);
-  char asked[256] = "";
-  if (r->have_scenario && r->scenario.resolution.levels_given) {
-    struct buf b = {asked, sizeof asked, 0};
-    put(&b, "[");
-    for (int i = 0; i < r->scenario.resolution.n_levels; i++)
-      put(&b, "%s%s", i ? ", " : "", r->scenario.resolution.levels[i].text);
-    put(&b, "]");
-  }
+  const char *asked = r->convergence_asked;
   int n_conv = 0;
-  for (int i = 0; i < WL_REPORT_N_CASES; i++)
+  for (int i = 0; i < WL_RESULTS_N_CASES; i++)
     n_conv += r->conv[i].present;
   if (n_conv) {
     int dg = s->digits > 0 ? s->digits : DEFAULT_DIGITS;
@@ -745,23 +738,23 @@ enum wl_status wl_report_render_convergence(struct wl_report_ctx *c,
           "which crest carries its peak, whose positive phase would be integrated, changes "
           "with resolution).",
           asked[0] ? " " : "", asked);
-    for (int i = 0; !st && i < WL_REPORT_N_CASES; i++)
+    for (int i = 0; !st && i < WL_RESULTS_N_CASES; i++)
       if (r->conv[i].present)
         st = convergence_case_table(c, i, dg, err);
     if (!st)
       st = convergence_summary_table(c, dg, err);
-    for (int i = 0; !st && i < WL_REPORT_N_CASES; i++)
+    for (int i = 0; !st && i < WL_RESULTS_N_CASES; i++)
       if (r->conv[i].present && r->conv[i].note[0])
-        st = wl_report_paragraphf(c->doc, err, "The %s case: %s.", wl_report_case_name(i),
+        st = wl_report_paragraphf(c->doc, err, "The %s case: %s.", wl_store_results_case_name(i),
                                   r->conv[i].note);
     if (!st)
       st = convergence_plot(c, err);
-    for (int i = 0; !st && i < WL_REPORT_N_CASES; i++)
+    for (int i = 0; !st && i < WL_RESULTS_N_CASES; i++)
       if (r->cases[i].present && !r->conv[i].present)
         st = wl_report_paragraphf(c->doc, err,
                                   "The %s case holds no convergence ladder (it ran at a single "
                                   "resolution, dp = %g m).",
-                                  wl_report_case_name(i), r->cases[i].dp);
+                                  wl_store_results_case_name(i), r->cases[i].dp);
     return st;
   }
   if (!st && r->has_convergence)
@@ -797,15 +790,19 @@ enum wl_status wl_report_render_convergence(struct wl_report_ctx *c,
 
 /* ---- metadata (run record) ------------------------------------------------------------- */
 
-static const char *value_text(const struct wl_scenario_value *v, char *out, size_t size) {
-  snprintf(out, size, "%s%s", v->text, v->given ? "" : " (default)");
+/* A stored setting as the table shows it: its value, "(default)" when the
+ * scenario did not give it. */
+static const char *setting_text(const struct wl_results *r, const char *key, char *out,
+                                size_t size) {
+  const struct wl_results_setting *v = wl_store_results_setting(r, key);
+  snprintf(out, size, "%s%s", v ? v->value : "(not stored)", v && !v->given ? " (default)" : "");
   return out;
 }
 
 enum wl_status wl_report_render_metadata(struct wl_report_ctx *c, const struct wl_report_section *s,
                                          struct wl_error *err) {
-  const struct wl_report_results *r = c->res;
-  const struct wl_report_case *cs = r->cases;
+  const struct wl_results *r = c->res;
+  const struct wl_results_case *cs = r->cases;
   struct wl_report_doc *d = c->doc;
   enum wl_status st = wl_report_section_begin(c, s, err);
   char threads[64], by[128], made[128];
@@ -848,11 +845,11 @@ enum wl_status wl_report_render_metadata(struct wl_report_ctx *c, const struct w
       {"runtime", "s", WL_REPORT_ALIGN_AUTO, 4},
       {"particle-steps/s", NULL, WL_REPORT_ALIGN_AUTO, 3},
   };
-  struct wl_report_cell rcells[WL_REPORT_N_CASES * 7], tcells[WL_REPORT_N_CASES * 7];
-  char counts[WL_REPORT_N_CASES][3][32]; /* whole numbers, printed whole */
+  struct wl_report_cell rcells[WL_RESULTS_N_CASES * 7], tcells[WL_RESULTS_N_CASES * 7];
+  char counts[WL_RESULTS_N_CASES][3][32]; /* whole numbers, printed whole */
   int n = 0;
-  for (int i = 0; i < WL_REPORT_N_CASES; i++) {
-    const struct wl_report_case *k = &cs[i];
+  for (int i = 0; i < WL_RESULTS_N_CASES; i++) {
+    const struct wl_results_case *k = &cs[i];
     if (!k->present)
       continue;
     struct wl_report_cell *a = &rcells[7 * n], *b = &tcells[7 * n];
@@ -884,8 +881,8 @@ enum wl_status wl_report_render_metadata(struct wl_report_ctx *c, const struct w
   } else if (!st) {
     st = wl_report_add_paragraph(d, "The results hold no load case.", err);
   }
-  for (int i = 0; !st && i < WL_REPORT_N_CASES; i++) {
-    const struct wl_report_case *k = &cs[i];
+  for (int i = 0; !st && i < WL_RESULTS_N_CASES; i++) {
+    const struct wl_results_case *k = &cs[i];
     if (!k->present)
       st = wl_report_paragraphf(d, err, "The %s case is not in the results.", k->name);
     else if (strcmp(k->status, "complete"))
@@ -894,44 +891,52 @@ enum wl_status wl_report_render_metadata(struct wl_report_ctx *c, const struct w
                                 k->stopped[0] ? ": " : "", k->stopped);
   }
 
-  if (!st && r->have_scenario) {
-    const struct wl_scenario *sc = &r->scenario;
-    char v[13][160];
-    struct wl_report_kv num[] = {
-        {"coefh (h = coefh sqrt(dim) dp)", value_text(&sc->numerics.coefh, v[0], 160), 0, NULL, 0},
-        {"coefsound (c0 = coefsound sqrt(g h_max))", value_text(&sc->numerics.coefsound, v[1], 160),
-         0, NULL, 0},
-        {"CFL number", value_text(&sc->numerics.cfl, v[2], 160), 0, NULL, 0},
-        {"artificial viscosity alpha", value_text(&sc->numerics.alpha, v[3], 160), 0, NULL, 0},
-        {"viscosity", value_text(&sc->numerics.viscosity, v[4], 160), 0, NULL, 0},
-        {"laminar viscosity nu", value_text(&sc->numerics.nu, v[5], 160), 0, NULL, 0},
-        {"density diffusion", value_text(&sc->numerics.density_diffusion, v[6], 160), 0, NULL, 0},
-        {"shifting", value_text(&sc->numerics.shifting, v[7], 160), 0, NULL, 0},
-        {"time integrator", value_text(&sc->numerics.integrator, v[10], 160), 0, NULL, 0},
-        {"Euler step every (Verlet)", value_text(&sc->numerics.verlet_steps, v[11], 160), 0, NULL,
-         0},
-        {"wall condition", value_text(&sc->numerics.boundary, v[12], 160), 0, NULL, 0},
-        {"output interval", value_text(&sc->run.output_interval, v[8], 160), 0, NULL, 0},
-        {"end time", value_text(&sc->run.end_time, v[9], 160), 0, NULL, 0},
+  if (!st && r->n_settings) {
+    static const struct {
+      const char *label, *key;
+    } rows[] = {
+        {"coefh (h = coefh sqrt(dim) dp)", "numerics.coefh"},
+        {"coefsound (c0 = coefsound sqrt(g h_max))", "numerics.coefsound"},
+        {"CFL number", "numerics.cfl"},
+        {"artificial viscosity alpha", "numerics.alpha"},
+        {"viscosity", "numerics.viscosity"},
+        {"laminar viscosity nu", "numerics.nu"},
+        {"density diffusion", "numerics.density_diffusion"},
+        {"shifting", "numerics.shifting"},
+        {"time integrator", "numerics.integrator"},
+        {"Euler step every (Verlet)", "numerics.verlet_steps"},
+        {"wall condition", "numerics.boundary"},
+        {"output interval", "run.output_interval"},
+        {"end time", "run.end_time"},
     };
-    st = wl_report_add_kv_table(d, "Numerical settings (from the stored scenario)", num,
-                                (int)(sizeof num / sizeof num[0]), err);
+    enum { N_ROWS = sizeof rows / sizeof rows[0] };
+    char v[N_ROWS][200];
+    struct wl_report_kv num[N_ROWS];
+    for (int i = 0; i < N_ROWS; i++)
+      num[i] = (struct wl_report_kv){rows[i].label, setting_text(r, rows[i].key, v[i], sizeof v[i]),
+                                     0, NULL, 0};
+    st = wl_report_add_kv_table(d, "Numerical settings (from the stored scenario)", num, N_ROWS,
+                                err);
   } else if (!st) {
-    st = wl_report_paragraphf(d, err, "Numerical settings are not shown: %s.", r->scenario_note);
+    st = wl_report_paragraphf(d, err, "Numerical settings are not shown: %s.",
+                              WL_REPORT_NO_PLAN);
   }
-  if (!st && r->have_plan && r->plan.n_notes) {
-    char text[WL_PLAN_MAX_NOTES * 330 + 64];
+  if (!st && r->plan.notes[0]) {
+    char text[WL_RESULTS_NOTES_MAX + 256];
     struct buf b = {text, sizeof text, 0};
     put(&b, "Notes of the plan (as wallload check prints them):");
-    for (int i = 0; i < r->plan.n_notes; i++)
-      put(&b, "\n- %s", r->plan.notes[i]);
+    char notes[WL_RESULTS_NOTES_MAX];
+    snprintf(notes, sizeof notes, "%s", r->plan.notes);
+    char *save = NULL;
+    for (char *line = strtok_r(notes, "\n", &save); line; line = strtok_r(NULL, "\n", &save))
+      put(&b, "\n- %s", line);
     st = wl_report_add_paragraph(d, text, err);
   }
   if (!st && s->scenario_text) {
     st = wl_report_add_heading(d, 2, "Scenario file as run", err);
     if (!st)
       st = wl_report_paragraphf(d, err, "%s (SHA-256 %s):",
-                                r->scenario_file[0] ? r->scenario_file : "scenario", r->digest);
+                                r->scenario_file[0] ? r->scenario_file : "scenario", c->digest);
     if (!st)
       st = wl_report_add_preformatted(d, r->scenario_len ? r->scenario_text : "(not stored)", err);
   }
@@ -965,12 +970,12 @@ enum wl_status wl_report_render(const char *results_h5, const char *template_pat
     if (st)
       return st;
   }
-  struct wl_report_results *res = malloc(sizeof *res);
+  struct wl_results *res = malloc(sizeof *res);
   if (!res) {
     wl_report_template_clear(&tpl);
     return wl_error_set(err, WL_ENOMEM, "report: no memory for the results");
   }
-  st = wl_report_results_load(results_h5, res, err);
+  st = wl_store_results_read(results_h5, res, err);
   if (!st && !template_path)
     st =
         wl_report_template_resolve(res, &tpl, ctx.template_source, sizeof ctx.template_source, err);
@@ -984,6 +989,7 @@ enum wl_status wl_report_render(const char *results_h5, const char *template_pat
     ctx.doc = doc;
     ctx.tpl = &tpl;
     ctx.res = res;
+    wl_report_sha256_hex(res->scenario_text, res->scenario_len, ctx.digest);
     ctx.digits = DEFAULT_DIGITS;
     for (int i = 0; i < tpl.n_sections; i++)
       if (tpl.sections[i].type == WL_REPORT_SECTION_PEAKS) {
@@ -1000,7 +1006,7 @@ enum wl_status wl_report_render(const char *results_h5, const char *template_pat
       st = wl_report_doc_finish(doc, err);
   }
   wl_report_doc_free(doc);
-  wl_report_results_clear(res);
+  wl_store_results_clear(res);
   free(res);
   wl_report_template_clear(&tpl);
   return st;

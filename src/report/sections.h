@@ -1,7 +1,7 @@
 /* sections.h: the section renderers of the design report (private to
  * src/report). wl_report_render (sections.c) reads the results, opens the
  * document and calls one renderer per template section; each renderer
- * draws through the toolkit (draw.h) from struct wl_report_results alone.
+ * draws through the toolkit (wallload/draw.h) from struct wl_results alone.
  *
  * Units on the page: forces kN/m, impulses kN s/m, moments kN m/m,
  * pressures kPa, lengths m, times s (the stored values are SI; the factor
@@ -13,8 +13,9 @@
 
 #include <stddef.h>
 
-#include "draw.h"
-#include "results.h"
+#include "wallload/draw.h"
+#include "digest.h"
+#include "wallload/store.h"
 #include "wallload/report.h"
 
 #define KILO 1000.0 /* N -> kN, Pa -> kPa */
@@ -23,12 +24,19 @@
 struct wl_report_ctx {
   struct wl_report_doc *doc;
   const struct wl_report_template *tpl;
-  const struct wl_report_results *res;
+  const struct wl_results *res;
   int digits;                /* significant digits of the peak values wherever they are printed
                                 (the template's peaks section, else 3), so the summary, the peaks
                                 table and the design comparison print the same strings */
   char template_source[600]; /* where the template came from, for the run record */
+  char digest[65];           /* SHA-256 of the stored scenario text (digest.h) */
 };
+
+/* Why what the plan derived is not shown: results without /plan (written
+ * before results.h5 held it), whose scenario the report no longer re-plans. */
+#define WL_REPORT_NO_PLAN                                                                      \
+  "the results hold no /plan (written by an older wallload); run wallload assess again to "   \
+  "store it"
 
 /* Owned temporary arrays of one renderer, freed together. */
 enum { WL_REPORT_SCRATCH_MAX = 96 };
@@ -101,7 +109,7 @@ extern const char wl_report_builtin_design[];
  * the built-in copy. `source` gets where it came from. Returns what
  * wl_report_template_load / _parse return, or WL_EINPUT for a name with no
  * file. */
-enum wl_status wl_report_template_resolve(const struct wl_report_results *r,
+enum wl_status wl_report_template_resolve(const struct wl_results *r,
                                           struct wl_report_template *t, char *source, size_t size,
                                           struct wl_error *err);
 
@@ -124,7 +132,7 @@ struct wl_design_scenario;
  * the wave that reached it; sections_design.c says from where), with one
  * line each on where H and T came from. 0 when the case has no wall
  * geometry or record (ds then unset). */
-int wl_report_design_inputs(const struct wl_report_results *r, int ci,
+int wl_report_design_inputs(const struct wl_results *r, int ci,
                             struct wl_design_scenario *ds, char *h_src, char *t_src,
                             size_t src_size);
 

@@ -172,12 +172,10 @@ enum wl_status wl_report_template_find(const char *name, const char *scenario_fi
                       cand[0]);
 }
 
-enum wl_status wl_report_template_resolve(const struct wl_report_results *r,
+enum wl_status wl_report_template_resolve(const struct wl_results *r,
                                           struct wl_report_template *t, char *source,
                                           size_t size, struct wl_error *err) {
-  const char *name = r->have_scenario && r->scenario.report.template_name.text[0]
-                         ? r->scenario.report.template_name.text
-                         : "design";
+  const char *name = r->report_template[0] ? r->report_template : "design";
   return wl_report_template_find(name, r->scenario_file[0] ? r->scenario_file : r->path, r->dir,
                                  t, source, size, err);
 }

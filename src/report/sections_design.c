@@ -88,7 +88,7 @@ static unsigned formula_bit(const char *name) {
 }
 
 /* The gauge nearest the wall other than the wall face itself; -1 if none. */
-static int gauge_near_wall(const struct wl_report_case *k) {
+static int gauge_near_wall(const struct wl_results_case *k) {
   int best = -1;
   for (int g = 0; g < k->n_gauges; g++) {
     if (g == k->wall_gauge || !isfinite(k->gauges[g].x) || !k->gauges[g].eta)
@@ -99,15 +99,15 @@ static int gauge_near_wall(const struct wl_report_case *k) {
   return best;
 }
 
-int wl_report_design_inputs(const struct wl_report_results *r, int ci,
+int wl_report_design_inputs(const struct wl_results *r, int ci,
                             struct wl_design_scenario *out, char *h_src, char *t_src,
                             size_t src_size) {
-  const struct wl_report_case *k = &r->cases[ci];
+  const struct wl_results_case *k = &r->cases[ci];
   if (!isfinite(k->still_water_z) || !isfinite(k->wall_toe_z) || !k->n)
     return 0;
   struct wl_design_scenario ds;
   wl_design_scenario_init(&ds);
-  if (r->have_plan)
+  if (r->plan.present)
     ds.rho = r->plan.rho, ds.g = r->plan.g;
   else
     ds.rho = RHO_DEFAULT;
@@ -122,9 +122,9 @@ int wl_report_design_inputs(const struct wl_report_results *r, int ci,
   double Hm = NAN, Tm = NAN, tc = NAN;
   if (gi >= 0)
     wl_report_leading_wave(k->t, k->gauges[gi].eta, k->n, &Hm, &Tm, &tc);
-  const struct wl_plan_solitary *ps = r->have_plan ? &r->plan.solitary : NULL;
-  if (ci == WL_REPORT_CASE_SOLITARY && ps && ps->present) {
-    ds.H = ps->wave.H;
+  const struct wl_results_solitary *ps = r->plan.present ? &r->plan.solitary : NULL;
+  if (ci == WL_RESULTS_CASE_SOLITARY && ps && ps->present) {
+    ds.H = ps->H;
     snprintf(h_src, src_size, "the solitary wave's height (scenario)");
   } else if (isfinite(Hm)) {
     ds.H = Hm;
@@ -138,9 +138,9 @@ int wl_report_design_inputs(const struct wl_report_results *r, int ci,
     ds.T = Tm;
     snprintf(t_src, src_size, "twice the time the crest at %s stays above 10 %% of its height",
              k->gauges[gi].name);
-  } else if (ci == WL_REPORT_CASE_SOLITARY && ps && ps->present && ps->wave.K > 0 &&
-             ps->wave.c > 0) {
-    ds.T = 4.0 * acosh(sqrt(1.0 / WL_LOADS_THRESHOLD)) / (ps->wave.K * ps->wave.c);
+  } else if (ci == WL_RESULTS_CASE_SOLITARY && ps && ps->present && ps->K > 0 &&
+             ps->celerity > 0) {
+    ds.T = 4.0 * acosh(sqrt(1.0 / WL_LOADS_THRESHOLD)) / (ps->K * ps->celerity);
     snprintf(t_src, src_size,
              "the same measure on the theoretical profile, 4 acosh(sqrt 10)/(K c)");
   } else {
@@ -161,8 +161,8 @@ int wl_report_design_inputs(const struct wl_report_results *r, int ci,
 
 static enum wl_status design_case(struct wl_report_ctx *c, const struct wl_report_section *s,
                                   int ci, struct wl_error *err) {
-  const struct wl_report_results *r = c->res;
-  const struct wl_report_case *k = &r->cases[ci];
+  const struct wl_results *r = c->res;
+  const struct wl_results_case *k = &r->cases[ci];
   struct wl_report_doc *d = c->doc;
   int dg = s->digits;
   enum wl_status st = wl_report_add_heading(d, 2, wl_report_case_label(ci), err);
@@ -276,7 +276,7 @@ static enum wl_status design_case(struct wl_report_ctx *c, const struct wl_repor
 
 enum wl_status wl_report_render_design(struct wl_report_ctx *c, const struct wl_report_section *s,
                                        struct wl_error *err) {
-  const struct wl_report_results *r = c->res;
+  const struct wl_results *r = c->res;
   enum wl_status st = wl_report_section_begin(c, s, err);
   if (!st)
     st = wl_report_add_paragraph(
@@ -292,11 +292,11 @@ enum wl_status wl_report_render_design(struct wl_report_ctx *c, const struct wl_
         "run-up. Cross (1967) is not implemented; where the template asks for it, the CCH surge "
         "force (a bore on a wall with a dry toe) is printed.",
         err);
-  for (int i = 0; !st && i < WL_REPORT_N_CASES; i++) {
+  for (int i = 0; !st && i < WL_RESULTS_N_CASES; i++) {
     if (!r->cases[i].present) {
       st = wl_report_paragraphf(c->doc, err,
                                 "The %s case is not in the results: no comparison for it.",
-                                wl_report_case_name(i));
+                                wl_store_results_case_name(i));
       continue;
     }
     st = design_case(c, s, i, err);

@@ -19,7 +19,7 @@
 #define G_DEFAULT 9.81
 
 /* Palette entries: the solitary case black, the explosion vermillion (Okabe-Ito). */
-static int case_colour(int i) { return i == WL_REPORT_CASE_SOLITARY ? 1 : 5; }
+static int case_colour(int i) { return i == WL_RESULTS_CASE_SOLITARY ? 1 : 5; }
 
 static enum wl_status figure(struct wl_report_doc *d, const struct wl_report_plot *p, double h,
                              const char *caption, struct wl_error *err) {
@@ -33,14 +33,14 @@ static enum wl_status figure(struct wl_report_doc *d, const struct wl_report_plo
 }
 
 /* " (no explosion case in the results)" etc. for a caption. */
-static void missing_note(const struct wl_report_results *r, char *out, size_t size) {
+static void missing_note(const struct wl_results *r, char *out, size_t size) {
   out[0] = '\0';
-  for (int i = 0; i < WL_REPORT_N_CASES; i++) {
-    const struct wl_report_case *k = &r->cases[i];
+  for (int i = 0; i < WL_RESULTS_N_CASES; i++) {
+    const struct wl_results_case *k = &r->cases[i];
     size_t used = strlen(out);
     if (!k->present)
       snprintf(out + used, size - used, " No %s case is in the results.",
-               k->name[0] ? k->name : wl_report_case_name(i));
+               k->name[0] ? k->name : wl_store_results_case_name(i));
     else if (k->n == 0)
       snprintf(out + used, size - used, " The %s case recorded no samples.", k->name);
     else if (strcmp(k->status, "complete"))
@@ -51,7 +51,7 @@ static void missing_note(const struct wl_report_results *r, char *out, size_t si
 
 /* ---- gauges ------------------------------------------------------------------------- */
 
-static const struct wl_report_gauge *find_gauge(const struct wl_report_case *k, const char *name) {
+static const struct wl_results_gauge *find_gauge(const struct wl_results_case *k, const char *name) {
   for (int g = 0; g < k->n_gauges; g++)
     if (!strcmp(k->gauges[g].name, name))
       return &k->gauges[g];
@@ -60,20 +60,20 @@ static const struct wl_report_gauge *find_gauge(const struct wl_report_case *k, 
 
 enum wl_status wl_report_render_gauges(struct wl_report_ctx *c, const struct wl_report_section *s,
                                        struct wl_error *err) {
-  const struct wl_report_results *r = c->res;
+  const struct wl_results *r = c->res;
   struct wl_report_doc *d = c->doc;
   enum wl_status st = wl_report_section_begin(c, s, err);
   /* names: the template's, or every gauge of either case (ordered by x) */
-  char names[WL_REPORT_MAX_GAUGES * 2][64];
-  double xs[WL_REPORT_MAX_GAUGES * 2];
+  char names[WL_RESULTS_MAX_GAUGES * 2][64];
+  double xs[WL_RESULTS_MAX_GAUGES * 2];
   int n = 0;
   char unknown[512] = "";
   if (s->n_gauges > 0) {
     for (int i = 0; i < s->n_gauges; i++) {
       int found = 0;
       double x = NAN;
-      for (int ci = 0; ci < WL_REPORT_N_CASES; ci++) {
-        const struct wl_report_gauge *g = find_gauge(&r->cases[ci], s->gauges[i]);
+      for (int ci = 0; ci < WL_RESULTS_N_CASES; ci++) {
+        const struct wl_results_gauge *g = find_gauge(&r->cases[ci], s->gauges[i]);
         if (g)
           found = 1, x = g->x;
       }
@@ -86,13 +86,13 @@ enum wl_status wl_report_render_gauges(struct wl_report_ctx *c, const struct wl_
       xs[n++] = x;
     }
   } else {
-    for (int ci = 0; ci < WL_REPORT_N_CASES; ci++)
+    for (int ci = 0; ci < WL_RESULTS_N_CASES; ci++)
       for (int g = 0; g < r->cases[ci].n_gauges; g++) {
-        const struct wl_report_gauge *ga = &r->cases[ci].gauges[g];
+        const struct wl_results_gauge *ga = &r->cases[ci].gauges[g];
         int dup = 0;
         for (int j = 0; j < n; j++)
           dup |= !strcmp(names[j], ga->name);
-        if (dup || n >= WL_REPORT_MAX_GAUGES * 2)
+        if (dup || n >= WL_RESULTS_MAX_GAUGES * 2)
           continue;
         /* insertion by x keeps the flume's order */
         int at = n;
@@ -114,11 +114,11 @@ enum wl_status wl_report_render_gauges(struct wl_report_ctx *c, const struct wl_
   if (!st && n == 0)
     st = wl_report_paragraphf(d, err, "The results hold no gauge records.%s", missing);
   for (int i = 0; !st && i < n; i++) {
-    struct wl_report_series ser[WL_REPORT_N_CASES];
+    struct wl_report_series ser[WL_RESULTS_N_CASES];
     int ns = 0;
-    for (int ci = 0; ci < WL_REPORT_N_CASES; ci++) {
-      const struct wl_report_case *k = &r->cases[ci];
-      const struct wl_report_gauge *g = k->present ? find_gauge(k, names[i]) : NULL;
+    for (int ci = 0; ci < WL_RESULTS_N_CASES; ci++) {
+      const struct wl_results_case *k = &r->cases[ci];
+      const struct wl_results_gauge *g = k->present ? find_gauge(k, names[i]) : NULL;
       if (!g || !k->n)
         continue;
       ser[ns++] = (struct wl_report_series){
@@ -149,14 +149,14 @@ enum wl_status wl_report_render_gauges(struct wl_report_ctx *c, const struct wl_
  * hydrostatic pressure at rest. */
 static enum wl_status pressure_profile(struct wl_report_ctx *c, struct wl_report_scratch *sc,
                                        const char *missing, struct wl_error *err) {
-  const struct wl_report_results *r = c->res;
-  struct wl_report_series ser[WL_REPORT_N_CASES + 1];
-  char labels[WL_REPORT_N_CASES][96];
+  const struct wl_results *r = c->res;
+  struct wl_report_series ser[WL_RESULTS_N_CASES + 1];
+  char labels[WL_RESULTS_N_CASES][96];
   int ns = 0;
   double zmin = INFINITY, zmax = -INFINITY, still = NAN;
   size_t np_max = 0;
-  for (int ci = 0; ci < WL_REPORT_N_CASES; ci++) {
-    const struct wl_report_case *k = &r->cases[ci];
+  for (int ci = 0; ci < WL_RESULTS_N_CASES; ci++) {
+    const struct wl_results_case *k = &r->cases[ci];
     if (!k->present || !k->n || !k->pressure || !k->n_probes || !isfinite(k->force_peak.time))
       continue;
     size_t row = k->force_peak.index < k->n ? k->force_peak.index : k->n - 1;
@@ -183,7 +183,8 @@ static enum wl_status pressure_profile(struct wl_report_ctx *c, struct wl_report
                                 "No pressure distribution at the peak force: no case stored "
                                 "probe pressures with a peak.%s",
                                 missing);
-  double rho = r->have_plan ? r->plan.rho : RHO_DEFAULT, g = r->have_plan ? r->plan.g : G_DEFAULT;
+  double rho = r->plan.present ? r->plan.rho : RHO_DEFAULT,
+         g = r->plan.present ? r->plan.g : G_DEFAULT;
   enum { NH = 64 };
   double *hz = wl_report_scratch_alloc(sc, NH), *hp = wl_report_scratch_alloc(sc, NH);
   if (!hz || !hp)
@@ -229,7 +230,7 @@ enum which {
   W_MOMENT_B
 };
 
-static const double *pick(const struct wl_report_case *k, enum which w) {
+static const double *pick(const struct wl_results_case *k, enum which w) {
   switch (w) {
   case W_FORCE: return k->force;
   case W_FORCE_F: return k->force_f;
@@ -256,10 +257,10 @@ static enum wl_status case_lines(struct wl_report_ctx *c, struct wl_report_scrat
                                  int colour_by_spec, struct wl_report_plot *p,
                                  struct wl_report_series *ser, char (*labels)[96],
                                  struct wl_error *err) {
-  const struct wl_report_results *r = c->res;
+  const struct wl_results *r = c->res;
   int ns = 0;
-  for (int ci = 0; ci < WL_REPORT_N_CASES; ci++) {
-    const struct wl_report_case *k = &r->cases[ci];
+  for (int ci = 0; ci < WL_RESULTS_N_CASES; ci++) {
+    const struct wl_results_case *k = &r->cases[ci];
     if (!k->present || !k->n || (only_case >= 0 && ci != only_case))
       continue;
     for (int j = 0; j < n_spec; j++) {
@@ -287,7 +288,7 @@ static enum wl_status case_lines(struct wl_report_ctx *c, struct wl_report_scrat
 
 enum wl_status wl_report_render_loads(struct wl_report_ctx *c, const struct wl_report_section *s,
                                       struct wl_error *err) {
-  const struct wl_report_results *r = c->res;
+  const struct wl_results *r = c->res;
   struct wl_report_doc *d = c->doc;
   enum wl_status st = wl_report_section_begin(c, s, err);
   struct wl_report_scratch sc = {0};
@@ -297,7 +298,7 @@ enum wl_status wl_report_render_loads(struct wl_report_ctx *c, const struct wl_r
   missing_note(r, missing, sizeof missing);
   int any = 0;
   double fs = NAN, cut = NAN;
-  for (int i = 0; i < WL_REPORT_N_CASES; i++)
+  for (int i = 0; i < WL_RESULTS_N_CASES; i++)
     if (r->cases[i].present && r->cases[i].n) {
       any = 1;
       if (!isfinite(fs))
@@ -337,8 +338,8 @@ enum wl_status wl_report_render_loads(struct wl_report_ctx *c, const struct wl_r
         {W_FORCE_B, "boundary, raw", WL_REPORT_LINE_DOTTED},
         {W_FORCE_BF, "boundary, filtered", WL_REPORT_LINE_DASHED},
     };
-    int n_cells = 0, idx[WL_REPORT_N_CASES];
-    for (int i = 0; i < WL_REPORT_N_CASES; i++)
+    int n_cells = 0, idx[WL_RESULTS_N_CASES];
+    for (int i = 0; i < WL_RESULTS_N_CASES; i++)
       if (r->cases[i].present && r->cases[i].n)
         idx[n_cells++] = i;
     struct wl_report_rect area;
@@ -408,8 +409,8 @@ enum wl_status wl_report_render_loads(struct wl_report_ctx *c, const struct wl_r
   if (!st && (s->loads & (WL_REPORT_LOAD_FORCE | WL_REPORT_LOAD_PRESSURE)))
     st = pressure_profile(c, &sc, missing, err);
   if (!st && (s->loads & WL_REPORT_LOAD_PRESSURE)) {
-    for (int ci = 0; !st && ci < WL_REPORT_N_CASES; ci++) {
-      const struct wl_report_case *k = &r->cases[ci];
+    for (int ci = 0; !st && ci < WL_RESULTS_N_CASES; ci++) {
+      const struct wl_results_case *k = &r->cases[ci];
       if (!k->present || !k->n || !k->pressure || !k->n_probes)
         continue;
       size_t stride = (k->n_probes + MAX_PROBE_LINES - 1) / MAX_PROBE_LINES;
@@ -439,8 +440,8 @@ enum wl_status wl_report_render_loads(struct wl_report_ctx *c, const struct wl_r
   }
   if (!st && (s->loads & WL_REPORT_LOAD_RUNUP)) {
     int ns = 0;
-    for (int ci = 0; ci < WL_REPORT_N_CASES; ci++) {
-      const struct wl_report_case *k = &r->cases[ci];
+    for (int ci = 0; ci < WL_RESULTS_N_CASES; ci++) {
+      const struct wl_results_case *k = &r->cases[ci];
       if (!k->present || !k->n || k->wall_gauge < 0)
         continue;
       ser[ns++] = (struct wl_report_series){k->name,

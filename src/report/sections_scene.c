@@ -1,8 +1,8 @@
-/* sections_scene.c: the scene section (the flume to scale: bathymetry from
- * the re-parsed scenario via wl_scenario_bed_z, the seawall and the land
- * behind it, still water, gauges, the initial solitary wave or crater from
- * the re-made plan; and the table of derived initial conditions with each
- * formula's source, as `wallload check` prints them in wl_plan_write) and
+/* sections_scene.c: the scene section (the flume to scale: the bed's
+ * corners, the seawall and the land behind it, still water, gauges, the
+ * initial solitary wave or crater, all as results.h5's /plan holds them;
+ * and the table of derived initial conditions with each formula's source,
+ * as `wallload check` prints them in wl_plan_write) and
  * the snapshots section (particles near the wall coloured by pressure,
  * speed or density at chosen times, read from particles_<case>.h5). */
 #include <math.h>
@@ -11,14 +11,11 @@
 #include <string.h>
 
 #include "sections.h"
-#include "wallload/explosion.h"
 #include "wallload/units.h"
 #include "wallload/waves.h"
 
 #define SCENE_MIN_H 40.0     /* a flume drawn lower than this at true scale [pt] is exaggerated */
 #define SCENE_TARGET_H 110.0 /* its height aimed at when exaggerating automatically [pt] */
-#define SURFACE_POINTS 600   /* samples of an initial free surface */
-#define SOLITARY_HALF 6.0    /* a solitary wave is drawn over +-6/K about its crest */
 #define CLOSE_DEPTHS 8.0     /* the close-up reaches this many depths seaward of the wall */
 #define SNAP_DEPTHS 5.0      /* snapshot window: depths seaward of the wall */
 #define SNAP_LAND 0.25       /* ... and this share of its width landward */
@@ -27,37 +24,35 @@
 /* ---- flume geometry ------------------------------------------------------------------ */
 
 struct geom {
-  int from_scenario; /* 1: bathymetry and gauges from the scenario */
-  double x0, x_end;  /* flume start and end of the land drawn [m] */
-  double h;          /* still-water level above the floor [m] */
+  int from_plan;    /* 1: bed, gauges and initial surfaces from /plan */
+  double x0, x_end; /* flume start and end of the land drawn [m] */
+  double h;         /* still-water level above the floor [m] */
   double xw, toe, crest;
 };
 
-static int first_case(const struct wl_report_results *r) {
-  for (int i = 0; i < WL_REPORT_N_CASES; i++)
+static int first_case(const struct wl_results *r) {
+  for (int i = 0; i < WL_RESULTS_N_CASES; i++)
     if (r->cases[i].present)
       return i;
   return -1;
 }
 
 /* 0 when there is nothing to draw the flume from. */
-static int geometry(const struct wl_report_results *r, struct geom *g) {
+static int geometry(const struct wl_results *r, struct geom *g) {
   int fc = first_case(r);
-  const struct wl_report_case *k = fc >= 0 ? &r->cases[fc] : NULL;
+  const struct wl_results_case *k = fc >= 0 ? &r->cases[fc] : NULL;
   memset(g, 0, sizeof *g);
-  if (r->have_scenario) {
-    const struct wl_scenario *s = &r->scenario;
-    g->from_scenario = 1;
+  if (r->plan.present) {
+    const struct wl_results_plan *pl = &r->plan;
+    g->from_plan = 1;
     g->x0 = 0.0;
-    g->xw = s->wall.x.q.si;
-    g->h = r->have_plan ? r->plan.h : s->water.depth.q.si;
-    g->toe = wl_scenario_bed_z(s, g->xw);
-    g->crest = g->toe + s->wall.height.q.si;
+    g->xw = pl->wall_x;
+    g->h = pl->depth;
+    g->toe = pl->wall_toe_z;
+    g->crest = pl->wall_crest_z;
     if (k && isfinite(k->wall_crest_z))
       g->crest = k->wall_crest_z;
-    double land = r->have_plan && r->plan.land_length > 0 ? r->plan.land_length
-                                                          : s->domain.length.q.si - g->xw;
-    g->x_end = g->xw + (land > 0 ? land : 0.1 * g->xw);
+    g->x_end = g->xw + (pl->land_length > 0 ? pl->land_length : 0.1 * g->xw);
     return 1;
   }
   if (!k || !isfinite(k->wall_x) || !isfinite(k->still_water_z))
@@ -71,17 +66,13 @@ static int geometry(const struct wl_report_results *r, struct geom *g) {
   return 1;
 }
 
-static double bed_at(const struct wl_report_results *r, const struct geom *g, double x) {
-  return g->from_scenario ? wl_scenario_bed_z(&r->scenario, x) : g->toe;
-}
-
-/* Polygons and lines of the flume; storage in the scratch. */
+/* Polygons and lines of the flume. */
 struct scene_parts {
   struct wl_report_shape shapes[8];
   int n_shapes;
-  struct wl_report_mark marks[WL_SCENARIO_MAX_GAUGES + 4];
+  struct wl_report_mark marks[WL_RESULTS_MAX_GAUGES + 4];
   int n_marks;
-  double bx[WL_SCENARIO_MAX_BED + 4], bz[WL_SCENARIO_MAX_BED + 4];
+  double bx[WL_RESULTS_MAX_BED + 2], bz[WL_RESULTS_MAX_BED + 2];
   double wx[4], wz[4], lx[4], lz[4];
   char notes[512];
 };
@@ -97,8 +88,8 @@ static void add_mark(struct scene_parts *p, double x, double z, const char *labe
     p->marks[p->n_marks++] = (struct wl_report_mark){x, z, label};
 }
 
-static void build_scene(const struct wl_report_results *r, const struct geom *g,
-                        struct wl_report_scratch *sc, struct scene_parts *p) {
+static void build_scene(const struct wl_results *r, const struct geom *g,
+                        struct scene_parts *p) {
   memset(p, 0, sizeof *p);
   /* still water first, the bed painted over it */
   p->wx[0] = g->x0, p->wz[0] = 0.0;
@@ -106,15 +97,15 @@ static void build_scene(const struct wl_report_results *r, const struct geom *g,
   p->wx[2] = g->xw, p->wz[2] = g->h;
   p->wx[3] = g->x0, p->wz[3] = g->h;
   add_shape(p, WL_REPORT_SHAPE_WATER, p->wx, p->wz, 4);
+  const struct wl_results_plan *pl = &r->plan;
   int n = 0;
-  p->bx[n] = g->x0, p->bz[n++] = bed_at(r, g, g->x0);
-  for (int i = 0; g->from_scenario && i < r->scenario.n_bed; i++) {
-    double xb = r->scenario.bed[i].from.q.si;
-    if (xb <= g->x0 || xb >= g->xw)
-      continue;
-    p->bx[n] = xb, p->bz[n++] = bed_at(r, g, xb);
+  if (g->from_plan) {
+    for (size_t i = 0; i < pl->n_bed; i++)
+      p->bx[n] = pl->bed_x[i], p->bz[n++] = pl->bed_z[i];
+  } else { /* flat at the wall's toe */
+    p->bx[n] = g->x0, p->bz[n++] = g->toe;
+    p->bx[n] = g->xw, p->bz[n++] = g->toe;
   }
-  p->bx[n] = g->xw, p->bz[n++] = g->toe;
   p->bx[n] = g->xw, p->bz[n++] = 0.0;
   p->bx[n] = g->x0, p->bz[n++] = 0.0;
   add_shape(p, WL_REPORT_SHAPE_BED, p->bx, p->bz, (size_t)n);
@@ -124,51 +115,22 @@ static void build_scene(const struct wl_report_results *r, const struct geom *g,
   p->lx[3] = g->x_end, p->lz[3] = 0.0;
   add_shape(p, WL_REPORT_SHAPE_WALL, p->lx, p->lz, 4);
 
-  if (r->have_plan) {
-    const struct wl_plan *pl = &r->plan;
-    if (pl->solitary.present && !pl->solitary.paddle && pl->solitary.wave.K > 0) {
-      double xc = pl->solitary.crest_x0, half = SOLITARY_HALF / pl->solitary.wave.K;
-      double a = fmax(g->x0, xc - half), b = fmin(g->xw, xc + half);
-      double *x = wl_report_scratch_alloc(sc, SURFACE_POINTS),
-             *z = wl_report_scratch_alloc(sc, SURFACE_POINTS);
-      if (x && z && b > a) {
-        for (int i = 0; i < SURFACE_POINTS; i++) {
-          x[i] = a + (b - a) * i / (SURFACE_POINTS - 1);
-          z[i] = g->h + wl_waves_solitary_eta(&pl->solitary.wave, x[i] - xc);
-          if (z[i] <= bed_at(r, g, x[i]))
-            z[i] = NAN;
-        }
-        add_shape(p, WL_REPORT_SHAPE_LINE, x, z, SURFACE_POINTS);
-        add_mark(p, xc, g->h + pl->solitary.wave.H, "crest");
-      }
+  if (g->from_plan) {
+    const struct wl_results_solitary *ps = &pl->solitary;
+    const struct wl_results_explosion *px = &pl->explosion;
+    if (ps->present && ps->n_surface) {
+      add_shape(p, WL_REPORT_SHAPE_LINE, ps->surface_x, ps->surface_z, ps->n_surface);
+      add_mark(p, ps->crest_x0, g->h + ps->H, "crest");
     }
-    if (pl->solitary.present && pl->solitary.paddle)
+    if (ps->present && ps->paddle)
       add_mark(p, 0.0, g->h, "paddle");
-    if (pl->explosion.present && pl->explosion.r0 > 0) {
-      const struct wl_plan_explosion *px = &pl->explosion;
-      double a = fmax(g->x0, px->x_center - px->extent), b = fmin(g->xw, px->x_center + px->extent);
-      double *x = wl_report_scratch_alloc(sc, SURFACE_POINTS),
-             *z = wl_report_scratch_alloc(sc, SURFACE_POINTS);
-      if (x && z && b > a) {
-        for (int i = 0; i < SURFACE_POINTS; i++) {
-          double eta = 0.0;
-          struct wl_error e;
-          wl_error_clear(&e);
-          x[i] = a + (b - a) * i / (SURFACE_POINTS - 1);
-          if (wl_explosion_eta(px->shape, px->eta0, px->r0, fabs(x[i] - px->x_center), &eta, &e))
-            eta = NAN;
-          z[i] = g->h + eta;
-          if (z[i] <= bed_at(r, g, x[i]))
-            z[i] = NAN;
-        }
-        add_shape(p, WL_REPORT_SHAPE_LINE, x, z, SURFACE_POINTS);
-        add_mark(p, px->x_center, g->h, "crater");
-      }
+    if (px->present && px->n_surface) {
+      add_shape(p, WL_REPORT_SHAPE_LINE, px->surface_x, px->surface_z, px->n_surface);
+      add_mark(p, px->x_center, g->h, "crater");
     }
+    for (int i = 0; i < pl->n_gauges; i++)
+      add_mark(p, pl->gauge_x[i], g->h, pl->gauge_name[i]);
   }
-  if (g->from_scenario)
-    for (int i = 0; i < r->scenario.n_gauges; i++)
-      add_mark(p, r->scenario.gauges[i].x.q.si, g->h, r->scenario.gauges[i].name.text);
   add_mark(p, g->xw, g->crest, "wall");
 }
 
@@ -215,69 +177,75 @@ static void ic_row(struct ic_table *t, const char *quantity, double value, const
   c[3] = (struct wl_report_cell){t->text[i][2], 0};
 }
 
+/* The theory a solitary wave was stored with (its name,
+ * wl_waves_solitary_theory_text); -1 when this version does not know it. */
+static int solitary_theory(const char *name) {
+  static const enum wl_solitary_theory all[] = {WL_SOLITARY_BOUSSINESQ, WL_SOLITARY_GRIMSHAW,
+                                                WL_SOLITARY_EXACT};
+  for (size_t i = 0; i < sizeof all / sizeof all[0]; i++)
+    if (!strcmp(name, wl_waves_solitary_theory_text(all[i], 0)))
+      return (int)all[i];
+  return -1;
+}
+
 static enum wl_status initial_conditions(struct wl_report_ctx *c, struct wl_error *err) {
-  const struct wl_report_results *r = c->res;
+  const struct wl_results *r = c->res;
   struct wl_report_doc *d = c->doc;
-  if (!r->have_plan)
+  if (!r->plan.present)
     return wl_report_paragraphf(d, err, "The derived initial conditions are not shown: %s.",
-                                r->scenario_note);
-  const struct wl_plan *p = &r->plan;
+                                WL_REPORT_NO_PLAN);
+  const struct wl_results_plan *p = &r->plan;
   struct ic_table *t = calloc(1, sizeof *t);
   if (!t)
     return wl_error_set(err, WL_ENOMEM, "report: no memory for a table");
   char src[160];
-  ic_row(t, "still-water depth h", p->h, NULL, "m", "scenario water.depth");
+  ic_row(t, "still-water depth h", p->depth, NULL, "m", "scenario water.depth");
   if (p->solitary.present) {
-    const struct wl_plan_solitary *ps = &p->solitary;
-    const int grim = ps->wave.theory == WL_SOLITARY_GRIMSHAW;
-    ic_row(t, "solitary wave: theory", 0, wl_waves_solitary_theory_text(ps->wave.theory, 0), NULL,
-           wl_waves_solitary_theory_text(ps->wave.theory, 1));
-    ic_row(t, "  height H", ps->wave.H, NULL, "m", "scenario loads.solitary.height");
-    ic_row(t, "  H/h", ps->wave.H / p->h, NULL, "", "valid to 0.78 (3rd order to ~0.5)");
-    ic_row(t, "  celerity c", wl_waves_solitary_celerity(&ps->wave), NULL, "m/s",
-           grim ? "seed 003 eq 23"
-           : ps->wave.theory == WL_SOLITARY_EXACT ? "exact: F sqrt(g h)"
-                                                  : "sqrt(g (h + H))");
-    ic_row(t, "  energy (integrated)", ps->integrated.energy, NULL, "J/m",
+    const struct wl_results_solitary *ps = &p->solitary;
+    const int theory = solitary_theory(ps->theory);
+    ic_row(t, "solitary wave: theory", 0, ps->theory, NULL,
+           theory < 0 ? "" : wl_waves_solitary_theory_text((enum wl_solitary_theory)theory, 1));
+    ic_row(t, "  height H", ps->H, NULL, "m", "scenario loads.solitary.height");
+    ic_row(t, "  H/h", ps->H / p->depth, NULL, "", "valid to 0.78 (3rd order to ~0.5)");
+    ic_row(t, "  celerity c", ps->celerity, NULL, "m/s",
+           theory == WL_SOLITARY_GRIMSHAW ? "seed 003 eq 23"
+           : theory == WL_SOLITARY_EXACT  ? "exact: F sqrt(g h)"
+                                          : "sqrt(g (h + H))");
+    ic_row(t, "  energy (integrated)", ps->energy_integrated, NULL, "J/m",
            "quadrature of the wave's field");
-    ic_row(t, "  energy, first order", ps->first_order.energy, NULL, "J/m", "KdV closed form");
+    ic_row(t, "  energy, first order", ps->energy_first_order, NULL, "J/m", "KdV closed form");
     ic_row(t, "  energy 0.958 rho g h^3", ps->energy_seed001, NULL, "J/m",
            "highest wave on h; seed 001 eq 22");
     if (ps->paddle) {
-      ic_row(t, "  paddle stroke", ps->goring.stroke, NULL, "m", "Goring (1978) piston paddle");
-      ic_row(t, "  paddle moves for", ps->goring.duration, NULL, "s", "Goring (1978)");
+      ic_row(t, "  paddle stroke", ps->paddle_stroke, NULL, "m", "Goring (1978) piston paddle");
+      ic_row(t, "  paddle moves for", ps->paddle_duration, NULL, "s", "Goring (1978)");
     } else {
       ic_row(t, "  initial crest at x", ps->crest_x0, NULL, "m", "initial condition (plan)");
     }
     ic_row(t, "  crest at the wall", ps->arrival_time, NULL, "s", "plan estimate");
   }
   if (p->explosion.present) {
-    const struct wl_plan_explosion *px = &p->explosion;
-    const struct wl_explosion_chain *ch = &px->chain;
-    static const char *const from[] = {"charge weight", "crater energy",
-                                       "energy of the solitary wave", "crater size"};
-    const char *what =
-        (int)px->source >= 0 && px->source <= WL_SOURCE_CRATER ? from[px->source] : "?";
-    if (px->source == WL_SOURCE_SOLITARY)
-      snprintf(src, sizeof src, "%s basis: %.5g %s",
-               px->basis == WL_BASIS_SEED001 ? "seed-001" : "per-width", px->matched_energy,
-               px->basis == WL_BASIS_PER_WIDTH && p->dims == 2 ? "J/m" : "J");
+    const struct wl_results_explosion *px = &p->explosion;
+    if (px->sized_to_solitary)
+      snprintf(src, sizeof src, "%s basis: %.5g %s", px->basis, px->matched_energy,
+               !strcmp(px->basis, "per-width") && p->dims == 2 ? "J/m" : "J");
     else
       snprintf(src, sizeof src, "scenario loads.explosion");
-    ic_row(t, "explosion: from the", 0, what, NULL, src);
-    ic_row(t, "  charge W", ch->charge_kg, NULL, "kg", "TNT; Van Dorn / Whalin chain");
-    ic_row(t, "  charge W", ch->charge_kg / WL_LB_KG, NULL, "lb", "TNT (1 lb = 0.45359237 kg)");
-    ic_row(t, "  crater radius R0", ch->r0, NULL, "m", "Van Dorn R0 = 9.6 W^0.3; seed 001 eq 4");
-    snprintf(src, sizeof src, "Whalin / Le Mehaute, C = %g; seed 001 eq 6/7", ch->whalin_coef);
-    ic_row(t, "  Hmax r", ch->hr, NULL, "m^2", src);
-    ic_row(t, "  crater depth eta0", ch->eta0, NULL, "m", "eta0 R0 = 0.81 Hmax r; seed 001 eq 5");
-    ic_row(t, "  crater energy, 3D", ch->crater_energy, NULL, "J",
+    ic_row(t, "explosion: from the", 0, px->source, NULL, src);
+    ic_row(t, "  charge W", px->charge, NULL, "kg", "TNT; Van Dorn / Whalin chain");
+    ic_row(t, "  charge W", px->charge / WL_LB_KG, NULL, "lb", "TNT (1 lb = 0.45359237 kg)");
+    ic_row(t, "  crater radius R0", px->chain_r0, NULL, "m",
+           "Van Dorn R0 = 9.6 W^0.3; seed 001 eq 4");
+    snprintf(src, sizeof src, "Whalin / Le Mehaute, C = %g; seed 001 eq 6/7", px->whalin_coef);
+    ic_row(t, "  Hmax r", px->hr, NULL, "m^2", src);
+    ic_row(t, "  crater depth eta0", px->chain_eta0, NULL, "m",
+           "eta0 R0 = 0.81 Hmax r; seed 001 eq 5");
+    ic_row(t, "  crater energy, 3D", px->crater_energy, NULL, "J",
            "pi rho g eta0^2 R0^2/6; seed 001 eq 3");
-    ic_row(t, "  chemical energy", ch->chemical_energy, NULL, "J", "4.184 MJ/kg TNT");
+    ic_row(t, "  chemical energy", px->chemical_energy, NULL, "J", "4.184 MJ/kg TNT");
     snprintf(src, sizeof src, "ceiling %.0f %%: seed 000 eq 9", 100.0 * px->wave_fraction);
-    ic_row(t, "  crater / chemical energy", 100.0 * ch->wave_fraction, NULL, "%", src);
-    ic_row(t, "  simulated shape", 0, wl_explosion_shape_name(px->shape), NULL,
-           "seed 000 eqs 1-3, seed 001 eq 1");
+    ic_row(t, "  crater / chemical energy", 100.0 * px->chain_wave_fraction, NULL, "%", src);
+    ic_row(t, "  simulated shape", 0, px->shape, NULL, "seed 000 eqs 1-3, seed 001 eq 1");
     ic_row(t, "  simulated eta0", px->eta0, NULL, "m", "as simulated");
     ic_row(t, "  simulated R0", px->r0, NULL, "m", "as simulated");
     ic_row(t, "  crater centre x", px->x_center, NULL, "m", "scenario loads.explosion.at");
@@ -285,14 +253,15 @@ static enum wl_status initial_conditions(struct wl_report_ctx *c, struct wl_erro
     ic_row(t, "  crater energy as simulated", px->energy, NULL, p->dims == 2 ? "J/m" : "J", src);
     snprintf(src, sizeof src, "net %+.4g %s", px->net_volume, p->dims == 2 ? "m^2/m" : "m^3");
     ic_row(t, "  conserves mass", 0, px->conserves_mass ? "yes" : "NO", NULL, src);
-    if (px->source == WL_SOURCE_SOLITARY && p->solitary.present) {
-      ic_row(t, "  equal-energy solitary H", p->solitary.wave.H, NULL, "m",
+    if (px->sized_to_solitary && p->solitary.present) {
+      ic_row(t, "  equal-energy solitary H", p->solitary.H, NULL, "m",
              "the solitary case, by construction");
     } else if (p->dims == 2) {
       double H = 0;
       struct wl_error e;
       wl_error_clear(&e);
-      if (wl_waves_solitary_height_from_energy(px->energy, p->h, p->g, p->rho, &H, &e) == WL_OK)
+      if (wl_waves_solitary_height_from_energy(px->energy, p->depth, p->g, p->rho, &H, &e) ==
+          WL_OK)
         ic_row(t, "  equal-energy solitary H", H, NULL, "m", "Grimshaw wave of this energy per m");
       else
         ic_row(t, "  equal-energy solitary H", 0, "out of range", NULL,
@@ -316,39 +285,37 @@ static enum wl_status initial_conditions(struct wl_report_ctx *c, struct wl_erro
 
 enum wl_status wl_report_render_scene(struct wl_report_ctx *c, const struct wl_report_section *s,
                                       struct wl_error *err) {
-  const struct wl_report_results *r = c->res;
+  const struct wl_results *r = c->res;
   struct wl_report_doc *d = c->doc;
   enum wl_status st = wl_report_section_begin(c, s, err);
   struct geom g;
   if (!geometry(r, &g)) {
     if (!st)
       st = wl_report_paragraphf(d, err,
-                                "The flume cannot be drawn: the results hold neither a scenario "
-                                "this version can read (%s) nor a load case with the wall's "
-                                "position.",
-                                r->scenario_note);
+                                "The flume cannot be drawn: the results hold neither a plan "
+                                "(%s) nor a load case with the wall's position.",
+                                WL_REPORT_NO_PLAN);
     return st;
   }
-  struct wl_report_scratch sc = {0};
   struct scene_parts *p = calloc(1, sizeof *p);
   if (!p)
     return wl_error_set(err, WL_ENOMEM, "report: no memory for the scene");
-  build_scene(r, &g, &sc, p);
+  build_scene(r, &g, p);
   char cap[1024], extra[600] = "";
-  if (!g.from_scenario)
+  if (!g.from_plan)
     snprintf(extra, sizeof extra,
              " The bathymetry is not available (%s); the bed is drawn flat "
              "at the wall's toe.",
-             r->scenario_note);
-  else if (r->have_plan) {
+             WL_REPORT_NO_PLAN);
+  else {
     size_t used = 0;
-    for (int i = 0; i < WL_REPORT_N_CASES; i++) {
+    for (int i = 0; i < WL_RESULTS_N_CASES; i++) {
       double xl = i == 0 ? r->plan.solitary.x_left : r->plan.explosion.x_left;
       int present = i == 0 ? r->plan.solitary.present : r->plan.explosion.present;
       if (present && xl > 0 && used < sizeof extra)
         used += (size_t)snprintf(extra + used, sizeof extra - used,
                                  " The %s case models the flume from x = %.4g m.",
-                                 wl_report_case_name(i), xl);
+                                 wl_store_results_case_name(i), xl);
     }
   }
   struct wl_report_scene scene = {NULL,     p->shapes,      p->n_shapes,
@@ -400,14 +367,13 @@ enum wl_status wl_report_render_scene(struct wl_report_ctx *c, const struct wl_r
   if (!st)
     st = initial_conditions(c, err);
   free(p);
-  wl_report_scratch_free(&sc);
   return st;
 }
 
 /* ---- snapshots ------------------------------------------------------------------------ */
 
 /* Index of the snapshot nearest t. */
-static size_t nearest(const struct wl_report_snapshot_ref *refs, size_t n, double t) {
+static size_t nearest(const struct wl_results_snapshot_ref *refs, size_t n, double t) {
   size_t best = 0;
   for (size_t i = 1; i < n; i++)
     if (fabs(refs[i].time - t) < fabs(refs[best].time - t))
@@ -422,16 +388,16 @@ static int cmp_size(const void *a, const void *b) {
 
 static enum wl_status snapshots_case(struct wl_report_ctx *c, const struct wl_report_section *s,
                                      int ci, struct wl_error *err) {
-  const struct wl_report_results *r = c->res;
-  const struct wl_report_case *k = &r->cases[ci];
+  const struct wl_results *r = c->res;
+  const struct wl_results_case *k = &r->cases[ci];
   struct wl_report_doc *d = c->doc;
   char path[1200];
   snprintf(path, sizeof path, "%s/particles_%s.h5", r->dir, k->name);
-  struct wl_report_snapshot_ref *refs = NULL;
+  struct wl_results_snapshot_ref *refs = NULL;
   size_t n_refs = 0;
   struct wl_error e;
   wl_error_clear(&e);
-  enum wl_status st = wl_report_snapshot_list(path, &refs, &n_refs, &e);
+  enum wl_status st = wl_store_snapshot_list(path, &refs, &n_refs, &e);
   if (st == WL_ENOMEM)
     return wl_error_set(err, st, "%s", e.msg);
   if (st || n_refs == 0) {
@@ -476,14 +442,14 @@ static enum wl_status snapshots_case(struct wl_report_ctx *c, const struct wl_re
   if (s->has_x_range)
     x0 = s->x_range[0], x1 = s->x_range[1];
 
-  enum wl_report_quantity q = s->field == WL_REPORT_FIELD_VELOCITY  ? WL_REPORT_Q_SPEED
-                              : s->field == WL_REPORT_FIELD_DENSITY ? WL_REPORT_Q_DENSITY
-                                                                    : WL_REPORT_Q_PRESSURE;
-  double scale = q == WL_REPORT_Q_PRESSURE ? KILO : 1.0;
-  const char *qlabel = q == WL_REPORT_Q_PRESSURE ? "pressure"
-                       : q == WL_REPORT_Q_SPEED  ? "speed"
+  enum wl_results_quantity q = s->field == WL_REPORT_FIELD_VELOCITY  ? WL_RESULTS_Q_SPEED
+                              : s->field == WL_REPORT_FIELD_DENSITY ? WL_RESULTS_Q_DENSITY
+                                                                    : WL_RESULTS_Q_PRESSURE;
+  double scale = q == WL_RESULTS_Q_PRESSURE ? KILO : 1.0;
+  const char *qlabel = q == WL_RESULTS_Q_PRESSURE ? "pressure"
+                       : q == WL_RESULTS_Q_SPEED  ? "speed"
                                                  : "density";
-  const char *qunit = q == WL_REPORT_Q_PRESSURE ? "kPa" : q == WL_REPORT_Q_SPEED ? "m/s" : "kg/m^3";
+  const char *qunit = q == WL_RESULTS_Q_PRESSURE ? "kPa" : q == WL_RESULTS_Q_SPEED ? "m/s" : "kg/m^3";
 
   /* read the chosen snapshots; one colour range for the case */
   double *xs[WL_REPORT_MAX_TIMES] = {0}, *zs[WL_REPORT_MAX_TIMES] = {0},
@@ -494,7 +460,7 @@ static enum wl_status snapshots_case(struct wl_report_ctx *c, const struct wl_re
   char bad[WL_ERROR_MSG_MAX] = "";
   for (int i = 0; i < n_pick; i++) {
     wl_error_clear(&e);
-    enum wl_status rs = wl_report_snapshot_read(path, refs[pick[i]].group, q, &xs[i], &zs[i],
+    enum wl_status rs = wl_store_snapshot_read(path, refs[pick[i]].group, q, &xs[i], &zs[i],
                                                 &vs[i], &kinds[i], &ns[i], &e);
     if (rs == WL_ENOMEM) {
       st = wl_error_set(err, rs, "%s", e.msg);
@@ -571,12 +537,12 @@ static enum wl_status snapshots_case(struct wl_report_ctx *c, const struct wl_re
 
 enum wl_status wl_report_render_snapshots(struct wl_report_ctx *c,
                                           const struct wl_report_section *s, struct wl_error *err) {
-  const struct wl_report_results *r = c->res;
+  const struct wl_results *r = c->res;
   enum wl_status st = wl_report_section_begin(c, s, err);
-  for (int i = 0; !st && i < WL_REPORT_N_CASES; i++) {
+  for (int i = 0; !st && i < WL_RESULTS_N_CASES; i++) {
     if (!r->cases[i].present) {
       st = wl_report_paragraphf(c->doc, err, "The %s case is not in the results: no snapshots.",
-                                wl_report_case_name(i));
+                                wl_store_results_case_name(i));
       continue;
     }
     st = wl_report_add_heading(c->doc, 2, wl_report_case_label(i), err);

@@ -80,7 +80,7 @@ static int governing_changes(const double *xs, int nx, const double *env_s, cons
     if (prev >= 0 && g != prev && n < max_refs) {
       int kp = k - 1;
       while (kp > 0 && wl_report_governs(env_s[kp], env_e[kp]) < 0) kp--;
-      snprintf(labels[n], 64, "%s governs", g == WL_REPORT_CASE_EXPLOSION ? "explosion" : "solitary");
+      snprintf(labels[n], 64, "%s governs", g == WL_RESULTS_CASE_EXPLOSION ? "explosion" : "solitary");
       refs[n].at = 0.5 * (xs[kp] + xs[k]);
       refs[n].vertical = 1;
       refs[n].label = labels[n];
@@ -174,14 +174,14 @@ static enum wl_status design_values(const struct wl_report_sweep *sw, struct des
       if (!t->value[l][f]) return wl_error_set(err, WL_ENOMEM, "sweep report: no memory");
       for (int i = 0; i < sw->n_cases; i++) t->value[l][f][i] = NAN;
     }
-  struct wl_report_results *r = malloc(sizeof *r);
+  struct wl_results *r = malloc(sizeof *r);
   if (!r) return wl_error_set(err, WL_ENOMEM, "sweep report: no memory");
-  wl_report_results_init(r);
+  wl_store_results_init(r);
   for (int i = 0; i < sw->n_cases; i++) {
     if (!sw->results[i]) continue;
     struct wl_error e;
     wl_error_clear(&e);
-    if (wl_report_results_load(sw->results[i], r, &e) != WL_OK) continue;
+    if (wl_store_results_read(sw->results[i], r, &e) != WL_OK) continue;
     (*n_read)++;
     for (int l = 0; l < N_LOADS; l++) {
       struct wl_design_scenario ds;
@@ -198,7 +198,7 @@ static enum wl_status design_values(const struct wl_report_sweep *sw, struct des
         if (!res[k].in_range) t->out_of_range[f] = 1;
       }
     }
-    wl_report_results_clear(r);
+    wl_store_results_clear(r);
   }
   free(r);
   return WL_OK;
@@ -289,7 +289,7 @@ static enum wl_status governing_text(struct wl_report_doc *d, const struct wl_re
         wl_report_fmt(xs[k], 4, v, sizeof v);
         u += (size_t)snprintf(text + u, sizeof text - u, "%s %s from %s %s", prev == -2 ? "" : ";",
                               g < 0                           ? "no result"
-                              : g == WL_REPORT_CASE_EXPLOSION ? "the explosion governs"
+                              : g == WL_RESULTS_CASE_EXPLOSION ? "the explosion governs"
                                                               : "the solitary wave governs",
                               v, par->unit);
         prev = g;
@@ -337,7 +337,7 @@ static enum wl_status cases_table(struct wl_report_doc *d, const struct wl_repor
     }
     if (both) {
       const int g = wl_report_governs(sw->load[0].peak_force[i], sw->load[1].peak_force[i]);
-      row[c++].text = g < 0 ? "-" : g == WL_REPORT_CASE_EXPLOSION ? "explosion" : "solitary";
+      row[c++].text = g < 0 ? "-" : g == WL_RESULTS_CASE_EXPLOSION ? "explosion" : "solitary";
     }
   }
   struct wl_report_table t = {"The cases: swept values (SI), status, and the loads to quote "

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "../report/draw.h" /* the report module's page/plot toolkit */
+#include "wallload/draw.h"
 #include "internal.h"
 #include "wallload/config.h"
 #include "wallload/store.h"

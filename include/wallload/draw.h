@@ -1,7 +1,8 @@
-/* draw.h: the report module's page, table and plot toolkit (private to
- * src/report; section renderers call it). No cairo types appear here, so a
- * test can include this header without cairo's include path; renderers that
- * need raw cairo include doc.h.
+/* draw.h: the report module's page, table and plot toolkit, public so that
+ * the report's section renderers and `validate`'s PDF draw with one
+ * toolkit. No cairo types appear here (library headers stay in src/), so a
+ * caller needs no cairo include path; the report's renderers that need raw
+ * cairo include src/report/doc.h.
  *
  * Model. A document (struct wl_report_doc, opaque) is an A4 portrait PDF
  * written with cairo's PDF surface (vector output, fonts subset and embedded
@@ -24,8 +25,8 @@
  * calls return the same status without drawing, and wl_report_doc_finish
  * then removes the partial file, so a renderer may check once at the end.
  * Cairo's status is checked at every page end and at finish. Nothing prints. */
-#ifndef WALLLOAD_REPORT_DRAW_H
-#define WALLLOAD_REPORT_DRAW_H
+#ifndef WALLLOAD_DRAW_H
+#define WALLLOAD_DRAW_H
 
 #include <stddef.h>
 
