@@ -9,7 +9,11 @@ fail=0
 ok() { echo "PASS $1"; }
 bad() { echo "FAIL $1"; fail=$((fail+1)); }
 work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+# The clean-up runs in this shell only: a background child signalled
+# before it execs is still a copy of this shell, runs the trap, and would
+# delete the work directory under the rest of the test (its $$ and even
+# $BASHPID read as this shell's then; a new sh's parent does not).
+trap 'if [ "$(exec sh -c "echo \$PPID")" = "$$" ]; then rm -rf "$work"; fi' EXIT
 cp "$src/tests/scenarios/good/tiny.yaml" "$work/tiny.yaml"
 cd "$work" || exit 1
 out=$("$bin" assess tiny.yaml --quiet --end-time 0.3 2>&1); rc=$?

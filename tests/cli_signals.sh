@@ -32,7 +32,11 @@ for tool in python3 pdfinfo pdftotext; do
 done
 work=$(mktemp -d)
 pids=""
-trap 'for p in $pids; do kill -9 $p 2>/dev/null; done; rm -rf "$work"' EXIT
+# The clean-up runs in this shell only: a background child signalled
+# before it execs is still a copy of this shell, runs the trap, and would
+# delete the work directory under the rest of the test (its $$ and even
+# $BASHPID read as this shell's then; a new sh's parent does not).
+trap 'if [ "$(exec sh -c "echo \$PPID")" = "$$" ]; then for p in $pids; do kill -9 $p 2>/dev/null; done; rm -rf "$work"; fi' EXIT
 cd "$work" || exit 1
 cp "$src/tests/scenarios/good/tiny.yaml" tiny.yaml
 if [ "${WL_TEST_QUICK:-0}" = 1 ]; then

@@ -18,7 +18,11 @@ bin=$1; src=$2
 sweep_mpi_setup
 work=$(mktemp -d)
 pid=""
-trap '[ -n "$pid" ] && kill -9 $pid 2>/dev/null; rm -rf "$work"' EXIT
+# The clean-up runs in this shell only: a background child signalled
+# before it execs is still a copy of this shell, runs the trap, and would
+# delete the work directory under the rest of the test (its $$ and even
+# $BASHPID read as this shell's then; a new sh's parent does not).
+trap 'if [ "$(exec sh -c "echo \$PPID")" = "$$" ]; then [ -n "$pid" ] && kill -9 $pid 2>/dev/null; rm -rf "$work"; fi' EXIT
 cd "$work" || exit 1
 cp "$src/tests/scenarios/sweep/tiny-sweep.yaml" .
 ARGS=(sweep tiny-sweep.yaml --threads 1 --backend cpu)
