@@ -39,18 +39,8 @@ pack)
   rm -rf "$E" && mkdir -p "$E/lib" "$E/fonts"
   cmake --build build-e2e -j2 --target test_cuda_backend >/dev/null
   cp build-e2e/wallload build-e2e/tests/test_cuda_backend "$E/"
-  ldd build-e2e/wallload | awk '$3 ~ /^\// {print $3}' |
-    grep -v -E '/(libc|libm|libdl|libpthread|librt|libresolv|ld-linux-x86-64)\.so' |
-    xargs -I{} cp -L {} "$E/lib/"
-  cp /usr/share/fonts/truetype/dejavu/DejaVuSans{,-Bold,Mono}.ttf "$E/fonts/"
-  cat >"$E/fonts.conf" <<'XML'
-<?xml version="1.0"?>
-<!DOCTYPE fontconfig SYSTEM "fonts.dtd">
-<fontconfig>
-  <dir prefix="relative">fonts</dir>
-  <cachedir>/tmp/wl-fontcache</cachedir>
-</fontconfig>
-XML
+  . "$root/bench/pack_runtime.sh"
+  pack_runtime "$E" build-e2e/wallload
   # solitary wave on a vertical wall, h = 0.2 m, H/h = 0.3, dp = 0.01 m
   # (tests/test_solitary_wall.c: crest x0 = 0.55 L, wall x0 + 0.75 L, L = 6/K)
   cat >"$E/solwall.yaml" <<'YAML'

@@ -23,24 +23,14 @@ pack)
   set -e
   base=$2 new=$3 D=$4
   rm -rf "$D/base" "$D/new" "$D/lib" "$D/fonts"
-  mkdir -p "$D/base" "$D/new" "$D/lib" "$D/fonts"
+  mkdir -p "$D/base" "$D/new"
   for b in base new; do
     src=$base; [ $b = new ] && src=$new
     cp "$src/wallload" "$src/tests/test_cuda_backend" "$src/tests/h5_series_equal" "$D/$b/"
     strip "$D/$b/"*
   done
-  for f in "$D"/base/* "$D"/new/*; do ldd "$f"; done | awk '$3 ~ /^\// {print $3}' | sort -u |
-    grep -v -E '/(libc|libm|libdl|libpthread|librt|libresolv|ld-linux-x86-64)\.so' |
-    xargs -I{} cp -L {} "$D/lib/"
-  cp /usr/share/fonts/truetype/dejavu/DejaVuSans{,-Bold,Mono}.ttf "$D/fonts/"
-  cat >"$D/fonts.conf" <<'XML'
-<?xml version="1.0"?>
-<!DOCTYPE fontconfig SYSTEM "fonts.dtd">
-<fontconfig>
-  <dir prefix="relative">fonts</dir>
-  <cachedir>/tmp/wl-fontcache</cachedir>
-</fontconfig>
-XML
+  . "$here/bench/pack_runtime.sh"
+  pack_runtime "$D" "$D"/base/* "$D"/new/*
   du -sh "$D"
   ;;
 run)
