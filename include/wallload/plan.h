@@ -182,14 +182,15 @@ static inline void wl_plan_default_numerics(struct wl_sph_params *prm) {
  * ran at about 3e5 symplectic particle-steps/s on the 2-core development
  * machine. */
 #define WL_PLAN_CPU_RATE_3D 6.0e5
-/* The CUDA backend on an H100 (BENCHMARKS.md, "CUDA backend, H100"): a small
- * flume's step costs a fixed time whatever its size (launches and the
- * per-step synchronisation: about 215 us symplectic, 150 us Verlet, from
- * seawall.yaml's cases); large runs go at the force loop's rate (the 2D
- * dam break of 0.89M particles, the 3D one of 1.03M with the split loop).
- * The estimate takes the larger of the two times. */
-#define WL_PLAN_GPU_STEP_S 2.2e-4
-#define WL_PLAN_GPU_STEP_S_VERLET 1.5e-4
+/* The CUDA backend on an H100 (BENCHMARKS.md, "CUDA backend: the cost of a
+ * step"): a small flume's step costs a fixed time whatever its size (a
+ * dozen latency-bound kernels and the outputs: about 98 us symplectic,
+ * 72 us Verlet, from seawall.yaml's cases at dp = 0.0125 m); large runs go
+ * at the force loop's rate (the 2D dam break of 0.89M particles, the 3D one
+ * of 1.03M with the split loop). The estimate takes the larger of the two
+ * times. */
+#define WL_PLAN_GPU_STEP_S 9.8e-5
+#define WL_PLAN_GPU_STEP_S_VERLET 7.2e-5
 #define WL_PLAN_GPU_RATE 2.70e9
 #define WL_PLAN_GPU_RATE_3D 7.67e8
 
