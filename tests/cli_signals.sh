@@ -155,13 +155,15 @@ for k in $(seq 0 $((N_DELAYS - 1))); do
   stop_at "SIGTERM after $d s" TERM "$d"
 done
 
-# SIGTERM aimed at each phase by the files the run writes there (a few
-# tries each: the file may come and go between two looks).
+# SIGTERM aimed at each phase by the files the run writes there (up to ten
+# tries each, stopping at the first hit: the file may come and go between
+# two looks, and on a loaded machine the signal can land after the phase;
+# three tries missed the results' writing once in a fresh-Debian run).
 for aim in "stepping:particles_solitary.h5.tmp" "writing results:results.h5.tmp" \
            "rendering the report:report.pdf.part"; do
   want=${aim%%:*}; file=${aim#*:}
-  for try in 1 2 3; do
-    unset "phases[$want]"
+  [ -n "${phases[$want]:-}" ] && continue # the sweep met it already
+  for try in $(seq 10); do
     stop_when "SIGTERM when $file appears (try $try)" TERM "$file"
     [ -n "${phases[$want]:-}" ] && break
   done
