@@ -42,7 +42,7 @@ cp "$src/tests/scenarios/good/tiny.yaml" tiny.yaml
 if [ "${WL_TEST_QUICK:-0}" = 1 ]; then
   T_END=0.05; N_DELAYS=4; N_KILL=1; KILL_AT="results.h5.tmp report.pdf.part"
 else
-  T_END=0.2; N_DELAYS=25; N_KILL=4; KILL_AT="results.h5.tmp summary.json.tmp report.pdf.part"
+  T_END=0.2; N_DELAYS=13; N_KILL=4; KILL_AT="results.h5.tmp summary.json.tmp report.pdf.part"
 fi
 ARGS=(assess tiny.yaml --threads 1 --end-time $T_END)
 
