@@ -125,6 +125,39 @@ int main(void) {
                 "CPU runtime estimate of seawall.yaml at 0.012 m vs its 2-core run (BENCHMARKS.md)");
     wl_scenario_clear(&sw);
   }
+  /* Runs side by side on one GPU (plan.h wl_plan_gpu_side_by_side) against
+   * the measured 16-case sweep of seawall-sweep.yaml (BENCHMARKS.md,
+   * "Sweeps", H200, 2026-11-26): its cases took 9.4 to 15.6 s alone, 197.4 s
+   * one after the other, 49.4 s 8 at a time and 42.0 s 16 at a time. The
+   * cases' times here are spread evenly over that range with the measured
+   * sum; within 10 % of each measured sweep. */
+  {
+    struct wl_plan_cost runs[16];
+    double sum = 0.0;
+    for (int i = 0; i < 16; i++) {
+      memset(&runs[i], 0, sizeof runs[i]);
+      runs[i].gpu_seconds = 9.4 + (15.6 - 9.4) * i / 15.0;
+      sum += runs[i].gpu_seconds;
+    }
+    for (int i = 0; i < 16; i++) runs[i].gpu_seconds *= 197.4 / sum;
+    CHECK_REL(wl_plan_gpu_side_by_side(runs, 16, 1), 197.4, 1e-12,
+              "one at a time: the cases' times added");
+    CHECK_REL(wl_plan_gpu_side_by_side(runs, 16, 8), 49.4, 0.10,
+              "8 side by side vs the measured sweep (BENCHMARKS.md, Sweeps)");
+    CHECK_REL(wl_plan_gpu_side_by_side(runs, 16, 16), 42.0, 0.10,
+              "16 side by side vs the measured sweep (BENCHMARKS.md, Sweeps)");
+    /* never below the longest case alone, nor below the force loops' work */
+    runs[0].gpu_seconds = 100.0;
+    CHECK_REL(wl_plan_gpu_side_by_side(runs, 16, 16), 100.0, 1e-12, "the longest case bounds it");
+    runs[0].gpu_seconds = 10.0;
+    for (int i = 0; i < 16; i++) runs[i].gpu_work_seconds = 9.0;
+    CHECK_REL(wl_plan_gpu_side_by_side(runs, 16, 16), 16 * 9.0, 1e-12,
+              "work-bound cases: their work added");
+    /* how many fit: half of the GPU's memory */
+    CHECK_TRUE(wl_plan_gpu_side_by_side_width(10e9, 80e9, 16) == 4, "4 runs of 10 GB in half of 80 GB");
+    CHECK_TRUE(wl_plan_gpu_side_by_side_width(1e6, 80e9, 16) == 16, "at most the given width");
+    CHECK_TRUE(wl_plan_gpu_side_by_side_width(60e9, 80e9, 16) == 1, "at least one");
+  }
   /* Whole rows of still water (plan.h wl_plan_whole_rows_dp). seawall.yaml:
    * h = 0.36 m, a platform at z = 0.30 m (0.06 m of water at the wall), a
    * ladder from 0.025 m asked for (2 particles over the 0.05 m solitary

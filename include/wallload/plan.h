@@ -131,6 +131,8 @@ struct wl_plan {
   double particle_steps;            /* estimated for all cases */
   double cpu_seconds;               /* estimated on the reference CPU rate */
   double gpu_seconds;               /* estimated for the CUDA backend on an H100 */
+  double gpu_work_seconds;          /* its force loops alone at WL_PLAN_GPU_RATE(_3D): the
+                                       bound when runs share the GPU */
   int n_notes;
   char notes[WL_PLAN_MAX_NOTES][320]; /* warnings and assumptions worth reading */
 };
@@ -241,7 +243,49 @@ struct wl_plan_cost {
   double host_bytes, device_bytes; /* the largest case or level */
   double cpu_seconds;              /* at the reference rate, WL_PLAN_CPU_THREADS threads */
   double gpu_seconds;              /* on an H100 */
+  double gpu_work_seconds;         /* the force loops' part of it (struct wl_plan) */
 };
+
+/* What one plan costs (one resolution). */
+struct wl_plan_cost wl_plan_cost_of(const struct wl_plan *p);
+
+/* The cost of the convergence ladder, as assess runs it: each level
+ * re-planned at its dp (wl_plan_level_dp). Prints one line per level and
+ * the total to `out` (only the total when `brief`; out may be NULL).
+ * *cost gets the sum of the levels' CPU times, their GPU time side by side
+ * (one after the other when a target error may stop the ladder early, or
+ * when they do not fit the GPU together) and the largest level's memory;
+ * without a ladder the plan's own cost. A level that cannot be planned
+ * leaves *cost the plan's own and returns its status and error (the
+ * listing names the level). */
+enum wl_status wl_plan_ladder_cost(const struct wl_scenario *s, const struct wl_plan *plan,
+                                   int brief, FILE *out, struct wl_plan_cost *cost,
+                                   struct wl_error *err);
+
+/* Runs side by side on one GPU: a ladder's levels (src/assess/ladder.c) and
+ * a sweep's cases (src/sweep/run.c), together within this share of its
+ * memory. */
+#define WL_PLAN_GPU_SIDE_BY_SIDE_MEMORY 0.5
+/* The GPU `check` prices runs for: the H100's memory [bytes]. */
+#define WL_PLAN_GPU_BYTES 80.0e9
+/* A small flume's step is a dozen latency-bound kernels that leave the GPU
+ * mostly idle, so k runs sharing it take, together, their times alone
+ * divided by k / (1 + WL_PLAN_GPU_SHARE_COST (k - 1)): each run beside
+ * others costs the GPU 0.15 of a run alone. Never less than the longest
+ * run alone, nor than the force loops' work of all of them at the full
+ * rate. Fitted to the 16-case sweep of BENCHMARKS.md ("Sweeps"): 16 at a
+ * time took 42.0 s, 8 at a time 49.4 s, one after the other 197.4 s; the
+ * model gives 40.1 and 50.6 s. */
+#define WL_PLAN_GPU_SHARE_COST 0.15
+
+/* The GPU time of n runs (each costed alone in runs[i]) run at most
+ * `width` at a time on one GPU, a new one starting as one ends. */
+double wl_plan_gpu_side_by_side(const struct wl_plan_cost *runs, int n, int width);
+
+/* How many runs of `device_bytes` each fit side by side on a GPU of
+ * `gpu_bytes` (WL_PLAN_GPU_SIDE_BY_SIDE_MEMORY of it), between 1 and
+ * `max_width`. */
+int wl_plan_gpu_side_by_side_width(double device_bytes, double gpu_bytes, int max_width);
 
 /* The machine a run is planned for and the budget it is held to. */
 struct wl_plan_machine {

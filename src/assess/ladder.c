@@ -113,9 +113,9 @@ static void ladder_note(struct wl_assess_convergence *cv, const char *stop_word)
              cv->n_levels, e, basis, cv->target_met ? "below" : "above", t);
 }
 
-/* Levels side by side on one GPU: at most this share of its memory for all
- * of them together (the plan's estimates), else one after the other. */
-#define LADDER_GPU_MEMORY_SHARE 0.5
+/* Levels side by side on one GPU: within WL_PLAN_GPU_SIDE_BY_SIDE_MEMORY
+ * of its memory for all of them together (the plan's estimates), else one
+ * after the other. */
 
 /* A coarser level run beside the finest (ladder_side_by_side). */
 struct level_job {
@@ -171,7 +171,7 @@ static int ladder_side_by_side(const struct wl_scenario *s, enum wl_load_case lo
     st = plan_level(s, &cv->lv[k], k, n, &jobs[k].s, &jobs[k].p, err);
     bytes += jobs[k].p.gpu_memory_bytes;
   }
-  if (st || !(bytes <= LADDER_GPU_MEMORY_SHARE * gpu_bytes)) {
+  if (st || !(bytes <= WL_PLAN_GPU_SIDE_BY_SIDE_MEMORY * gpu_bytes)) {
     free(jobs);
     return 0; /* the sequential ladder plans again and says why a level fails */
   }

@@ -63,66 +63,6 @@ enum wl_status wl_cli_load_sweep(const char *path, struct wl_scenario *s, struct
   return st;
 }
 
-/* What one plan costs (one resolution). */
-static struct wl_plan_cost plan_cost(const struct wl_plan *p) {
-  struct wl_plan_cost c = {p->dims, p->memory_bytes, p->gpu_memory_bytes, p->cpu_seconds,
-                           p->gpu_seconds};
-  return c;
-}
-
-/* The cost of the convergence ladder: each level re-planned at its dp (plan.h
- * wl_plan_level_dp)
- * (as assess runs it). Prints one line per level and the total to out (or
- * only the total line when `brief`; out may be NULL); *cost gets the sum of
- * the levels' times and the largest level's memory; without a ladder, or
- * when a level cannot be planned (printed), the plan's own cost. */
-static void ladder_cost(const struct wl_scenario *s, const struct wl_plan *plan, int brief,
-                       FILE *out, struct wl_plan_cost *cost) {
-  *cost = plan_cost(plan);
-  int n = s->resolution.n_levels;
-  if (n == 0) return;
-  struct wl_scenario *sl = malloc(sizeof *sl);
-  struct wl_plan *pl = malloc(sizeof *pl);
-  struct wl_plan_cost sum = {plan->dims, 0, 0, 0, 0};
-  double steps = 0.0;
-  int ok = sl && pl;
-  if (!brief && out) fprintf(out, "\nConvergence ladder (resolution.convergence), coarse to fine\n");
-  for (int k = 0; ok && k < n; k++) {
-    *sl = *s; /* shallow copy: only read by the plan */
-    sl->resolution.dp.is_auto = 0;
-    sl->resolution.dp.given = 1;
-    sl->resolution.dp.q.si = wl_plan_level_dp(s, plan, s->resolution.levels[k].q.si);
-    struct wl_error e;
-    wl_error_clear(&e);
-    if (wl_plan_make(sl, pl, &e) != WL_OK) {
-      if (!brief && out) fprintf(out, "  level %d: cannot be planned: %s\n", k + 1, e.msg);
-      ok = 0;
-      break;
-    }
-    sum.cpu_seconds += pl->cpu_seconds;
-    sum.gpu_seconds += pl->gpu_seconds;
-    sum.host_bytes = fmax(sum.host_bytes, pl->memory_bytes);
-    sum.device_bytes = fmax(sum.device_bytes, pl->gpu_memory_bytes);
-    steps += pl->particle_steps;
-    if (!brief && out) {
-      char dps[32];
-      snprintf(dps, sizeof dps, "%.4g m", pl->dp);
-      fprintf(out, "  level %d  x %-5s dp = %-10s %8ld particles  %10.3e particle-steps  %6.0f s\n",
-              k + 1, s->resolution.levels[k].text, dps, pl->n_fluid + pl->n_boundary,
-              pl->particle_steps, pl->cpu_seconds);
-    }
-  }
-  free(sl);
-  free(pl);
-  if (!ok) return;
-  if (!brief && out)
-    fprintf(out, "  all levels: %.3e particle-steps, about %.0f s on the CPU%s\n", steps,
-            sum.cpu_seconds,
-            s->resolution.target_error.given ? " (less when target_error stops the ladder early)"
-                                             : "");
-  *cost = sum;
-}
-
 /* --budget HOURS and --force-large, shared by check and assess: 1 when
  * argv[*i] is one of them (consumed, *i advanced past a value), 0 when it
  * is not, -1 on a bad value (err set). */
@@ -184,7 +124,10 @@ enum wl_status wl_cli_sweep_price(const struct wl_sweep *sw, const struct wl_ass
   if (first) wl_scenario_init(first);
   if (!cs || !first || !plan || !first_plan)
     st = wl_error_set(err, WL_ENOMEM, "%s: no memory to price the sweep", sw->path);
-  struct wl_plan_cost total = {0, 0, 0, 0, 0};
+  struct wl_plan_cost total = {0, 0, 0, 0, 0, 0};
+  double footprint = 0.0;
+  struct wl_plan_cost *case_cost = calloc(sw->n_cases > 0 ? (size_t)sw->n_cases : 1, sizeof *case_cost);
+  if (!case_cost && !st) st = wl_error_set(err, WL_ENOMEM, "%s: no memory to price the sweep", sw->path);
   if (!st && out) {
     fprintf(out, "\nSweep: %d cases (", sw->n_cases);
     for (int k = 0; k < sw->n_params; k++)
@@ -208,32 +151,42 @@ enum wl_status wl_cli_sweep_price(const struct wl_sweep *sw, const struct wl_ass
       break;
     }
     struct wl_plan_cost cost;
-    ladder_cost(c, p, 1, NULL, &cost);
+    struct wl_error ladder_err; /* a level that cannot be planned: the case's own cost */
+    wl_error_clear(&ladder_err);
+    wl_plan_ladder_cost(c, p, 1, NULL, &cost, &ladder_err);
     total.dims = cost.dims > total.dims ? cost.dims : total.dims;
     total.host_bytes = fmax(total.host_bytes, cost.host_bytes);
     total.device_bytes = fmax(total.device_bytes, cost.device_bytes);
+    /* side by side, a case holds all its ladder's levels at once */
+    footprint = fmax(footprint, (c->resolution.n_levels > 0 ? c->resolution.n_levels : 1) *
+                                    cost.device_bytes);
     total.cpu_seconds += cost.cpu_seconds;
-    total.gpu_seconds += cost.gpu_seconds;
+    total.gpu_work_seconds += cost.gpu_work_seconds;
+    case_cost[i] = cost;
     if (out)
       fprintf(out, "  %4d  %-40s %10ld %16.6g %16.6g\n", i, sw->cases[i].id,
               p->n_fluid + p->n_boundary, cost.cpu_seconds, cost.gpu_seconds);
     if (i) wl_scenario_clear(c);
   }
+  /* on a GPU the cases run side by side (src/sweep/run.c), each counting
+   * its ladder's levels' memory */
+  int width = 1;
+  if (!st) {
+    width = wl_plan_gpu_side_by_side_width(footprint, WL_PLAN_GPU_BYTES,
+                                           WL_SWEEP_SIDE_BY_SIDE_MAX);
+    total.gpu_seconds = wl_plan_gpu_side_by_side(case_cost, sw->n_cases, width);
+  }
   if (!st && out)
     fprintf(out,
             "  sweep CPU runtime (estimate) %.6g s (%.3g h), the cases one after the other; "
-            "GPU runtime (estimate) %.6g s\n",
-            total.cpu_seconds, total.cpu_seconds / 3600.0, total.gpu_seconds);
-  if (!st && out && total.gpu_seconds > 0)
-    fprintf(out,
-            "  on a GPU the sweep runs up to %d cases side by side: cases that leave it idle\n"
-            "  (tens of thousands of particles) take a fraction of that sum (BENCHMARKS.md, Sweeps)\n",
-            WL_SWEEP_SIDE_BY_SIDE_MAX);
+            "GPU runtime (estimate, an H100) %.6g s, up to %d cases side by side\n",
+            total.cpu_seconds, total.cpu_seconds / 3600.0, total.gpu_seconds,
+            width < sw->n_cases ? width : sw->n_cases);
   /* the machine and the budget judge the sweep as one run */
   if (!st && (st = judge_run(first, first_plan, &total, opts, budget_s, force_large, out, err)))
-    wl_error_prefix(err, "the sweep's %d cases, one after the other: ", sw->n_cases);
+    wl_error_prefix(err, "the sweep's %d cases: ", sw->n_cases);
   if (first) wl_scenario_clear(first);
-  free(cs), free(first), free(plan), free(first_plan);
+  free(case_cost), free(cs), free(first), free(plan), free(first_plan);
   return st;
 }
 
@@ -310,7 +263,9 @@ enum wl_status wl_cli_check(int argc, char **argv, struct wl_error *err) {
   wl_scenario_write_resolved(&s, stdout);
   wl_plan_write(&plan, stdout);
   struct wl_plan_cost cost;
-  ladder_cost(&s, &plan, 0, stdout, &cost);
+  struct wl_error ladder_err; /* printed with the ladder; the plan's own cost then */
+  wl_error_clear(&ladder_err);
+  wl_plan_ladder_cost(&s, &plan, 0, stdout, &cost, &ladder_err);
   /* printed in full above; a case that cannot run, or a run beyond the
    * machine or the budget, makes the scenario invalid */
   st = judge_run(&s, &plan, &cost, &opts, budget_s, force_large, stdout, err);
@@ -515,7 +470,9 @@ static enum wl_status assess_stoppable(void *user, volatile sig_atomic_t *stop,
   enum wl_status st = load_and_plan(path, &s, &plan, err);
   if (st) return st;
   struct wl_plan_cost cost;
-  ladder_cost(&s, &plan, 1, NULL, &cost);
+  struct wl_error ladder_err; /* a level that cannot be planned: the plan's own cost */
+  wl_error_clear(&ladder_err);
+  wl_plan_ladder_cost(&s, &plan, 1, NULL, &cost, &ladder_err);
   if ((st = judge_run(&s, &plan, &cost, &opts, budget_s, force_large, NULL, err))) {
     wl_scenario_clear(&s);
     return st;

@@ -4,6 +4,7 @@
 
 #include <limits.h>
 #include <math.h>
+#include <stdlib.h>
 #include <stdarg.h>
 #include <string.h>
 
@@ -694,14 +695,100 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
                    (p->dims == 3 ? WL_PLAN_CPU_RATE_3D : WL_PLAN_CPU_RATE);
   const double gpu_rate = p->dims == 3 ? WL_PLAN_GPU_RATE_3D : WL_PLAN_GPU_RATE;
   const double gpu_step = gpu_step_seconds(p);
-  p->gpu_seconds = 0;
-  if (p->solitary.present)
-    p->gpu_seconds += fmax(p->solitary.end_time / p->solitary.dt * gpu_step,
-                           p->solitary.particle_steps * p->evals_per_step / gpu_rate);
-  if (p->explosion.present)
-    p->gpu_seconds += fmax(p->explosion.end_time / p->explosion.dt * gpu_step,
-                           p->explosion.particle_steps * p->evals_per_step / gpu_rate);
+  p->gpu_seconds = p->gpu_work_seconds = 0;
+  if (p->solitary.present) {
+    const double work = p->solitary.particle_steps * p->evals_per_step / gpu_rate;
+    p->gpu_seconds += fmax(p->solitary.end_time / p->solitary.dt * gpu_step, work);
+    p->gpu_work_seconds += work;
+  }
+  if (p->explosion.present) {
+    const double work = p->explosion.particle_steps * p->evals_per_step / gpu_rate;
+    p->gpu_seconds += fmax(p->explosion.end_time / p->explosion.dt * gpu_step, work);
+    p->gpu_work_seconds += work;
+  }
   return WL_OK;
+}
+
+struct wl_plan_cost wl_plan_cost_of(const struct wl_plan *p) {
+  struct wl_plan_cost c = {p->dims, p->memory_bytes, p->gpu_memory_bytes, p->cpu_seconds,
+                           p->gpu_seconds, p->gpu_work_seconds};
+  return c;
+}
+
+/* plan.h */
+enum wl_status wl_plan_ladder_cost(const struct wl_scenario *s, const struct wl_plan *plan,
+                                   int brief, FILE *out, struct wl_plan_cost *cost,
+                                   struct wl_error *err) {
+  *cost = wl_plan_cost_of(plan);
+  int n = s->resolution.n_levels;
+  if (n == 0) return WL_OK;
+  struct wl_scenario *sl = malloc(sizeof *sl);
+  struct wl_plan *pl = malloc(sizeof *pl);
+  struct wl_plan_cost sum = {plan->dims, 0, 0, 0, 0, 0}, level[WL_SCENARIO_MAX_LEVELS];
+  double steps = 0.0, device_total = 0.0;
+  enum wl_status st = sl && pl ? WL_OK : wl_error_set(err, WL_ENOMEM, "no memory to plan the ladder");
+  int ok = st == WL_OK;
+  if (!brief && out) fprintf(out, "\nConvergence ladder (resolution.convergence), coarse to fine\n");
+  for (int k = 0; ok && k < n; k++) {
+    *sl = *s; /* shallow copy: only read by the plan */
+    sl->resolution.dp.is_auto = 0;
+    sl->resolution.dp.given = 1;
+    sl->resolution.dp.q.si = wl_plan_level_dp(s, plan, s->resolution.levels[k].q.si);
+    if ((st = wl_plan_make(sl, pl, err)) != WL_OK) {
+      if (!brief && out) fprintf(out, "  level %d: cannot be planned: %s\n", k + 1, err->msg);
+      ok = 0;
+      break;
+    }
+    level[k] = wl_plan_cost_of(pl);
+    device_total += pl->gpu_memory_bytes;
+    sum.cpu_seconds += pl->cpu_seconds;
+    sum.gpu_work_seconds += pl->gpu_work_seconds;
+    sum.host_bytes = fmax(sum.host_bytes, pl->memory_bytes);
+    sum.device_bytes = fmax(sum.device_bytes, pl->gpu_memory_bytes);
+    steps += pl->particle_steps;
+    if (!brief && out) {
+      char dps[32];
+      snprintf(dps, sizeof dps, "%.4g m", pl->dp);
+      fprintf(out, "  level %d  x %-5s dp = %-10s %8ld particles  %10.3e particle-steps  %6.0f s\n",
+              k + 1, s->resolution.levels[k].text, dps, pl->n_fluid + pl->n_boundary,
+              pl->particle_steps, pl->cpu_seconds);
+    }
+  }
+  free(sl);
+  free(pl);
+  if (!ok) return st;
+  const int side_by_side = !s->resolution.target_error.given &&
+                           device_total <= WL_PLAN_GPU_SIDE_BY_SIDE_MEMORY * WL_PLAN_GPU_BYTES;
+  sum.gpu_seconds = wl_plan_gpu_side_by_side(level, n, side_by_side ? n : 1);
+  if (!brief && out)
+    fprintf(out,
+            "  all levels: %.3e particle-steps, about %.0f s on the CPU%s; %.0f s on an H100 "
+            "(%s)\n",
+            steps, sum.cpu_seconds,
+            s->resolution.target_error.given ? " (less when target_error stops the ladder early)"
+                                             : "",
+            sum.gpu_seconds, side_by_side ? "levels side by side" : "levels one after the other");
+  *cost = sum;
+  return WL_OK;
+}
+
+double wl_plan_gpu_side_by_side(const struct wl_plan_cost *runs, int n, int width) {
+  double sum = 0.0, longest = 0.0, work = 0.0;
+  for (int i = 0; i < n; i++) {
+    sum += runs[i].gpu_seconds;
+    longest = fmax(longest, runs[i].gpu_seconds);
+    work += runs[i].gpu_work_seconds;
+  }
+  const int k = width < n ? width : n;
+  if (k <= 1) return sum;
+  const double speedup = k / (1.0 + WL_PLAN_GPU_SHARE_COST * (k - 1));
+  return fmax(fmax(sum / speedup, longest), work);
+}
+
+int wl_plan_gpu_side_by_side_width(double device_bytes, double gpu_bytes, int max_width) {
+  if (!(device_bytes > 0)) return max_width;
+  const double fit = floor(WL_PLAN_GPU_SIDE_BY_SIDE_MEMORY * gpu_bytes / device_bytes);
+  return fit < 1 ? 1 : fit > max_width ? max_width : (int)fit;
 }
 
 enum wl_status wl_plan_make(const struct wl_scenario *s, struct wl_plan *p,

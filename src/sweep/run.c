@@ -369,8 +369,8 @@ static enum wl_status run_serial(struct wl_sweep *sw, const char *dir,
  * ladder's levels do (src/assess/ladder.c); each case runs in its own
  * thread (and CUDA stream), its results those it gives alone. At most
  * WL_SWEEP_SIDE_BY_SIDE_MAX at once, and together within
- * SIDE_BY_SIDE_MEMORY of the GPU's memory. */
-static const double SIDE_BY_SIDE_MEMORY = 0.5;
+ * WL_PLAN_GPU_SIDE_BY_SIDE_MEMORY of the GPU's memory (plan.h, which also
+ * prices it). */
 
 struct side_job {
   struct wl_sweep *sw;
@@ -440,8 +440,7 @@ static int side_by_side_width(const struct wl_sweep *sw, const struct wl_assess_
   }
   free(cs), free(plan);
   if (!ok || !(bytes > 0)) return 0;
-  const double fit = floor(SIDE_BY_SIDE_MEMORY * device / bytes);
-  int k = fit < WL_SWEEP_SIDE_BY_SIDE_MAX ? (int)fit : WL_SWEEP_SIDE_BY_SIDE_MAX;
+  const int k = wl_plan_gpu_side_by_side_width(bytes, device, WL_SWEEP_SIDE_BY_SIDE_MAX);
   return k < n_pending ? k : n_pending;
 }
 

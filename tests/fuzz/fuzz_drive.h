@@ -49,41 +49,14 @@ static void wl_fuzz_judge(enum wl_status st, const struct wl_error *err, const c
              where, wl_error_status_name(st), err->msg);
 }
 
-/* check.c's ladder_cost without the printing: the sum of the levels'
- * times, the largest level's memory; the plan's own cost when a level
- * cannot be planned. */
+/* check's ladder cost (plan.h wl_plan_ladder_cost), its listing to the
+ * sink; a level that cannot be planned is judged as any plan. */
 static void wl_fuzz_ladder(const struct wl_scenario *s, const struct wl_plan *plan, FILE *sink,
                            struct wl_plan_cost *cost, struct wl_fuzz_result *r) {
-  *cost = (struct wl_plan_cost){plan->dims, plan->memory_bytes, plan->gpu_memory_bytes,
-                                plan->cpu_seconds, plan->gpu_seconds};
-  if (s->resolution.n_levels == 0) return;
-  struct wl_scenario *sl = malloc(sizeof *sl);
-  struct wl_plan *pl = malloc(sizeof *pl);
-  struct wl_plan_cost sum = {plan->dims, 0, 0, 0, 0};
-  int ok = sl && pl;
-  for (int k = 0; ok && k < s->resolution.n_levels; k++) {
-    *sl = *s; /* shallow copy: only read by the plan */
-    sl->resolution.dp.is_auto = 0;
-    sl->resolution.dp.given = 1;
-    sl->resolution.dp.q.si = plan->dp * s->resolution.levels[k].q.si;
-    struct wl_error e;
-    wl_error_clear(&e);
-    enum wl_status st = wl_plan_make(sl, pl, &e);
-    wl_fuzz_judge(st, &e, s->path, "wl_plan_make (a ladder level)", r);
-    if (st != WL_OK) {
-      ok = 0;
-      break;
-    }
-    fprintf(sink, "%ld %g %s\n", pl->n_fluid + pl->n_boundary, pl->particle_steps,
-            s->resolution.levels[k].text);
-    sum.cpu_seconds += pl->cpu_seconds;
-    sum.gpu_seconds += pl->gpu_seconds;
-    if (pl->memory_bytes > sum.host_bytes) sum.host_bytes = pl->memory_bytes;
-    if (pl->gpu_memory_bytes > sum.device_bytes) sum.device_bytes = pl->gpu_memory_bytes;
-  }
-  free(sl);
-  free(pl);
-  if (ok) *cost = sum;
+  struct wl_error e;
+  wl_error_clear(&e);
+  enum wl_status st = wl_plan_ladder_cost(s, plan, 0, sink, cost, &e);
+  wl_fuzz_judge(st, &e, s->path, "wl_plan_ladder_cost (a ladder level)", r);
 }
 
 /* Drive `size` bytes, read as the file `path`, through check's path;
