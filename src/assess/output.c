@@ -427,6 +427,17 @@ static enum wl_status case_columns(const struct wl_case_result *c, struct wl_res
   out->rest_moment = l->rest_moment, out->rest_from = l->rest_from, out->rest_to = l->rest_to;
   out->wall_x = f->x_wall, out->wall_toe_z = f->z_toe, out->wall_crest_z = f->z_crest;
   out->still_water_z = f->depth;
+  if (r->n) { /* the loads as computed (record.c); absent (NAN) for an empty record */
+    out->force_peak = l->force_peak, out->force_b_peak = l->force_bound_peak;
+    out->moment_peak = l->moment_peak;
+    out->impulse_total = l->impulse_total, out->impulse_b_total = l->impulse_bound[r->n - 1];
+    out->impulse_peak = l->impulse_peak;
+    out->impulse_peak_from = l->impulse_peak_from, out->impulse_peak_to = l->impulse_peak_to;
+    out->impulse_positive = l->impulse_positive;
+    out->impulse_positive_b = l->impulse_positive_bound;
+    if (isfinite(l->runup)) /* a wall gauge that never read water: no run-up */
+      out->runup = l->runup, out->runup_time = l->runup_time;
+  }
   if (f->dims == 3) {
     out->width = (f->symmetry ? 2 : 1) * f->width;
     snprintf(out->symmetry, sizeof out->symmetry, "%s", f->symmetry ? "centreline" : "none");
