@@ -338,6 +338,17 @@ struct wl_results_plan {
   struct wl_results_explosion explosion;
 };
 
+/* The numerical settings results.h5 holds under /settings, in the order
+ * assess writes them and the report lists them: the scenario key (as the
+ * scenario schema spells it) and the report's label. assess writes each
+ * key's resolved value (scenario.h wl_scenario_value_of); the report reads
+ * them by key: the names have this one owner. */
+struct wl_results_setting_key {
+  const char *key, *label;
+};
+extern const struct wl_results_setting_key wl_store_results_settings[];
+extern const int wl_store_results_n_settings; /* rows of wl_store_results_settings */
+
 /* One numerical setting under /settings: the scenario key, its value as
  * resolved, and whether the scenario gave it. */
 struct wl_results_setting {

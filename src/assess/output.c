@@ -603,29 +603,14 @@ void wl_assess_results_plan(const struct wl_scenario *s, const struct wl_plan *p
     if (used < sizeof r->convergence_asked)
       snprintf(r->convergence_asked + used, sizeof r->convergence_asked - used, "]");
   }
-  const struct {
-    const char *key;
-    const struct wl_scenario_value *v;
-  } settings[] = {
-      {"numerics.coefh", &s->numerics.coefh},
-      {"numerics.coefsound", &s->numerics.coefsound},
-      {"numerics.cfl", &s->numerics.cfl},
-      {"numerics.alpha", &s->numerics.alpha},
-      {"numerics.viscosity", &s->numerics.viscosity},
-      {"numerics.nu", &s->numerics.nu},
-      {"numerics.density_diffusion", &s->numerics.density_diffusion},
-      {"numerics.shifting", &s->numerics.shifting},
-      {"numerics.integrator", &s->numerics.integrator},
-      {"numerics.verlet_steps", &s->numerics.verlet_steps},
-      {"numerics.boundary", &s->numerics.boundary},
-      {"run.output_interval", &s->run.output_interval},
-      {"run.end_time", &s->run.end_time},
-  };
-  for (size_t i = 0; i < sizeof settings / sizeof settings[0]; i++) {
+  /* the settings store's table names (store.h), with the scenario's values */
+  for (int i = 0; i < wl_store_results_n_settings; i++) {
+    const char *key = wl_store_results_settings[i].key;
+    const struct wl_scenario_value *v = wl_scenario_value_of(s, key);
     struct wl_results_setting *o = &r->settings[r->n_settings++];
-    snprintf(o->key, sizeof o->key, "%s", settings[i].key);
-    snprintf(o->value, sizeof o->value, "%s", settings[i].v->text);
-    o->given = settings[i].v->given;
+    snprintf(o->key, sizeof o->key, "%s", key);
+    snprintf(o->value, sizeof o->value, "%s", v ? v->text : "?");
+    o->given = v && v->given;
   }
 
   struct wl_results_plan *pl = &r->plan;

@@ -293,6 +293,26 @@ static const struct key EXPLOSION_KEYS[] = {
 #undef KT
 #define N_OF(t) (sizeof t / sizeof t[0])
 
+/* /settings: one text attribute a key, with "<key>_origin" */
+const struct wl_results_setting_key wl_store_results_settings[] = {
+    {"numerics.coefh", "coefh (h = coefh sqrt(dim) dp)"},
+    {"numerics.coefsound", "coefsound (c0 = coefsound sqrt(g h_max))"},
+    {"numerics.cfl", "CFL number"},
+    {"numerics.alpha", "artificial viscosity alpha"},
+    {"numerics.viscosity", "viscosity"},
+    {"numerics.nu", "laminar viscosity nu"},
+    {"numerics.density_diffusion", "density diffusion"},
+    {"numerics.shifting", "shifting"},
+    {"numerics.integrator", "time integrator"},
+    {"numerics.verlet_steps", "Euler step every (Verlet)"},
+    {"numerics.boundary", "wall condition"},
+    {"run.output_interval", "output interval"},
+    {"run.end_time", "end time"},
+};
+const int wl_store_results_n_settings = (int)N_OF(wl_store_results_settings);
+_Static_assert(N_OF(wl_store_results_settings) <= WL_RESULTS_MAX_SETTINGS,
+               "every stored setting fits struct wl_results");
+
 static const char *const GAUGE_NAMES = "gauge_names";
 static const char *const SETTING_ORIGIN = "_origin"; /* "<key>_origin": scenario or default */
 
