@@ -8,10 +8,11 @@
  *    of every padding boundary length (55, 56, 63, 64, 65 bytes);
  *  - results: a synthetic results.h5 written with the store module from
  *    ANALYTIC series: Gaussian force pulses F(t) = F0 + A exp(-((t-t0)/s)^2)
- *    on top of the hydrostatic force F0 = rho g d^2/2, their closed-form
- *    impulse A s sqrt(pi) (erf), moment with a fixed lever, 10 % rise time
- *    s sqrt(ln 10) and duration twice that, worked by hand below and printed
- *    to 3 significant digits (the shipped template's peaks `digits`);
+ *    on top of the hydrostatic force F0 = rho g d^2/2, with the loads assess
+ *    stores beside them in closed form: impulse A s sqrt(pi) (erf), moment
+ *    with a fixed lever, 10 % rise time s sqrt(ln 10) and duration twice
+ *    that, worked by hand below and printed to 3 significant digits (the
+ *    shipped template's peaks `digits`);
  *  - leading wave: a sech^2 record (period measure 4 acosh(sqrt 10)/(K c)
  *    in closed form) and one sine period (crest a, trough -a);
  *  - PDFs read back with poppler (pdfinfo, pdftotext, pdftoppm), programs
@@ -378,6 +379,37 @@ static enum wl_status write_case(struct wl_store *h5, const char *name, const st
                {"still_water_z", DEPTH, "m"}};
   for (size_t i = 0; i < sizeof attrs / sizeof attrs[0]; i++)
     STORE(wl_store_attr_double(h5, b, attrs[i].name, attrs[i].v, attrs[i].unit, err));
+  /* the loads assess stores with the series, in closed form: the crest at
+   * the sample t0, impulses A s sqrt(pi) (the whole Gaussian, its positive
+   * phase within +-8 s of t0), 10 % rise s sqrt(ln 10) and twice that
+   * above 10 %; NaN where the record ends before the pulse (as assess
+   * stores loads it could not measure) */
+  const int whole = p->t0 + 8 * p->s <= p->t_end;
+  const double I = p->A * p->s * sqrt(PI), rise = p->s * sqrt(log(10.0));
+  const struct {
+    const char *name;
+    double v;
+    const char *unit;
+  } loads[] = {{"peak_force", F_STATIC + p->A, "N/m"},
+               {"peak_force_time", p->t0, "s"},
+               {"rise_time", rise, "s"},
+               {"duration", 2 * rise, "s"},
+               {"peak_force_boundary", F_STATIC + p->boundary * p->A, "N/m"},
+               {"peak_force_boundary_time", p->t0, "s"},
+               {"peak_moment", M_STATIC + LEVER * p->A, "N m/m"},
+               {"peak_moment_time", p->t0, "s"},
+               {"impulse", I, "N s/m"},
+               {"impulse_boundary", p->boundary * I, "N s/m"},
+               {"impulse_positive_phase", I, "N s/m"},
+               {"impulse_positive_phase_from", p->t0 - 8 * p->s, "s"},
+               {"impulse_positive_phase_to", p->t0 + 8 * p->s, "s"},
+               {"impulse_positive", I, "N s/m"},
+               {"impulse_positive_boundary", p->boundary * I, "N s/m"},
+               {"max_runup", p->runup, "m"},
+               {"max_runup_time", p->t0, "s"}};
+  for (size_t i = 0; i < sizeof loads / sizeof loads[0]; i++)
+    STORE(wl_store_attr_double(h5, b, loads[i].name, whole ? loads[i].v : NAN, loads[i].unit,
+                               err));
   STORE(wl_store_attr_text(h5, b, "status", p->status, err));
   if (p->stopped)
     STORE(wl_store_attr_text(h5, b, "stopped", p->stopped, err));
@@ -815,6 +847,22 @@ static void test_errors(void) {
   CHECK_TRUE(wl_report_render(path, NULL, pdf, &err) == WL_EINPUT && contains(err.msg, path) &&
                  contains(err.msg, "/cases/solitary") && contains(err.msg, "'status'"),
              "a case without 'status': WL_EINPUT naming the file, the group and the key");
+  /* a case without the loads assess stores (a file of an earlier wallload):
+   * bad input naming the file and the key, saying to run assess again */
+  snprintf(path, sizeof path, "%s/noloads.h5", tmpdir);
+  if (wl_store_open(path, &h5, &err) == WL_OK) {
+    double v = 1;
+    wl_store_attr_text(h5, "/", "scenario_name", "x", &err);
+    wl_store_write_vector(h5, "cases/solitary/time", &v, 1, "s", "x", &err);
+    wl_store_attr_text(h5, "cases/solitary", "status", "complete", &err);
+    wl_store_close(h5, 1, &err);
+  }
+  wl_error_clear(&err);
+  CHECK_TRUE(wl_report_render(path, NULL, pdf, &err) == WL_EINPUT && contains(err.msg, path) &&
+                 contains(err.msg, "/cases/solitary") && contains(err.msg, "'peak_force'") &&
+                 contains(err.msg, "run `wallload assess`"),
+             "a case without its stored loads: WL_EINPUT naming the file and the key, and "
+             "the remedy");
   CHECK_TRUE(!file_exists(pdf), "no PDF left after failures");
   /* a template with an unknown section type */
   char tpl[500], res[500];

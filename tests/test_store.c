@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include "testutil.h"
+#include "wallload/scenario.h"
 #include "wallload/store.h"
 
 /* HDF5 1.10 loses its metadata accumulator's buffer (128 KiB, allocated in
@@ -223,6 +224,21 @@ int main(void) {
                  strstr(buf, "particles.h5:snapshots/0001/position") && strstr(buf, "</Xdmf>"),
              "xdmf names both snapshots and is closed");
   remove(xmf);
+
+  /* every stored setting is a scalar key of the scenario schema (the
+   * names' owner): a typo in store's table would store "?" */
+  struct wl_scenario sc;
+  wl_scenario_init(&sc);
+  int known = 0;
+  for (int i = 0; i < wl_store_results_n_settings; i++)
+    known += wl_scenario_value_of(&sc, wl_store_results_settings[i].key) != NULL;
+  CHECK_TRUE(wl_store_results_n_settings > 0 && known == wl_store_results_n_settings,
+             "store's settings are the scenario schema's keys (schema.c)");
+  CHECK_TRUE(!wl_scenario_value_of(&sc, "numerics") && !wl_scenario_value_of(&sc, "numerics.x") &&
+                 !wl_scenario_value_of(&sc, "gauges.x") &&
+                 wl_scenario_value_of(&sc, "run.end_time") == &sc.run.end_time,
+             "wl_scenario_value_of: scalars only, by their dotted schema name");
+  wl_scenario_clear(&sc);
 
   refused(dir, path, tmp);
   batches(dir);

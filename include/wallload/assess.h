@@ -58,26 +58,10 @@
 #include "wallload/flume.h"
 #include "wallload/loads.h"
 #include "wallload/plan.h"
+#include "wallload/sample.h"
 #include "wallload/scenario.h"
 #include "wallload/sph.h"
 #include "wallload/store.h"
-
-/* Time series recorded at every output time of one case. */
-struct wl_record {
-  size_t n, cap;
-  int n_gauges, n_probes;
-  double *t;            /* [s] */
-  double *eta;          /* n x n_gauges, elevation above still water [m] */
-  double *pressure;     /* n x n_probes [Pa] */
-  double *force;        /* from the probes [N/m] */
-  double *moment;       /* from the probes, about the toe [N m/m] */
-  double *force_bound;  /* summed on the wall's boundary particles [N/m] */
-  double *moment_bound; /* their moment about the toe [N m/m] */
-  double *kinetic;      /* fluid kinetic energy [J/m] */
-  double *potential;    /* fluid potential energy above the floor [J/m] */
-  double *momentum;     /* fluid horizontal momentum, sum of m u over the fluid [N s/m]; its
-                           change is the impulse the fluid gave all boundaries (wall, bed, ends) */
-};
 
 /* Post-processed series and peaks of one case (computed from its record). */
 struct wl_case_loads {
@@ -134,7 +118,7 @@ struct wl_case_result {
    * (case_caution in assess.c). */
   char caution[320];
   struct wl_flume flume;    /* geometry, probes, gauges */
-  struct wl_record rec;
+  struct wl_record rec;      /* the sampled series (sample.h) */
   struct wl_case_loads loads;
   /* wl_assess_run's particle snapshots move into place with the results
    * that describe them: bit 0 (1) particles_<case>.h5.tmp and bit 1 (2)

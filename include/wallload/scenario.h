@@ -203,6 +203,12 @@ enum wl_status wl_scenario_parse(const char *path, const char *text, size_t len,
  * and unit beside it, and "default" where it was not given. */
 void wl_scenario_write_resolved(const struct wl_scenario *s, FILE *out);
 
+/* The value of scalar key `key` as the schema spells it, dotted from the
+ * top ("numerics.coefh", "run.end_time"), or NULL when the schema has no
+ * such scalar (a map, a list or an unknown name). */
+const struct wl_scenario_value *wl_scenario_value_of(const struct wl_scenario *s,
+                                                     const char *key);
+
 /* Bed elevation above the flume floor at x [m], from the bathymetry segments. */
 double wl_scenario_bed_z(const struct wl_scenario *s, double x);
 

@@ -226,11 +226,12 @@ struct wl_results_case {
   double *pressure; /* n x n_probes [Pa] */
   int n_gauges;
   struct wl_results_gauge gauges[WL_RESULTS_MAX_GAUGES]; /* reader: ordered by x */
-  /* derived by the reader from the stored series (loads.h definitions, the
-   * assessment's calls, so the numbers are summary.json's); NAN / index 0
-   * when the record is empty */
+  /* the loads assess computed (loads.h definitions, summary.json's
+   * values), stored as case attributes and read back as they are; NAN when
+   * the record is empty. The reader sets wall_gauge, filtered and the
+   * peaks' index (the sample at their time). */
   int wall_gauge; /* index of the gauge named "wall" (run-up); -1 if none */
-  int filtered;   /* 1: peaks from the stored filtered series; 0: from raw (no filtered) */
+  int filtered;   /* 1: the filtered series are stored (the peaks are of them) */
   struct wl_peak force_peak;             /* of force_f (base: the force at rest) */
   struct wl_peak force_b_peak;           /* of force_bf */
   struct wl_peak moment_peak;            /* of moment_f (base: the moment at rest) */
@@ -337,6 +338,17 @@ struct wl_results_plan {
   struct wl_results_explosion explosion;
 };
 
+/* The numerical settings results.h5 holds under /settings, in the order
+ * assess writes them and the report lists them: the scenario key (as the
+ * scenario schema spells it) and the report's label. assess writes each
+ * key's resolved value (scenario.h wl_scenario_value_of); the report reads
+ * them by key: the names have this one owner. */
+struct wl_results_setting_key {
+  const char *key, *label;
+};
+extern const struct wl_results_setting_key wl_store_results_settings[];
+extern const int wl_store_results_n_settings; /* rows of wl_store_results_settings */
+
 /* One numerical setting under /settings: the scenario key, its value as
  * resolved, and whether the scenario gave it. */
 struct wl_results_setting {
@@ -393,10 +405,11 @@ enum wl_status wl_store_results_write_convergence(struct wl_store *h5, const cha
                                                   const struct wl_results_convergence *cv,
                                                   struct wl_error *err);
 
-/* Read results.h5 `path` into *r (initialised first) and derive the peaks.
- * Returns WL_OK; WL_EINPUT (missing, a directory, not HDF5, damaged, not a
- * wallload results file, or a required key missing: the message names the
- * file and the key); WL_EIO (a dataset that cannot be read); WL_ENOMEM. On
+/* Read results.h5 `path` into *r (initialised first), the stored loads
+ * included. Returns WL_OK; WL_EINPUT (missing, a directory, not HDF5,
+ * damaged, not a wallload results file, or a required key missing: the
+ * message names the file and the key, and for a load that a file of an
+ * earlier wallload lacks, says to run assess again); WL_EIO (a dataset that cannot be read); WL_ENOMEM. On
  * failure *r is left cleared. */
 enum wl_status wl_store_results_read(const char *path, struct wl_results *r,
                                      struct wl_error *err);

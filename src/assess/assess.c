@@ -1,6 +1,7 @@
 /* assess.c: run the load cases of a scenario: build each flume, step the
- * SPH solver, sample gauges, wall probes and the wall's boundary force at
- * every output time, then post-process and write (output.c). */
+ * SPH solver, have the sample stage (sample.h) record gauges, wall probes
+ * and the wall's boundary force at every output time, then post-process
+ * (record.c) and write (output.c). */
 #define _POSIX_C_SOURCE 200809L /* mkdir, stat */
 #include <dirent.h>
 #include <errno.h>
@@ -20,7 +21,7 @@
 #include "wallload/config.h"
 #include "wallload/cuda_device.h"
 #include "wallload/report.h"
-#include "wallload/sph/interact.h"
+#include "wallload/sample.h"
 #include "wallload/store.h"
 
 
@@ -38,36 +39,17 @@ static int stop_signal(const struct wl_assess_opts *opts) {
 struct run_ctx {
   struct wl_case_result *c;
   const struct wl_assess_opts *opts;
-  struct wl_sph_probe *probe;
+  struct wl_sample *sample;        /* gauges, probes, wall forces (sample.h) */
   struct wl_store *snaps;          /* particle snapshots file */
   struct wl_snapshot_ref *refs;
   size_t n_refs, cap_refs;
   double next_snapshot, snapshot_interval;
-  double prof_z[WL_FLUME_MAX_PROBES + 2], prof_p[WL_FLUME_MAX_PROBES + 2]; /* wet profile */
 };
 
 static double now_s(void) {
   struct timespec ts;
   clock_gettime(CLOCK_MONOTONIC, &ts);
   return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-/* Horizontal force [N/m] of the fluid on the seawall's boundary particles
- * and its moment about the toe [N m/m], from the backend: every
- * fluid-wall pair of the solver's momentum equation (sph.h
- * wl_sph_sim_wall_load). 3D: the backend's sum is the force on the whole
- * modelled wall [N], returned per metre of it; likewise the moment. */
-static enum wl_status boundary_force(struct run_ctx *rc, struct wl_sph_sim *sim, double *force,
-                                     double *moment, struct wl_error *err) {
-  const struct wl_flume *f = &rc->c->flume;
-  const enum wl_status st =
-      wl_sph_sim_wall_load(sim, WL_FLUME_BODY_WALL, f->z_toe, force, moment, err);
-  if (st) return st;
-  if (f->dims == 3) { /* per wall -> per metre */
-    *force /= f->width;
-    *moment /= f->width;
-  }
-  return WL_OK;
 }
 
 static enum wl_status write_snapshot(struct run_ctx *rc, const struct wl_particles *p,
@@ -142,90 +124,15 @@ static enum wl_status write_snapshot(struct run_ctx *rc, const struct wl_particl
 static enum wl_status on_output(void *user, struct wl_sph_sim *sim, double t,
                                 struct wl_error *err) {
   struct run_ctx *rc = user;
-  struct wl_case_result *c = rc->c;
   if (rc->opts->interrupted && *rc->opts->interrupted)
     return wl_error_set(err, WL_EINTERRUPTED, "interrupted by %s while stepping, at t = %.4f s",
                         wl_assess_stop_signal_name((int)*rc->opts->interrupted), t);
   const struct wl_particles *p = wl_sph_sim_particles(sim, err);
   if (!p) return err->status ? err->status : WL_EIO;
-  enum wl_status st = wl_sph_probe_index(rc->probe, p, err);
+  enum wl_status st = wl_sample_sim(rc->sample, sim, p, t, &rc->c->rec, err);
   if (st) return st;
-  struct wl_record *r = &c->rec;
-  if ((st = record_push(r, err))) return st;
-  size_t row = r->n - 1;
-  const struct wl_flume *f = &c->flume;
-  const struct wl_sph_config *cfg = wl_sph_sim_config(sim);
-  r->t[row] = t;
-  for (int g = 0; g < f->n_gauges; g++) {
-    double x = f->gauge_x[g];
-    /* scan up from the bed: a dry gauge reads the bed, not the domain's floor */
-    double z = wl_sph_probe_elevation(rc->probe, x, f->dims == 3 ? f->gauge_y : 0.0,
-                                      f->gauge_bed[g], cfg->hi[cfg->prm.dim - 1], 0.0);
-    r->eta[row * (size_t)r->n_gauges + (size_t)g] = z - f->depth;
-  }
-  /* Wall probes read the fluid below the free surface at the wall (the
-   * last gauge); above it the face is dry and the pressure 0. Shepard
-   * interpolation just above the surface would otherwise report the
-   * pressure of the water below. The profile ends at (surface, 0). 3D:
-   * each height's pressure is the mean over the probes across the width
-   * (flume.h), so the profile integrates to the force per metre. */
-  double *pr = &r->pressure[row * (size_t)r->n_probes];
-  double z_surface = f->depth + r->eta[row * (size_t)r->n_gauges + (size_t)(f->n_gauges - 1)];
-  int n_wet = 0;
-  for (int k = 0; k < f->n_probes; k++) {
-    double x[2] = {f->probe_x, f->probe_z[k]}, pk = 0.0;
-    if (f->dims == 3) {
-      for (int j = 0; j < f->n_probe_y && f->probe_z[k] < z_surface; j++) {
-        double x3[3] = {f->probe_x, f->probe_y[j], f->probe_z[k]}, pj = 0.0;
-        if (wl_sph_probe_interp(rc->probe, x3, NULL, &pj)) pk += pj / f->n_probe_y;
-      }
-    } else if (f->probe_z[k] >= z_surface || !wl_sph_probe_interp(rc->probe, x, NULL, &pk)) {
-      pk = 0.0;
-    }
-    pr[k] = pk;
-    if (f->probe_z[k] < z_surface) {
-      rc->prof_z[n_wet] = f->probe_z[k];
-      rc->prof_p[n_wet++] = pk;
-    }
-  }
-  if (z_surface <= f->z_toe || n_wet == 0) {
-    r->force[row] = r->moment[row] = 0.0;
-  } else {
-    double top = fmin(z_surface, f->z_crest);
-    if (top > rc->prof_z[n_wet - 1]) {
-      rc->prof_z[n_wet] = top;
-      rc->prof_p[n_wet++] = 0.0;
-    }
-    if (n_wet == 1) { /* one probe under a thin layer: a triangle */
-      rc->prof_z[1] = rc->prof_z[0];
-      rc->prof_p[1] = rc->prof_p[0];
-      n_wet = 2;
-    }
-    wl_loads_profile(rc->prof_z, rc->prof_p, (size_t)n_wet, f->z_toe, top, &r->force[row],
-                     &r->moment[row]);
-  }
-  const struct wl_sph_const *k = wl_sph_sim_const(sim);
-  if ((st = boundary_force(rc, sim, &r->force_bound[row], &r->moment_bound[row], err)))
-    return st;
-  double kin = 0.0, pot = 0.0, mom = 0.0;
-  const int az = p->dim - 1;
-  for (int i = p->n_bound; i < p->n; i++) {
-    mom += (double)k->mass * p->vel[0][i];
-    double v2 = (double)p->vel[0][i] * p->vel[0][i] + (double)p->vel[1][i] * p->vel[1][i];
-    if (az == 2) v2 += (double)p->vel[2][i] * p->vel[2][i];
-    kin += 0.5 * (double)k->mass * v2;
-    pot += (double)k->mass * (-k->gravity[az]) * p->pos[az][i];
-  }
-  if (az == 2) { /* 3D: per metre of width, as in 2D */
-    kin /= f->width;
-    pot /= f->width;
-    mom /= f->width;
-  }
-  r->kinetic[row] = kin;
-  r->potential[row] = pot;
-  r->momentum[row] = mom;
   if (rc->snaps && t >= rc->next_snapshot - 1e-12) {
-    if ((st = write_snapshot(rc, p, k, t, err))) return st;
+    if ((st = write_snapshot(rc, p, wl_sph_sim_const(sim), t, err))) return st;
     rc->next_snapshot += rc->snapshot_interval;
   }
   return WL_OK;
@@ -308,7 +215,7 @@ static enum wl_status run_case(const struct wl_assess_opts *opts,
     m.x = c->flume.paddle_x;
     st = wl_sph_sim_set_motion(sim, WL_FLUME_BODY_PADDLE, &m, err);
   }
-  if (!st) st = wl_sph_probe_alloc(&rc.probe, &c->flume.cfg, err);
+  if (!st) st = wl_sample_alloc(&rc.sample, &c->flume, err);
   char xmf[1100] = "";
   if (snap_path) {
     snprintf(xmf, sizeof xmf, "%.*s.xmf", (int)(strlen(snap_path) - 3), snap_path);
@@ -365,7 +272,7 @@ static enum wl_status run_case(const struct wl_assess_opts *opts,
       st = s2;
     }
   }
-  wl_sph_probe_free(rc.probe);
+  wl_sample_free(rc.sample);
   wl_sph_sim_free(sim);
   free(rc.refs);
   return st;
@@ -373,7 +280,7 @@ static enum wl_status run_case(const struct wl_assess_opts *opts,
 
 void wl_assess_case_clear(struct wl_case_result *c) {
   if (!c) return;
-  record_clear(&c->rec);
+  wl_sample_record_clear(&c->rec);
   case_loads_clear(&c->loads);
   wl_flume_clear(&c->flume);
   memset(c, 0, sizeof *c);

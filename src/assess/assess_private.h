@@ -5,9 +5,6 @@
 #include "wallload/assess.h"
 
 /* record.c */
-void record_clear(struct wl_record *r);
-/* Make room for one more sample (n grows by one; the caller fills row n-1). */
-enum wl_status record_push(struct wl_record *r, struct wl_error *err);
 void case_loads_clear(struct wl_case_loads *l);
 /* Filtered series, impulse, peaks and run-up of a case's record. */
 enum wl_status case_loads_compute(struct wl_case_result *c, struct wl_error *err);

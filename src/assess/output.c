@@ -427,6 +427,17 @@ static enum wl_status case_columns(const struct wl_case_result *c, struct wl_res
   out->rest_moment = l->rest_moment, out->rest_from = l->rest_from, out->rest_to = l->rest_to;
   out->wall_x = f->x_wall, out->wall_toe_z = f->z_toe, out->wall_crest_z = f->z_crest;
   out->still_water_z = f->depth;
+  if (r->n) { /* the loads as computed (record.c); absent (NAN) for an empty record */
+    out->force_peak = l->force_peak, out->force_b_peak = l->force_bound_peak;
+    out->moment_peak = l->moment_peak;
+    out->impulse_total = l->impulse_total, out->impulse_b_total = l->impulse_bound[r->n - 1];
+    out->impulse_peak = l->impulse_peak;
+    out->impulse_peak_from = l->impulse_peak_from, out->impulse_peak_to = l->impulse_peak_to;
+    out->impulse_positive = l->impulse_positive;
+    out->impulse_positive_b = l->impulse_positive_bound;
+    if (isfinite(l->runup)) /* a wall gauge that never read water: no run-up */
+      out->runup = l->runup, out->runup_time = l->runup_time;
+  }
   if (f->dims == 3) {
     out->width = (f->symmetry ? 2 : 1) * f->width;
     snprintf(out->symmetry, sizeof out->symmetry, "%s", f->symmetry ? "centreline" : "none");
@@ -592,29 +603,14 @@ void wl_assess_results_plan(const struct wl_scenario *s, const struct wl_plan *p
     if (used < sizeof r->convergence_asked)
       snprintf(r->convergence_asked + used, sizeof r->convergence_asked - used, "]");
   }
-  const struct {
-    const char *key;
-    const struct wl_scenario_value *v;
-  } settings[] = {
-      {"numerics.coefh", &s->numerics.coefh},
-      {"numerics.coefsound", &s->numerics.coefsound},
-      {"numerics.cfl", &s->numerics.cfl},
-      {"numerics.alpha", &s->numerics.alpha},
-      {"numerics.viscosity", &s->numerics.viscosity},
-      {"numerics.nu", &s->numerics.nu},
-      {"numerics.density_diffusion", &s->numerics.density_diffusion},
-      {"numerics.shifting", &s->numerics.shifting},
-      {"numerics.integrator", &s->numerics.integrator},
-      {"numerics.verlet_steps", &s->numerics.verlet_steps},
-      {"numerics.boundary", &s->numerics.boundary},
-      {"run.output_interval", &s->run.output_interval},
-      {"run.end_time", &s->run.end_time},
-  };
-  for (size_t i = 0; i < sizeof settings / sizeof settings[0]; i++) {
+  /* the settings store's table names (store.h), with the scenario's values */
+  for (int i = 0; i < wl_store_results_n_settings; i++) {
+    const char *key = wl_store_results_settings[i].key;
+    const struct wl_scenario_value *v = wl_scenario_value_of(s, key);
     struct wl_results_setting *o = &r->settings[r->n_settings++];
-    snprintf(o->key, sizeof o->key, "%s", settings[i].key);
-    snprintf(o->value, sizeof o->value, "%s", settings[i].v->text);
-    o->given = settings[i].v->given;
+    snprintf(o->key, sizeof o->key, "%s", key);
+    snprintf(o->value, sizeof o->value, "%s", v ? v->text : "?");
+    o->given = v && v->given;
   }
 
   struct wl_results_plan *pl = &r->plan;

@@ -892,30 +892,17 @@ enum wl_status wl_report_render_metadata(struct wl_report_ctx *c, const struct w
   }
 
   if (!st && r->n_settings) {
-    static const struct {
-      const char *label, *key;
-    } rows[] = {
-        {"coefh (h = coefh sqrt(dim) dp)", "numerics.coefh"},
-        {"coefsound (c0 = coefsound sqrt(g h_max))", "numerics.coefsound"},
-        {"CFL number", "numerics.cfl"},
-        {"artificial viscosity alpha", "numerics.alpha"},
-        {"viscosity", "numerics.viscosity"},
-        {"laminar viscosity nu", "numerics.nu"},
-        {"density diffusion", "numerics.density_diffusion"},
-        {"shifting", "numerics.shifting"},
-        {"time integrator", "numerics.integrator"},
-        {"Euler step every (Verlet)", "numerics.verlet_steps"},
-        {"wall condition", "numerics.boundary"},
-        {"output interval", "run.output_interval"},
-        {"end time", "run.end_time"},
-    };
-    enum { N_ROWS = sizeof rows / sizeof rows[0] };
+    /* store's table of the settings: their keys and labels (store.h) */
+    enum { N_ROWS = WL_RESULTS_MAX_SETTINGS };
+    const int n_rows = wl_store_results_n_settings;
     char v[N_ROWS][200];
     struct wl_report_kv num[N_ROWS];
-    for (int i = 0; i < N_ROWS; i++)
-      num[i] = (struct wl_report_kv){rows[i].label, setting_text(r, rows[i].key, v[i], sizeof v[i]),
+    for (int i = 0; i < n_rows; i++)
+      num[i] = (struct wl_report_kv){wl_store_results_settings[i].label,
+                                     setting_text(r, wl_store_results_settings[i].key, v[i],
+                                                  sizeof v[i]),
                                      0, NULL, 0};
-    st = wl_report_add_kv_table(d, "Numerical settings (from the stored scenario)", num, N_ROWS,
+    st = wl_report_add_kv_table(d, "Numerical settings (from the stored scenario)", num, n_rows,
                                 err);
   } else if (!st) {
     st = wl_report_paragraphf(d, err, "Numerical settings are not shown: %s.",

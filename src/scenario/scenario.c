@@ -1030,6 +1030,26 @@ static void write_keys(FILE *out, const struct wl_key *keys, const void *base, c
   }
 }
 
+const struct wl_scenario_value *wl_scenario_value_of(const struct wl_scenario *s,
+                                                     const char *key) {
+  const struct wl_key *keys = wl_schema_top;
+  for (const char *name = key; keys && name && *name;) {
+    const char *dot = strchr(name, '.');
+    const size_t len = dot ? (size_t)(dot - name) : strlen(name);
+    const struct wl_key *k = keys;
+    while (k->name && (strlen(k->name) != len || strncmp(k->name, name, len))) k++;
+    if (!k->name) return NULL;
+    if (!dot) /* a scalar of the scenario itself, not a map or a list */
+      return k->type == KT_MAP || k->type == KT_BED || k->type == KT_GAUGES ||
+                     k->type == KT_LEVELS || k->type == KT_SWEEP
+                 ? NULL
+                 : (const struct wl_scenario_value *)((const char *)s + k->off);
+    keys = k->type == KT_MAP ? k->sub : NULL;
+    name = dot + 1;
+  }
+  return NULL;
+}
+
 void wl_scenario_write_resolved(const struct wl_scenario *s, FILE *out) {
   write_keys(out, wl_schema_top, s, "", s);
 }

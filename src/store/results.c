@@ -1,8 +1,9 @@
 /* results.c: the schema of results.h5 (one table per group: every dataset
  * and attribute with its type, unit, description and whether a reader
- * requires it), the writer and the reader that both go through it, the
- * peaks the reader derives with loads.h, and the particle snapshots
- * particles_<case>.h5 read back. Layout in store.h and docs/outputs.md.
+ * requires it), the writer and the reader that both go through it, and the
+ * particle snapshots particles_<case>.h5 read back. The loads (peaks,
+ * impulses, run-up) are stored as assess computed them, never derived
+ * again on reading. Layout in store.h and docs/outputs.md.
  *
  * HDF5 is read with its automatic error printing off; nothing prints. */
 #define _POSIX_C_SOURCE 200809L /* strdup */
@@ -16,8 +17,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-
-#include "wallload/loads.h"
 
 const char *wl_store_results_case_name(int i) {
   return i == WL_RESULTS_CASE_SOLITARY    ? "solitary"
@@ -36,6 +35,8 @@ enum key_type {
 enum {
   KEY_REQUIRED = 1, /* the reader refuses a group without it */
   KEY_WHEN_SET = 2, /* written only when set (finite, non-empty); else always */
+  KEY_LOADS = 4,    /* required: a load assess computed (results.h5 of before it was stored
+                       lacks it, and the reader says to run assess again) */
 };
 
 /* One attribute of a group: name, type, unit (numbers), flags, and where
@@ -95,6 +96,26 @@ static const struct key CASE_KEYS[] = {
     KD(wl_results_case, width, "width", "m", KEY_WHEN_SET),
     KT(wl_results_case, symmetry, "symmetry", KEY_WHEN_SET),
     KT(wl_results_case, side_walls, "side_walls", KEY_WHEN_SET),
+    /* the loads assess computed from the series (loads.h definitions;
+     * summary.json's names and values), stored so that no reader derives
+     * them again; NaN where the record is empty */
+    KD(wl_results_case, force_peak.value, "peak_force", "N/m", KEY_LOADS),
+    KD(wl_results_case, force_peak.time, "peak_force_time", "s", KEY_LOADS),
+    KD(wl_results_case, force_peak.rise_time, "rise_time", "s", KEY_LOADS),
+    KD(wl_results_case, force_peak.duration, "duration", "s", KEY_LOADS),
+    KD(wl_results_case, force_b_peak.value, "peak_force_boundary", "N/m", KEY_LOADS),
+    KD(wl_results_case, force_b_peak.time, "peak_force_boundary_time", "s", KEY_LOADS),
+    KD(wl_results_case, moment_peak.value, "peak_moment", "N m/m", KEY_LOADS),
+    KD(wl_results_case, moment_peak.time, "peak_moment_time", "s", KEY_LOADS),
+    KD(wl_results_case, impulse_total, "impulse", "N s/m", KEY_LOADS),
+    KD(wl_results_case, impulse_b_total, "impulse_boundary", "N s/m", KEY_LOADS),
+    KD(wl_results_case, impulse_peak, "impulse_positive_phase", "N s/m", KEY_LOADS),
+    KD(wl_results_case, impulse_peak_from, "impulse_positive_phase_from", "s", KEY_LOADS),
+    KD(wl_results_case, impulse_peak_to, "impulse_positive_phase_to", "s", KEY_LOADS),
+    KD(wl_results_case, impulse_positive, "impulse_positive", "N s/m", KEY_LOADS),
+    KD(wl_results_case, impulse_positive_b, "impulse_positive_boundary", "N s/m", KEY_LOADS),
+    KD(wl_results_case, runup, "max_runup", "m", KEY_LOADS),
+    KD(wl_results_case, runup_time, "max_runup_time", "s", KEY_LOADS),
     KT(wl_results_case, status, "status", KEY_REQUIRED),
     KT(wl_results_case, caution, "caution", KEY_WHEN_SET),
 };
@@ -271,6 +292,26 @@ static const struct key EXPLOSION_KEYS[] = {
 #undef KI
 #undef KT
 #define N_OF(t) (sizeof t / sizeof t[0])
+
+/* /settings: one text attribute a key, with "<key>_origin" */
+const struct wl_results_setting_key wl_store_results_settings[] = {
+    {"numerics.coefh", "coefh (h = coefh sqrt(dim) dp)"},
+    {"numerics.coefsound", "coefsound (c0 = coefsound sqrt(g h_max))"},
+    {"numerics.cfl", "CFL number"},
+    {"numerics.alpha", "artificial viscosity alpha"},
+    {"numerics.viscosity", "viscosity"},
+    {"numerics.nu", "laminar viscosity nu"},
+    {"numerics.density_diffusion", "density diffusion"},
+    {"numerics.shifting", "shifting"},
+    {"numerics.integrator", "time integrator"},
+    {"numerics.verlet_steps", "Euler step every (Verlet)"},
+    {"numerics.boundary", "wall condition"},
+    {"run.output_interval", "output interval"},
+    {"run.end_time", "end time"},
+};
+const int wl_store_results_n_settings = (int)N_OF(wl_store_results_settings);
+_Static_assert(N_OF(wl_store_results_settings) <= WL_RESULTS_MAX_SETTINGS,
+               "every stored setting fits struct wl_results");
 
 static const char *const GAUGE_NAMES = "gauge_names";
 static const char *const SETTING_ORIGIN = "_origin"; /* "<key>_origin": scenario or default */
@@ -572,13 +613,22 @@ static double attr_double(hid_t obj, const char *name) {
 static enum wl_status read_keys(hid_t obj, const char *file_name, const char *group,
                                 const struct key *keys, size_t n, void *base,
                                 struct wl_error *err) {
-  for (size_t i = 0; i < n; i++) {
-    const struct key *k = &keys[i];
-    char *p = (char *)base + k->offset;
-    if ((k->flags & KEY_REQUIRED) && H5Aexists(obj, k->name) <= 0)
+  /* a group that is not what assess writes is said before a file of an
+   * earlier wallload */
+  for (size_t i = 0; i < n; i++)
+    if ((keys[i].flags & KEY_REQUIRED) && H5Aexists(obj, keys[i].name) <= 0)
       return wl_error_set(err, WL_EINPUT,
                           "%s: /%s: found no attribute '%s'; expected the results.h5 that "
                           "`wallload assess` writes",
+                          file_name, group, keys[i].name);
+  for (size_t i = 0; i < n; i++) {
+    const struct key *k = &keys[i];
+    char *p = (char *)base + k->offset;
+    if ((k->flags & KEY_LOADS) && H5Aexists(obj, k->name) <= 0)
+      return wl_error_set(err, WL_EINPUT,
+                          "%s: /%s: found no attribute '%s' (the results of an earlier "
+                          "wallload, which did not store the loads); run `wallload assess` on "
+                          "the scenario again to write them",
                           file_name, group, k->name);
     if (k->type == KEY_TEXT) {
       attr_text(obj, k->name, p, k->size);
@@ -709,63 +759,31 @@ static int by_x(const void *a, const void *b) {
   return xa < xb ? -1 : xa > xb ? 1 : strcmp(ga->name, gb->name);
 }
 
-/* The peaks of one case from its stored series (loads.h definitions, the
- * same calls as the assessment's, so the numbers are summary.json's). */
-static void case_derive(struct wl_results_case *c) {
-  static const struct wl_peak none = {NAN, NAN, 0, NAN, NAN};
-  c->force_peak = c->force_b_peak = c->moment_peak = none;
-  c->impulse_total = c->impulse_b_total = c->runup = c->runup_time = NAN;
-  c->impulse_peak = c->impulse_peak_from = c->impulse_peak_to = NAN;
-  c->impulse_positive = c->impulse_positive_b = NAN;
+/* The sample of the stored series at time t (a peak's stored time), 0
+ * when none: the stored peaks name their time, the report draws the
+ * profile at that sample. */
+static size_t sample_at(const struct wl_results_case *c, double t) {
+  for (size_t k = 0; c->t && k < c->n; k++)
+    if (c->t[k] == t)
+      return k;
+  return 0;
+}
+
+/* What the reader adds to a case's stored values: the wall gauge, the
+ * bases of the net loads for files that lack them, the peaks' samples. */
+static void case_finish(struct wl_results_case *c) {
   c->wall_gauge = -1;
   for (int g = 0; g < c->n_gauges; g++)
     if (!strcmp(c->gauges[g].name, "wall"))
       c->wall_gauge = g;
   /* the bases assess used: the model's force at rest where it measured it */
   const double fs0 = isfinite(c->static_force) ? c->static_force : 0.0;
-  const double fs = isfinite(c->rest_force) ? c->rest_force : fs0;
-  const double fbs = isfinite(c->rest_force_b) ? c->rest_force_b : fs0;
-  /* from here on the bases themselves (store.h) */
-  c->rest_force = fs, c->rest_force_b = fbs;
-  size_t n = c->n;
-  if (n == 0 || !c->t)
-    return;
-  const double ms = isfinite(c->rest_moment)     ? c->rest_moment
-                    : isfinite(c->static_moment) ? c->static_moment
-                                                 : 0.0;
+  c->rest_force = isfinite(c->rest_force) ? c->rest_force : fs0;
+  c->rest_force_b = isfinite(c->rest_force_b) ? c->rest_force_b : fs0;
   c->filtered = c->force_f != NULL;
-  const double *f = c->force_f ? c->force_f : c->force;
-  const double *fb = c->force_bf ? c->force_bf : c->force_b;
-  const double *m = c->moment_f ? c->moment_f : c->moment;
-  /* from peaks_from on, as the assessment searched them; indices made
-   * absolute (sample numbers of the stored series) */
-  size_t k0 = 0;
-  while (isfinite(c->peaks_from) && k0 + 1 < n && c->t[k0] < c->peaks_from)
-    k0++;
-  if (f)
-    wl_loads_peak(c->t + k0, f + k0, n - k0, fs, &c->force_peak), c->force_peak.index += k0;
-  if (fb)
-    wl_loads_peak(c->t + k0, fb + k0, n - k0, fbs, &c->force_b_peak), c->force_b_peak.index += k0;
-  if (m)
-    wl_loads_peak(c->t + k0, m + k0, n - k0, ms, &c->moment_peak), c->moment_peak.index += k0;
-  if (c->impulse)
-    c->impulse_total = c->impulse[n - 1];
-  if (f && c->impulse)
-    c->impulse_peak = wl_loads_positive_phase_impulse(c->t, f, c->impulse, n, fs,
-                                                      c->force_peak.index, &c->impulse_peak_from,
-                                                      &c->impulse_peak_to);
-  if (f)
-    c->impulse_positive = wl_loads_positive_impulse(c->t + k0, f + k0, n - k0, fs);
-  if (fb)
-    c->impulse_positive_b = wl_loads_positive_impulse(c->t + k0, fb + k0, n - k0, fbs);
-  if (c->impulse_b)
-    c->impulse_b_total = c->impulse_b[n - 1];
-  if (c->wall_gauge >= 0 && c->gauges[c->wall_gauge].eta) {
-    const double *e = c->gauges[c->wall_gauge].eta;
-    for (size_t k = 0; k < n; k++)
-      if (isfinite(e[k]) && !(e[k] <= c->runup))
-        c->runup = e[k], c->runup_time = c->t[k];
-  }
+  c->force_peak.index = sample_at(c, c->force_peak.time);
+  c->force_b_peak.index = sample_at(c, c->force_b_peak.time);
+  c->moment_peak.index = sample_at(c, c->moment_peak.time);
 }
 
 static enum wl_status read_case(hid_t file, const char *file_name, int index,
@@ -836,7 +854,7 @@ static enum wl_status read_case(hid_t file, const char *file_name, int index,
     qsort(c->gauges, (size_t)c->n_gauges, sizeof c->gauges[0], by_x);
   }
   if (!st)
-    case_derive(c);
+    case_finish(c);
   return st;
 }
 

@@ -1,0 +1,197 @@
+/* test_sample.c: the sample stage (sample.h) on a hydrostatic particle
+ * column, 2D and 3D, against closed forms (REFERENCES.md 1.1 for the wall
+ * load of still water):
+ *  - the gauge at the face reads the still-water level h (the height the
+ *    particles' volume fills, n_rows dp), i.e. eta = 0;
+ *  - probes deeper than one kernel support below the surface read
+ *    rho0 g (h - z); probes at and above the surface read 0 (dry face);
+ *  - the probe profile integrates to rho0 g h^2/2 and its moment about the
+ *    toe to rho0 g h^3/6;
+ *  - the fluid's potential energy above the floor is rho0 g L h^2/2 per
+ *    metre (the lattice's rows at (k + 1/2) dp sum to it exactly), its
+ *    kinetic energy rho0 L h u^2/2 and its momentum rho0 L h u at a uniform
+ *    velocity u;
+ *  - with the toe above the water the face is dry: force and moment 0.
+ * The densities are the Tait equation's hydrostatic ones (eos.h inverse),
+ * so the pressure each particle carries is rho0 g (h - z_j) exactly. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "testutil.h"
+#include "wallload/sample.h"
+#include "wallload/sph/eos.h"
+
+#define RHO0 1000.0
+#define G 9.81
+#define DP 0.01
+#define N_ROWS 30 /* h = 0.3 m */
+#define U 0.125   /* uniform horizontal velocity [m/s], exact in float */
+
+/* The gauge reads where the Shepard sum crosses 0.5 (sph/probe.h): on a
+ * settled lattice within 0.002 dp of where the volume ends (h = 1.7 dp),
+ * sampled every dp/10 and interpolated; 0.05 dp allows for the kernel's
+ * shorter h = 1.41 dp here. */
+#define GAUGE_TOL (0.05 * DP)
+/* Interior probes: the Shepard interpolation of a linear field on a
+ * symmetric lattice is exact inside the fluid; float densities leave
+ * ~0.02 Pa. */
+#define PROBE_TOL 1e-3
+/* The force and moment: the profile's trapezoid rule and the one-sided
+ * interpolation within a kernel support of the surface and of the floor
+ * (no boundary particles here) stay within the 1 % of test_wall_still. */
+#define LOAD_TOL 0.01
+/* Energies and momentum: exact sums, but the particle mass rho0 dp^dim is
+ * a float (sph/params.h wl_real), 1e-7 relative. */
+#define SUM_TOL 1e-6
+
+/* Fill p with a hydrostatic fluid lattice of nx x ny x N_ROWS particles
+ * (ny 1 in 2D) from x = 0, y = 0, z = 0, moving at U along x. */
+static int column(struct wl_particles *p, int dim, int nx, int ny, const struct wl_sph_const *k) {
+  struct wl_error err;
+  wl_error_clear(&err);
+  const int n = nx * ny * N_ROWS;
+  if (wl_particles_alloc(p, dim, n, 0, &err)) {
+    printf("FAIL particles: %s\n", err.msg);
+    return 0;
+  }
+  const double h = N_ROWS * DP;
+  int i = 0;
+  for (int a = 0; a < nx; a++)
+    for (int b = 0; b < ny; b++)
+      for (int c = 0; c < N_ROWS; c++, i++) {
+        const double z = (c + 0.5) * DP;
+        p->pos[0][i] = (a + 0.5) * DP;
+        if (dim == 3) p->pos[1][i] = (b + 0.5) * DP;
+        p->pos[dim - 1][i] = z;
+        for (int d = 0; d < dim; d++) p->vel[d][i] = 0;
+        p->vel[0][i] = (wl_real)U;
+        p->rho[i] = (wl_real)wl_sph_eos_rho_of_p(k->rho0, k->B, RHO0 * G * (h - z));
+        p->id[i] = (unsigned)i;
+        p->kind[i] = WL_KIND_FLUID;
+        p->body[i] = 0;
+      }
+  p->n = n;
+  p->n_bound = 0;
+  return 1;
+}
+
+static void run(int dim) {
+  const int nx = dim == 2 ? 100 : 40, ny = dim == 2 ? 1 : 12;
+  const double h = N_ROWS * DP, L = nx * DP, W = ny * DP;
+  struct wl_flume *f = calloc(1, sizeof *f);
+  struct wl_error err;
+  wl_error_clear(&err);
+  wl_sph_config_default(&f->cfg, dim, DP, h);
+  f->cfg.prm.rho0 = RHO0;
+  f->cfg.prm.g = G;
+  f->cfg.lo[0] = -0.1, f->cfg.hi[0] = L + 0.1;
+  f->cfg.lo[1] = -0.1, f->cfg.hi[1] = (dim == 2 ? 0.6 : W + 0.1);
+  if (dim == 3) f->cfg.lo[2] = -0.1, f->cfg.hi[2] = 0.6;
+  struct wl_sph_const k;
+  if (wl_sph_const_make(&f->cfg.prm, &k, &err)) {
+    printf("FAIL constants: %s\n", err.msg);
+    wl_test_failures++;
+    free(f);
+    return;
+  }
+  /* a face at the middle of the column: probes on its line every dp/2
+   * from the floor to above the water, the gauge on it */
+  f->dims = dim;
+  f->width = dim == 3 ? W : 0.0;
+  f->depth = h;
+  f->z_toe = 0.0, f->z_crest = 0.5;
+  f->probe_x = 0.5 * L;
+  f->n_probes = 90;
+  for (int i = 0; i < f->n_probes; i++) f->probe_z[i] = (i + 0.5) * 0.5 * DP;
+  if (dim == 3) {
+    f->n_probe_y = 2;
+    f->probe_y[0] = 0.4 * W, f->probe_y[1] = 0.6 * W;
+    f->gauge_y = 0.5 * W;
+  }
+  f->n_gauges = 1;
+  f->gauge_x[0] = 0.5 * L;
+  f->gauge_bed[0] = 0.0;
+  struct wl_particles p;
+  memset(&p, 0, sizeof p);
+  struct wl_sample *s = NULL;
+  struct wl_record r;
+  memset(&r, 0, sizeof r);
+  r.n_gauges = f->n_gauges, r.n_probes = f->n_probes;
+  if (!column(&p, dim, nx, ny, &k) || wl_sample_alloc(&s, f, &err) ||
+      wl_sample_state(s, &p, &k, f->cfg.hi[dim - 1], 0.25, &r, &err)) {
+    printf("FAIL sampling the %dD column: %s\n", dim, err.msg);
+    wl_test_failures++;
+  } else {
+    printf("%dD column: %d particles, h = %g m, kernel h = %g m\n", dim, p.n, h, (double)k.h_d);
+    CHECK_TRUE(r.n == 1 && r.t[0] == 0.25, "one row at the time given");
+    CHECK_ABS(r.eta[0], 0.0, GAUGE_TOL, "gauge reads the still-water level h (sph/probe.h)");
+    const double support = 2.0 * k.h_d;
+    int interior = 0, interior_ok = 0, dry = 0, dry_ok = 0;
+    double worst = 0.0;
+    for (int i = 0; i < f->n_probes; i++) {
+      const double z = f->probe_z[i], pr = r.pressure[i];
+      if (z >= h) {
+        dry++;
+        dry_ok += pr == 0.0;
+      } else if (z > support && z < h - support) {
+        const double want = RHO0 * G * (h - z), e = fabs(pr - want) / want;
+        interior++;
+        interior_ok += e <= PROBE_TOL;
+        if (e > worst) worst = e;
+      }
+    }
+    printf("  interior probes: %d, worst relative error %.2e\n", interior, worst);
+    CHECK_TRUE(interior > 10 && interior_ok == interior,
+               "interior probes read rho0 g (h - z) within 1e-3 (hydrostatics)");
+    CHECK_TRUE(dry > 10 && dry_ok == dry, "probes at and above the surface read 0 (dry face)");
+    CHECK_REL(r.force[0], RHO0 * G * h * h / 2, LOAD_TOL, "probe force rho0 g h^2/2");
+    CHECK_REL(r.moment[0], RHO0 * G * h * h * h / 6, LOAD_TOL,
+              "probe moment about the toe rho0 g h^3/6");
+    CHECK_TRUE(r.force_bound[0] == 0.0 && r.moment_bound[0] == 0.0,
+               "wl_sample_state leaves the boundary force to wl_sample_sim");
+    /* per metre of width in 3D: L x W x h of water, per W */
+    CHECK_REL(r.potential[0], RHO0 * G * L * h * h / 2, SUM_TOL,
+              "potential energy rho0 g L h^2/2 (rows at (k + 1/2) dp)");
+    CHECK_REL(r.kinetic[0], 0.5 * RHO0 * L * h * U * U, SUM_TOL, "kinetic energy rho0 L h u^2/2");
+    CHECK_REL(r.momentum[0], RHO0 * L * h * U, SUM_TOL, "momentum rho0 L h u");
+    /* the toe above the water: nothing loads the face */
+    f->z_toe = h + DP;
+    if (wl_sample_state(s, &p, &k, f->cfg.hi[dim - 1], 0.5, &r, &err)) {
+      printf("FAIL second row: %s\n", err.msg);
+      wl_test_failures++;
+    } else {
+      CHECK_TRUE(r.n == 2 && r.force[1] == 0.0 && r.moment[1] == 0.0,
+                 "a face above the water carries no load");
+      CHECK_TRUE(r.eta[1] == r.eta[0], "the same state samples the same gauge reading");
+    }
+  }
+  wl_sample_free(s);
+  wl_sample_record_clear(&r);
+  wl_particles_clear(&p);
+  free(f);
+}
+
+int main(void) {
+  run(2);
+  run(3);
+  /* a record grows past its first allocation and keeps every row */
+  struct wl_record r;
+  memset(&r, 0, sizeof r);
+  r.n_gauges = 2, r.n_probes = 3;
+  struct wl_error err;
+  wl_error_clear(&err);
+  int ok = 1;
+  for (int i = 0; i < 3000 && ok; i++) {
+    ok = wl_sample_record_push(&r, &err) == WL_OK;
+    if (ok) r.t[i] = i, r.pressure[3 * (size_t)i + 2] = -i;
+  }
+  int kept = ok;
+  for (int i = 0; kept && i < 3000; i++) kept = r.t[i] == i && r.pressure[3 * (size_t)i + 2] == -i;
+  CHECK_TRUE(ok && r.n == 3000 && kept, "a record keeps 3000 rows through its growth");
+  wl_sample_record_clear(&r);
+  CHECK_TRUE(r.n == 0 && r.t == NULL, "a cleared record is empty");
+  wl_sample_free(NULL);
+  return TEST_RESULT();
+}
