@@ -7,6 +7,7 @@
 #include "testutil.h"
 #include "wallload/flume.h"
 #include "wallload/plan.h"
+#include "wallload/sph.h"
 
 static int make(const char *text, struct wl_scenario *s, struct wl_plan *p) {
   struct wl_error err;
@@ -123,6 +124,35 @@ int main(void) {
     if (plan_seawall(0.012, &sw, &pw))
       CHECK_REL(pw.cpu_seconds, 135.0 + 342.8, 0.25,
                 "CPU runtime estimate of seawall.yaml at 0.012 m vs its 2-core run (BENCHMARKS.md)");
+    wl_scenario_clear(&sw);
+  }
+  /* The plan owns h, c0 and the time step's estimate; each case's flume
+   * hands the solver the plan's coefficients and depths, so the solver's
+   * constants are the plan's to the last bit (issue 20: check printed a
+   * time step from an h and c0 the run did not use). */
+  {
+    struct wl_scenario sw;
+    struct wl_plan pw;
+    if (plan_seawall(0.0, &sw, &pw)) {
+      const enum wl_load_case load[2] = {WL_CASE_SOLITARY, WL_CASE_EXPLOSION};
+      const double c0_plan[2] = {pw.solitary.c0, pw.explosion.c0};
+      for (int i = 0; i < 2; i++) {
+        struct wl_flume f;
+        struct wl_sph_const k;
+        struct wl_error err;
+        wl_error_clear(&err);
+        memset(&f, 0, sizeof f);
+        int ok = wl_flume_build(&sw, &pw, load[i], &f, &err) == WL_OK &&
+                 wl_sph_const_make(&f.cfg.prm, &k, &err) == WL_OK;
+        CHECK_TRUE(ok, "seawall.yaml's flume and the solver's constants");
+        if (!ok) printf("  %s\n", err.msg);
+        if (ok) {
+          CHECK_TRUE(k.h_d == pw.h_sml, "the solver's h is the plan's, bit for bit");
+          CHECK_TRUE(k.c0_d == c0_plan[i], "the solver's c0 is the plan's case's, bit for bit");
+        }
+        wl_flume_clear(&f);
+      }
+    }
     wl_scenario_clear(&sw);
   }
   /* Runs side by side on one GPU (plan.h wl_plan_gpu_side_by_side) against

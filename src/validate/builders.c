@@ -450,11 +450,11 @@ static enum wl_status run_zhou(const struct wl_val_case *c, const struct wl_val_
     double *p_raw = malloc(sizeof(double) * (size_t)(z.s.n + 1));
     if (!p_f || !p_raw) st = wl_error_set(err, WL_ENOMEM, "validate: no memory");
     for (int i = 0; !st && i < z.s.n; i++) p_raw[i] = z.s.y[(size_t)i * 3 + 2];
-    const double c0 = wl_sph_sound_speed(cfg.prm.coefsound, cfg.prm.g, cfg.prm.h_max,
-                                         cfg.prm.expected_speed);
+    struct wl_sph_const k; /* the run's constants: its c0 sets the cutoff */
+    if (!st) st = wl_sph_const_make(&cfg.prm, &k, err);
     if (!st && z.s.n > 8)
       st = wl_loads_lowpass(p_raw, (size_t)z.s.n, ZHOU_OUTPUT_DT,
-                            wl_loads_cutoff(c0, ZHOU_COL_H, ZHOU_OUTPUT_DT), p_f, err);
+                            wl_loads_cutoff(k.c0_d, ZHOU_COL_H, ZHOU_OUTPUT_DT), p_f, err);
     else if (!st)
       memcpy(p_f, p_raw, sizeof(double) * (size_t)z.s.n);
     free(p_raw);
