@@ -80,7 +80,9 @@ static uint64_t fnv1a(uint64_t h, const void *data, size_t n) {
 
 /* What decides a case's results: its scenario text, the backend (CPU and
  * GPU differ in the last bits), an --end-time override and the program's
- * version. Not the thread count: the solver's results do not depend on it. */
+ * version (raised whenever results.h5 gains keys that the sweep's tables
+ * read, so a resumed sweep recomputes cases an earlier version wrote). Not
+ * the thread count: the solver's results do not depend on it. */
 static void case_digest(const struct wl_sweep_case *c, const char *backend, double end_time,
                         char hex[17]) {
   uint64_t h = 14695981039346656037ULL;
