@@ -21,6 +21,42 @@
 
 enum { WL_SPH_WALLS_MAX = 64 };
 
+/* Linear solvers of the ISPH pressure Poisson equation (backend_cpu/isph.c;
+ * docs/isph.md says which is chosen and why). */
+enum wl_isph_solver {
+  WL_ISPH_SOLVER_BICGSTAB = 0, /* BiCGSTAB (van der Vorst 1992) on the Jacobi-scaled CSR: default */
+  WL_ISPH_SOLVER_GSL_GMRES = 1 /* GSL's restarted GMRES (gsl_splinalg), same scaled system */
+};
+
+/* Options of the incompressible SPH backend (wl_backend_isph_ops); zero
+ * means the default of each. The weakly-compressible backends ignore them. */
+struct wl_isph_opts {
+  enum wl_isph_solver solver;
+  double tol;          /* relative residual |b - A p| / |b| of the PPE; 0: 1e-9 */
+  int max_iter;        /* 0: 2000 */
+  double surface_tfs;  /* div r below which a fluid particle is on the free surface; 0: 1.5 in
+                          2D, 2.4 in 3D (Lee et al. 2008) */
+  /* The Dirichlet value of a surface particle: 0 puts p = 0 at its centre;
+   * 1 (default, -1 to turn off) puts it at the fluid's edge dp/2 outside,
+   * p_s = rho0 max(0, -g.n) dp/2 (docs/isph.md, "free surface") */
+  int surface_offset;
+  /* Debug: write the PPE (Matrix Market, rows scaled, and its right-hand
+   * side) of step dump_step to dump_path(.mtx, .rhs); NULL: never. */
+  const char *dump_path;
+  long dump_step;
+};
+
+/* What the ISPH backend did in its last step (wl_backend_isph_stats). */
+struct wl_isph_stats {
+  int iterations;      /* of the PPE solve */
+  double residual;     /* its final relative residual */
+  long iterations_sum; /* over all steps so far */
+  long solves;         /* steps so far */
+  int n_surface;       /* fluid particles on the free surface */
+  int nnz;             /* nonzeros of the PPE */
+  double t_solve, t_total; /* seconds spent in solves and in steps so far */
+};
+
 /* Everything a backend needs to set up a run (copied by init). */
 struct wl_sph_config {
   struct wl_sph_params prm;            /* physics parameters */
@@ -29,6 +65,7 @@ struct wl_sph_config {
   int n_walls;                         /* wall faces for the penetration guard */
   struct wl_sph_wall walls[WL_SPH_WALLS_MAX];
   int n_threads;                       /* CPU: OpenMP threads, 0 = OpenMP's default */
+  struct wl_isph_opts isph;            /* the ISPH backend's options (zero: defaults) */
 };
 
 /* Input of one step. */
@@ -229,6 +266,16 @@ struct wl_backend_ops {
 
 /* The OpenMP CPU backend (src/backend_cpu). */
 extern const struct wl_backend_ops wl_backend_cpu_ops;
+
+/* The incompressible SPH backend (src/backend_cpu/isph.c): a projection
+ * method with a pressure Poisson equation (sph/isph.h, docs/isph.md), 2D,
+ * on the host. Stage 1 of issue 22: reachable from the tests, not yet from
+ * scenarios. */
+extern const struct wl_backend_ops wl_backend_isph_ops;
+
+/* The ISPH backend's counters (ctx: the backend state of a simulation that
+ * runs wl_backend_isph_ops; sph.h wl_sph_sim_backend gives it). */
+void wl_backend_isph_stats(const void *ctx, struct wl_isph_stats *out);
 
 /* The CUDA backend (src/backend_cuda); in a build without CUDA its init
  * returns WL_EUNSUPPORTED ("built without CUDA"). */

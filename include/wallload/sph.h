@@ -227,6 +227,10 @@ enum wl_status wl_sph_sim_wall_load(struct wl_sph_sim *sim, int body, double z_r
  * buf of size bytes. */
 void wl_sph_sim_describe(const struct wl_sph_sim *sim, char *buf, size_t size);
 
+/* The backend's state of sim (for a backend's own inspection functions,
+ * such as backend.h wl_backend_isph_stats); owned by sim. */
+const void *wl_sph_sim_backend(const struct wl_sph_sim *sim);
+
 double wl_sph_sim_time(const struct wl_sph_sim *sim);          /* [s] */
 long wl_sph_sim_limited(const struct wl_sph_sim *sim);         /* wall-limiter corrections so far */
 /* Fluid particles that left the domain box so far (taken out of the run at

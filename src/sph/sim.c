@@ -418,3 +418,5 @@ void wl_sph_sim_describe(const struct wl_sph_sim *sim, char *buf, size_t size) {
   if (sim->ops->describe) sim->ops->describe(sim->ctx, buf, size);
   else snprintf(buf, size, "%s", sim->ops->name);
 }
+
+const void *wl_sph_sim_backend(const struct wl_sph_sim *sim) { return sim->ctx; }
