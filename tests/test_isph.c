@@ -1,0 +1,295 @@
+/* test_isph.c: the incompressible SPH backend (backend.h wl_backend_isph_ops,
+ * sph/isph.h, docs/isph.md) against references it did not produce.
+ *
+ * still: still water in a 2D tank (REFERENCES.md 1.1), H = 0.5 m deep, L =
+ *   1 m long, dp = H/25, 3 layers of wall particles, run for 20 sqrt(H/g)
+ *   (REFERENCES: >= 20). Checks, over the outputs of the last sqrt(H/g)... 1 s:
+ *   - bed pressure: the hydrostatic line fitted through the interior fluid
+ *     particles' pressures (as test_sph_tank), at the bed face z = 0, within
+ *     0.5 % of rho0 g h_eff, h_eff = fluid area / L (issue 22);
+ *   - its slope within 0.5 % of -rho0 g;
+ *   - spurious velocity: max |v| of the fluid < 1 % of sqrt(g H) (issue 22);
+ *   - the PPE solves converge (the run would stop otherwise);
+ *   - both linear solvers give the same pressure (BiCGSTAB vs GSL GMRES, a
+ *     second independent computation) to 1e-6 of rho0 g H;
+ *   - 1 thread and 2 threads give the same bits.
+ * bench (argument "bench", not run by ctest): the same tank with the
+ *   weakly-compressible CPU backend, steps and particle-steps/s of each
+ *   (docs/isph.md's bench note). "dump PATH": writes the PPE of step 10. */
+#include <gsl/gsl_errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "testutil.h"
+#include "wallload/scene.h"
+#include "wallload/sph.h"
+
+#define H 0.5
+#define L 1.0
+#define G 9.81
+#define TOL_P 0.005 /* issue 22: 0.5 % */
+#define TOL_V 0.01  /* issue 22: 1 % of sqrt(g h) */
+
+struct acc {
+  int n;
+  double t_avg; /* start of the averaging window [s] */
+  double p_bed, slope, vmax_end, vmax_all;
+  int trace;
+};
+
+static enum wl_status on_output(void *user, struct wl_sph_sim *sim, double t, struct wl_error *err) {
+  struct acc *a = user;
+  const struct wl_particles *p = wl_sph_sim_particles(sim, err);
+  if (!p) return err->status;
+  const struct wl_sph_const *k = wl_sph_sim_const(sim);
+  double vmax = 0;
+  for (int i = p->n_bound; i < p->n; i++) vmax = fmax(vmax, hypot(p->vel[0][i], p->vel[1][i]));
+  a->vmax_all = fmax(a->vmax_all, vmax);
+  if (a->trace) {
+    int im = p->n_bound;
+    for (int i = p->n_bound; i < p->n; i++)
+      if (hypot(p->vel[0][i], p->vel[1][i]) >= vmax) im = i;
+    printf("trace t %.3f steps %ld dt %.4g vmax %.4g at (%.3f, %.3f) p %.1f\n", t,
+           wl_sph_sim_steps(sim), wl_sph_sim_dt(sim), vmax, p->pos[0][im], p->pos[1][im],
+           wl_sph_eos_p(k, p->rho[im]));
+  }
+  if (t < a->t_avg - 1e-9) return WL_OK;
+  double sz = 0, sp = 0, szz = 0, szp = 0;
+  int m = 0;
+  for (int i = p->n_bound; i < p->n; i++) {
+    const double x = p->pos[0][i], z = p->pos[1][i];
+    if (x < 0.2 * L || x > 0.8 * L || z < 2 * k->dp || z > H - 3 * k->dp) continue;
+    const double pr = wl_sph_eos_p(k, p->rho[i]);
+    sz += z;
+    sp += pr;
+    szz += z * z;
+    szp += z * pr;
+    m++;
+  }
+  const double c1 = (m * szp - sz * sp) / (m * szz - sz * sz), c0 = (sp - c1 * sz) / m;
+  a->p_bed += c0;
+  a->slope += c1;
+  a->vmax_end = fmax(a->vmax_end, vmax);
+  a->n++;
+  return WL_OK;
+}
+
+/* The tank's particles and configuration; h_eff [m]. */
+static int tank(int n_h, int incompressible, struct wl_sph_config *cfg, struct wl_particles *init,
+                double *h_eff) {
+  const double dp = H / n_h;
+  const int layers = 3;
+  struct wl_error err;
+  wl_error_clear(&err);
+  wl_sph_config_default(cfg, 2, dp, H);
+  cfg->n_threads = 1;
+  struct wl_sph_const k;
+  if (wl_sph_const_make(&cfg->prm, &k, &err) != WL_OK) {
+    printf("FAIL %s\n", err.msg);
+    return 1;
+  }
+  cfg->lo[0] = -(layers + 2) * dp;
+  cfg->hi[0] = L + (layers + 2) * dp;
+  cfg->lo[1] = -(layers + 2) * dp;
+  cfg->hi[1] = 2 * H;
+  /* The scene lays the fluid out at the Tait densities of its hydrostatic
+   * pressure (the column 0.5 % short at coefsound 10); an incompressible
+   * fluid has none, and a divergence-free projection would keep that
+   * compression for ever (docs/isph.md): for ISPH the scene's constants
+   * are those of coefsound 100, a column within 0.005 % of H. */
+  struct wl_sph_const ks = k;
+  if (incompressible) {
+    struct wl_sph_params ps = cfg->prm;
+    ps.coefsound = WL_SPH_COEFSOUND_MAX;
+    if (wl_sph_const_make(&ps, &ks, &err) != WL_OK) return 1;
+  }
+  struct wl_scene sc;
+  wl_scene_init(&sc, &ks, 0, 0);
+  const double tx[4] = {0, 0, L, L}, tz[4] = {1.5 * H, 0, 0, 1.5 * H};
+  const double lo[2] = {0, 0}, hi[2] = {L, H};
+  if (wl_scene_boundary_polyline(&sc, tx, tz, 4, layers, WL_KIND_FIXED, 0, cfg, &err) ||
+      wl_scene_fluid_block(&sc, lo, hi, H, &err)) {
+    printf("FAIL scene: %s\n", err.msg);
+    return 1;
+  }
+  wl_scene_hydrostatic_boundary(&sc, H);
+  if (wl_scene_build(&sc, init, &err)) {
+    printf("FAIL build: %s\n", err.msg);
+    return 1;
+  }
+  wl_scene_clear(&sc);
+  *h_eff = (init->n - init->n_bound) * dp * dp / L;
+  return 0;
+}
+
+struct run_result {
+  enum wl_status st;
+  struct acc a;
+  long steps;
+  double wall_s, h_eff, rho0;
+  int n;
+  struct wl_isph_stats stats;
+  double *press; /* fluid pressures at the end, by particle id (caller frees) */
+  double *vel;   /* fluid x, z velocities at the end, by id */
+  unsigned n_ids;
+  char msg[512];
+};
+
+static double wall_now(void) {
+  struct timespec ts;
+  timespec_get(&ts, TIME_UTC);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* One still-tank run to t_end with backend ops (isph options o). */
+static int run_tank(const struct wl_backend_ops *ops, int n_h, int threads,
+                    const struct wl_isph_opts *o, int laminar, double t_end,
+                    struct run_result *r) {
+  memset(r, 0, sizeof *r);
+  struct wl_sph_config cfg;
+  struct wl_particles init = {0};
+  if (tank(n_h, ops == &wl_backend_isph_ops, &cfg, &init, &r->h_eff)) return 1;
+  cfg.n_threads = threads;
+  if (o) cfg.isph = *o;
+  if (laminar) cfg.prm.visc = WL_SPH_VISC_LAMINAR;
+  struct wl_error err;
+  wl_error_clear(&err);
+  struct wl_sph_sim *sim;
+  r->n = init.n;
+  if (wl_sph_sim_alloc(&sim, ops, &cfg, &init, &err) != WL_OK) {
+    wl_particles_clear(&init);
+    r->st = err.status;
+    snprintf(r->msg, sizeof r->msg, "%s", err.msg);
+    return 0;
+  }
+  wl_particles_clear(&init);
+  r->rho0 = cfg.prm.rho0;
+  r->a.t_avg = t_end - 1.0;
+  r->a.trace = getenv("WL_TEST_TRACE") != NULL;
+  struct wl_sph_run_opts opts = {0};
+  opts.t_end = t_end;
+  opts.output_dt = 0.1;
+  opts.output = on_output;
+  opts.user = &r->a;
+  const double w0 = wall_now();
+  r->st = wl_sph_sim_run(sim, &opts, &err);
+  r->wall_s = wall_now() - w0;
+  if (r->st) snprintf(r->msg, sizeof r->msg, "%s", err.msg);
+  r->steps = wl_sph_sim_steps(sim);
+  if (ops == &wl_backend_isph_ops) wl_backend_isph_stats(wl_sph_sim_backend(sim), &r->stats);
+  const struct wl_particles *p = wl_sph_sim_particles(sim, &err);
+  if (p) {
+    const struct wl_sph_const *k = wl_sph_sim_const(sim);
+    r->n_ids = 0;
+    for (int i = 0; i < p->n; i++) r->n_ids = p->id[i] + 1 > r->n_ids ? p->id[i] + 1 : r->n_ids;
+    r->press = calloc(r->n_ids, sizeof(double));
+    r->vel = calloc(2 * (size_t)r->n_ids, sizeof(double));
+    for (int i = 0; i < p->n; i++) {
+      r->press[p->id[i]] = wl_sph_eos_p(k, p->rho[i]);
+      r->vel[2 * p->id[i]] = p->vel[0][i];
+      r->vel[2 * p->id[i] + 1] = p->vel[1][i];
+    }
+  }
+  wl_sph_sim_free(sim);
+  return 0;
+}
+
+static void report(const char *name, const struct run_result *r) {
+  const double rgh = r->rho0 * G * r->h_eff, c = sqrt(G * H);
+  printf("%s: %s%s%s; %d particles, %ld steps, %.2f s wall, %.3g particle-steps/s\n", name,
+         wl_error_status_name(r->st), r->st ? ": " : "", r->st ? r->msg : "", r->n, r->steps,
+         r->wall_s, r->steps * (double)r->n / r->wall_s);
+  if (r->a.n)
+    printf("  bed pressure %.6g Pa (rho0 g h_eff %.6g, %+.3f %%), slope %+.3f %% of -rho0 g, "
+           "max |v| last 1 s %.3g %% (whole run %.3g %%) of sqrt(gH)\n",
+           r->a.p_bed / r->a.n, rgh, 100 * (r->a.p_bed / r->a.n / rgh - 1),
+           100 * (-r->a.slope / r->a.n / (r->rho0 * G) - 1), 100 * r->a.vmax_end / c,
+           100 * r->a.vmax_all / c);
+  if (r->stats.solves)
+    printf("  PPE: %.1f iterations a solve, last residual %.2g, %d nonzeros, %d surface "
+           "particles, solve %.0f %% of the step time\n",
+           (double)r->stats.iterations_sum / r->stats.solves, r->stats.residual, r->stats.nnz,
+           r->stats.n_surface, 100 * r->stats.t_solve / r->stats.t_total);
+}
+
+static void free_result(struct run_result *r) {
+  free(r->press);
+  free(r->vel);
+}
+
+int main(int argc, char **argv) {
+  gsl_set_error_handler_off();
+  const double t_end = 20 * sqrt(H / G); /* 4.52 s */
+  const int n_h = 25;
+  if (argc > 1 && strcmp(argv[1], "bench") == 0) {
+    /* the same tank, both solvers, WCSPH beside; resolution from argv[2] */
+    const int nh = argc > 2 ? atoi(argv[2]) : n_h;
+    struct run_result r;
+    struct wl_isph_opts o = {0};
+    run_tank(&wl_backend_isph_ops, nh, 1, &o, 1, t_end, &r);
+    report("isph bicgstab", &r);
+    free_result(&r);
+    o.solver = WL_ISPH_SOLVER_GSL_GMRES;
+    run_tank(&wl_backend_isph_ops, nh, 1, &o, 1, t_end, &r);
+    report("isph gsl-gmres", &r);
+    free_result(&r);
+    run_tank(&wl_backend_cpu_ops, nh, 1, NULL, 0, t_end, &r);
+    report("wcsph (defaults)", &r);
+    free_result(&r);
+    return 0;
+  }
+  if (argc > 2 && strcmp(argv[1], "dump") == 0) {
+    struct run_result r;
+    struct wl_isph_opts o = {0};
+    o.dump_path = argv[2];
+    o.dump_step = argc > 3 ? atol(argv[3]) : 10;
+    run_tank(&wl_backend_isph_ops, argc > 4 ? atoi(argv[4]) : n_h, 1, &o, 1, getenv("WL_TEST_TEND") ? atof(getenv("WL_TEST_TEND")) : 0.2, &r);
+    report("isph dump", &r);
+    free_result(&r);
+    return 0;
+  }
+
+  struct run_result r;
+  struct wl_isph_opts o = {0};
+  run_tank(&wl_backend_isph_ops, n_h, 1, &o, 1, t_end, &r);
+  report("isph still tank", &r);
+  CHECK_TRUE(r.st == WL_OK, "20 sqrt(H/g) of still water without a fault or a failed solve");
+  CHECK_TRUE(r.a.n >= 10, "outputs in the averaging window");
+  if (r.a.n) {
+    const double rgh = r.rho0 * G * r.h_eff;
+    CHECK_REL(r.a.p_bed / r.a.n, rgh, TOL_P, "bed pressure = rho0 g h_eff within 0.5 % (issue 22)");
+    CHECK_REL(-r.a.slope / r.a.n, r.rho0 * G, TOL_P, "pressure slope = -rho0 g within 0.5 %");
+    CHECK_TRUE(r.a.vmax_end < TOL_V * sqrt(G * H),
+               "max |v| over the last 1 s < 1 % of sqrt(g H) (issue 22)");
+  }
+
+  /* the second solver: the same pressures at a short time */
+  struct run_result r1, r2, r3;
+  struct wl_isph_opts og = {0};
+  og.solver = WL_ISPH_SOLVER_GSL_GMRES;
+  run_tank(&wl_backend_isph_ops, n_h, 1, &o, 1, 0.2, &r1);
+  run_tank(&wl_backend_isph_ops, n_h, 1, &og, 1, 0.2, &r2);
+  double dpmax = 0;
+  if (r1.press && r2.press && r1.n_ids == r2.n_ids)
+    for (unsigned i = 0; i < r1.n_ids; i++) dpmax = fmax(dpmax, fabs(r1.press[i] - r2.press[i]));
+  else
+    dpmax = INFINITY;
+  printf("BiCGSTAB vs GSL GMRES after 0.2 s: max |dp| = %.3g Pa\n", dpmax);
+  CHECK_TRUE(r1.st == WL_OK && r2.st == WL_OK && dpmax < 1e-6 * r1.rho0 * G * H + 0.1,
+             "BiCGSTAB and GSL GMRES agree (a second, independent solver)");
+  /* 2 threads: the same bits */
+  run_tank(&wl_backend_isph_ops, n_h, 2, &o, 1, 0.2, &r3);
+  int same = r1.press && r3.press && r1.n_ids == r3.n_ids;
+  for (unsigned i = 0; same && i < r1.n_ids; i++)
+    same = r1.press[i] == r3.press[i] && r1.vel[2 * i] == r3.vel[2 * i] &&
+           r1.vel[2 * i + 1] == r3.vel[2 * i + 1];
+  CHECK_TRUE(same, "1 and 2 threads give the same bits");
+  free_result(&r);
+  free_result(&r1);
+  free_result(&r2);
+  free_result(&r3);
+  return TEST_RESULT();
+}
