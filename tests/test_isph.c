@@ -252,13 +252,19 @@ int main(int argc, char **argv) {
     return 0;
   }
 
+  /* the sanitizer build's quick run: the short runs below only, which
+   * drive the same code */
+  const int quick = getenv("WL_TEST_QUICK") != NULL;
   struct run_result r;
+  memset(&r, 0, sizeof r);
   struct wl_isph_opts o = {0};
-  run_tank(&wl_backend_isph_ops, n_h, 1, &o, 1, t_end, &r);
-  report("isph still tank", &r);
-  CHECK_TRUE(r.st == WL_OK, "20 sqrt(H/g) of still water without a fault or a failed solve");
-  CHECK_TRUE(r.a.n >= 10, "outputs in the averaging window");
-  if (r.a.n) {
+  if (!quick) {
+    run_tank(&wl_backend_isph_ops, n_h, 1, &o, 1, t_end, &r);
+    report("isph still tank", &r);
+    CHECK_TRUE(r.st == WL_OK, "20 sqrt(H/g) of still water without a fault or a failed solve");
+    CHECK_TRUE(r.a.n >= 10, "outputs in the averaging window");
+  }
+  if (!quick && r.a.n) {
     const double rgh = r.rho0 * G * r.h_eff;
     CHECK_REL(r.a.p_bed / r.a.n, rgh, TOL_P, "bed pressure = rho0 g h_eff within 0.5 % (issue 22)");
     CHECK_REL(-r.a.slope / r.a.n, r.rho0 * G, TOL_P, "pressure slope = -rho0 g within 0.5 %");
