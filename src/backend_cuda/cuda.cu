@@ -4,8 +4,10 @@
  * include/wallload/sph/:
  *
  *   keys      key = group * n_cells + cell (sph/cells.h wl_sph_cell_of)
- *   sort      counting sort by key in the stable order (k_keys, a CUB
- *             scan that gives begin[key] = first sorted index of each key,
+ *             and the particles per key, computed by the update that ends
+ *             the step before (k_update; k_keys for the initial state)
+ *   sort      counting sort by key in the stable order (a CUB scan that
+ *             gives begin[key] = first sorted index of each key,
  *             k_scatter, k_cellsort), then the state fields gathered into
  *             sorted order
  *   walls     with the wall condition (the default), k_wall: one thread per
@@ -14,8 +16,10 @@
  *   forces    the force loop of the dimension (below) at the step start;
  *             predictor (sph/integrate.h) and the forces again at the half
  *             step
- *   corrector and guard (sph/guard.h) in one kernel; the first faulty
- *             particle (lowest sorted index) by an atomic min
+ *   corrector and guard (sph/guard.h), the next step's keys and the end
+ *             of the step in one kernel (k_update, whose last block ends
+ *             the step); the first faulty particle (lowest sorted index)
+ *             by an atomic min
  *   dt        each particle's time-step input (sph/gather.h
  *             wl_sph_eval_dt_input), then block reductions, one atomic max
  *             of the bit pattern per block (exact: the max of non-negative
@@ -31,7 +35,7 @@
  * two role sets of the arrays (a rebuild swaps them) and replayed. A step
  * of the driver (backend.h step) uploads its plan, replays and reads the
  * record back. A block (backend.h run) plans each step on the device by
- * the driver's rules (k_plan, k_end: backend.h wl_sph_dt_toward and
+ * the driver's rules (k_plan, k_update's end_step: backend.h wl_sph_dt_toward and
  * friends, the time step's wl_sph_step_dt, the guards), so the host
  * enqueues the block's steps and reads one record at its end; after a
  * fault, a collapse, the output time or the step count the plan stops
@@ -165,7 +169,7 @@ struct dplan {
   double dt, dt_prev; /* the step and the previous one [s] */
   int euler;          /* Verlet: the Euler step (integrate.h wl_sph_verlet_euler) */
   int stop;           /* the block has stopped: every step kernel returns at once */
-  int block;          /* 1: a block (k_end accounts and plans the next step), 0: one step */
+  int block;          /* 1: a block (end_step accounts and plans the next step), 0: one step */
   int pad;
   double body_vel[WL_SPH_BODIES_MAX + 1][WL_SPH_DIM_MAX]; /* backend.h wl_sph_step_in */
   double body_acc[WL_SPH_BODIES_MAX + 1][WL_SPH_DIM_MAX];
@@ -192,8 +196,15 @@ struct dstats {
   unsigned long long limited; /* particles the wall limiter moved */
   unsigned long long excluded; /* particles that left the domain box (guard.h wl_sph_exclude) */
   double load[2];              /* wall_load: force [N or N/m], moment [N m or N m/m] */
+  unsigned int ticket;         /* k_update's blocks done (its last block ends the step) */
+  int pad2;
   struct dplan plan;           /* uploaded (with blk in a block) before the step */
   struct dblock blk;
+};
+
+/* The wall faces in a block's shared memory (k_update). */
+struct wl_sph_walls_sh {
+  struct wl_sph_wall w[WL_SPH_WALLS_MAX];
 };
 
 /* Read-only configuration on the device (guard). */
@@ -231,13 +242,16 @@ struct gpu {
   unsigned int *key, *id;
   unsigned char *kind, *kind_alt, *body, *body_alt;
   int *begin; /* 2 n_cells + 1 */
-  int *count; /* 2 n_cells + 1: particles per key, then the sort's fill counters */
+  int *count; /* 2 n_cells + 1: particles per key (k_keys at init, then each update) */
+  int *fill;  /* 2 n_cells + 1: the scatter's fill counters */
   void *sort_tmp; /* the scan's scratch */
   size_t sort_tmp_bytes;
   struct dmeta *meta;
   struct dstats *stats;   /* device */
   struct dstats *h_stats; /* pinned host copy */
   struct dstats *h_up;    /* pinned host staging of the plan (and block) uploads */
+  unsigned char *h_dl;    /* pinned host staging of download (dl_bytes) */
+  size_t dl_bytes;
   /* one step captured as a CUDA graph from each of the two role sets (a
    * step's kernels are a dozen launches of a few microseconds each at 20k
    * particles: replayed as a graph they follow each other without the
@@ -261,7 +275,7 @@ static __device__ __forceinline__ int tid(void) { return blockIdx.x * blockDim.x
  * the previous order, the order a stable sort gives. k_keys: each
  * particle's key and the particles per key (count, zeroed before); their
  * exclusive sum is begin (CUB scan); k_scatter: each particle into a free
- * slot of its key's range (count, zeroed again, as the fill counters: the
+ * slot of its key's range (fill, zeroed before, as the fill counters: the
  * order inside a range depends on timing); k_cellsort: each range sorted
  * by previous index, which makes it the stable order again, the same
  * permutation on every run. A cell holds ~8 particles in 2D and ~30 in
@@ -273,7 +287,8 @@ static __device__ __forceinline__ int tid(void) { return blockIdx.x * blockDim.x
  * (plan.stop); the memsets and the scan between them then clear and sum
  * scratch, which the next step writes anew. */
 
-/* Keys and particles per key; thread 0 resets the step record. */
+/* Keys and particles per key, of the initial state (a step's come from
+ * the update that ends the step before it, k_update). */
 template <int DIM>
 __global__ void k_keys(struct wl_sph_grid g, const double *__restrict__ x,
                        const double *__restrict__ y, const double *__restrict__ z,
@@ -281,13 +296,6 @@ __global__ void k_keys(struct wl_sph_grid g, const double *__restrict__ x,
                        int n, struct dstats *st) {
   if (st->plan.stop) return;
   const int i = tid();
-  if (i == 0) {
-    st->ace2 = st->vel2 = st->visc = 0ull;
-    st->first = 0x7fffffff;
-    st->fault = 0;
-    st->limited = 0ull;
-    st->excluded = 0ull;
-  }
   if (i >= n) return;
   double *pos[WL_SPH_DIM_MAX] = {(double *)x, (double *)y, (double *)z};
   if (DIM == 2) pos[1] = (double *)z;
@@ -297,22 +305,35 @@ __global__ void k_keys(struct wl_sph_grid g, const double *__restrict__ x,
   atomicAdd(&count[k], 1);
 }
 
-/* Particle i into a free slot of its key's range of perm. */
+/* Particle i into a free slot of its key's range of perm (fill: the
+ * ranges' fill counters, zeroed before); thread 0 resets the step
+ * record. */
 __global__ void k_scatter(const unsigned int *__restrict__ key, const int *__restrict__ begin,
-                          int *count, unsigned int *perm, int n, const struct dstats *st) {
+                          int *fill, unsigned int *perm, int n, struct dstats *st) {
   const int i = tid();
   if (i >= n || st->plan.stop) return;
+  if (i == 0) {
+    st->ace2 = st->vel2 = st->visc = 0ull;
+    st->first = 0x7fffffff;
+    st->fault = 0;
+    st->limited = 0ull;
+    st->excluded = 0ull;
+  }
   const unsigned k = key[i];
-  perm[begin[k] + atomicAdd(&count[k], 1)] = (unsigned)i;
+  perm[begin[k] + atomicAdd(&fill[k], 1)] = (unsigned)i;
 }
 
 /* Range of key k of perm into ascending order (insertion sort; in
- * registers up to CELLSORT_LOCAL entries, in place beyond). */
+ * registers up to CELLSORT_LOCAL entries, in place beyond). With zero,
+ * count[k] to 0 for the keys the step's update counts anew (k_update);
+ * a rebuild outside a step (wall_load) keeps the counts, which stay those
+ * of the state it sorted. */
 enum { CELLSORT_LOCAL = 48 };
 __global__ void k_cellsort(const int *__restrict__ begin, unsigned int *perm, int n_keys,
-                           const struct dstats *st) {
+                           int *count, int zero, const struct dstats *st) {
   const int k = tid();
   if (k >= n_keys || st->plan.stop) return;
+  if (zero) count[k] = 0;
   const int b = begin[k], m = begin[k + 1] - b;
   if (m < 2) return;
   unsigned int *p = perm + b;
@@ -1053,43 +1074,43 @@ __global__ void k_predict(struct wl_sph_const kp, struct wl_particles p, int n,
   p.press[i] = wl_sph_eos_p(&k, p.rho_h[i]);
 }
 
-/* The update (when update != 0: the corrector, or the Verlet step with
- * its Euler flag, as planned) and guard; the lowest faulty index. */
+/* The fault record of faulty particle f, written by another block of
+ * the kernel that calls it: its fields read past L1 (__ldcg), which may
+ * hold the lines from before their update, into a one-particle view for
+ * the shared guard. */
 template <int DIM>
-__global__ void k_correct_guard(struct wl_sph_const kp, struct wl_particles p, int n, int update,
-                                const struct dmeta *m, struct dstats *st) {
-  const int i = tid();
-  if (i >= n || st->plan.stop) return;
-  const struct wl_sph_const k = kp;
-  const struct dplan *pl = &st->plan;
-  if (update && k.integrator == WL_SPH_VERLET)
-    wl_sph_verlet(DIM, &k, &p, pl->dt, pl->dt_prev, pl->body_vel, pl->euler, i);
-  else if (update)
-    wl_sph_correct(DIM, &k, &p, pl->dt, pl->body_vel, i);
-  if (update && k.wall_limiter && wl_sph_wall_limit(DIM, &p, m->walls, m->n_walls, k.penetration, i))
-    atomicAdd(&st->limited, 1ull);
-  if (update && wl_sph_exclude(DIM, &p, m->lo, m->hi, i)) atomicAdd(&st->excluded, 1ull);
-  int w = -1;
-  if (wl_sph_guard(DIM, &k, &p, m->lo, m->hi, m->walls, m->n_walls, i, &w))
-    atomicMin(&st->first, i);
-}
-
-/* The fault record of faulty particle f. */
-template <int DIM>
-static __device__ void fault_record(const struct wl_sph_const *kp, const struct wl_particles *pp,
-                                    int f, const struct dmeta *m, struct dstats *st) {
-  const struct wl_sph_const &k = *kp;
-  const struct wl_particles &p = *pp;
-  int w = -1;
-  st->fault = wl_sph_guard(DIM, &k, &p, m->lo, m->hi, m->walls, m->n_walls, f, &w);
-  st->wall = w;
-  st->id = p.id[f];
-  st->kind = p.kind[f];
-  for (int a = 0; a < WL_SPH_DIM_MAX; a++) {
-    st->pos[a] = a < DIM ? p.pos[a][f] : 0;
-    st->vel[a] = a < DIM ? (double)p.vel[a][f] : 0;
+static __device__ void fault_record(const struct wl_sph_const *k, const struct wl_particles *pp,
+                                    int f, const struct dmeta *m,
+                                    const struct wl_sph_wall *walls, struct dstats *st) {
+  double pos[WL_SPH_DIM_MAX] = {0, 0, 0};
+  wl_real vel[WL_SPH_DIM_MAX] = {0, 0, 0}, rho = __ldcg(&pp->rho[f]);
+  unsigned char kind = pp->kind[f], body = pp->body[f]; /* not written by the update */
+  for (int a = 0; a < DIM; a++) {
+    pos[a] = __ldcg(&pp->pos[a][f]);
+    vel[a] = __ldcg(&pp->vel[a][f]);
   }
-  st->rho = p.rho[f];
+  if (kind == WL_KIND_FLUID) body = __ldcg((const unsigned char *)&pp->body[f]); /* excluded */
+  struct wl_particles one;
+  memset(&one, 0, sizeof one);
+  one.dim = DIM;
+  one.n = one.capacity = 1;
+  for (int a = 0; a < DIM; a++) {
+    one.pos[a] = &pos[a];
+    one.vel[a] = &vel[a];
+  }
+  one.rho = &rho;
+  one.kind = &kind;
+  one.body = &body;
+  int w = -1;
+  st->fault = wl_sph_guard(DIM, k, &one, m->lo, m->hi, walls, m->n_walls, 0, &w);
+  st->wall = w;
+  st->id = __ldcg(&pp->id[f]);
+  st->kind = kind;
+  for (int a = 0; a < WL_SPH_DIM_MAX; a++) {
+    st->pos[a] = a < DIM ? pos[a] : 0;
+    st->vel[a] = a < DIM ? (double)vel[a] : 0;
+  }
+  st->rho = rho;
 }
 
 /* The plan of a block's next step on the device, as the host's loop
@@ -1121,17 +1142,19 @@ __global__ void k_plan(struct wl_sph_const kp, struct dstats *st) {
   plan_step(&k, st);
 }
 
-/* The end of a step (one thread): the fault record of the first faulty
- * particle; in a block, the step counted as the host's loop counts it
- * (time, step, the next CFL step, the guards in its order) and the next
- * one planned, or the block stopped after it. */
+/* The end of a step (one thread, after every particle's update): the fault
+ * record of the first faulty particle; in a block, the step counted as
+ * the host's loop counts it (time, step, the next CFL step, the guards in
+ * its order) and the next one planned, or the block stopped after it. The
+ * counters the update's blocks added to are read atomically (past L1). */
 template <int DIM>
-__global__ void k_end(struct wl_sph_const kp, struct wl_particles p, int n,
-                      const struct dmeta *m, struct dstats *st) {
-  if (st->plan.stop) return;
-  const struct wl_sph_const k = kp;
-  const int f = st->first;
-  if (f < n) fault_record<DIM>(&k, &p, f, m, st);
+static __device__ void end_step(const struct wl_sph_const *k, const struct wl_particles *p, int n,
+                                const struct dmeta *m, const struct wl_sph_walls_sh *ws,
+                                struct dstats *st) {
+  const int f = atomicAdd(&st->first, 0);
+  const unsigned long long limited = atomicAdd(&st->limited, 0ull);
+  const unsigned long long excluded = atomicAdd(&st->excluded, 0ull);
+  if (f < n) fault_record<DIM>(k, p, f, m, ws->w, st);
   if (!st->plan.block) return;
   struct dblock *b = &st->blk;
   const double dt = st->plan.dt;
@@ -1144,11 +1167,11 @@ __global__ void k_end(struct wl_sph_const kp, struct wl_particles p, int n,
   memcpy(&vel2, &st->vel2, sizeof vel2);
   memcpy(&visc, &st->visc, sizeof visc);
   struct wl_sph_step_out o;
-  wl_sph_step_dt(&k, ace2, vel2, visc, &o);
+  wl_sph_step_dt(k, ace2, vel2, visc, &o);
   b->dt_next = o.dt_next;
-  b->limited += st->limited;
-  b->excluded += st->excluded;
-  b->n_excluded += (long long)st->excluded;
+  b->limited += limited;
+  b->excluded += excluded;
+  b->n_excluded += (long long)excluded;
   int why = -1;
   if (f < n) why = WL_SPH_BLOCK_FAULT;
   else if (wl_sph_excluded_too_many((long)b->n_excluded, (long)b->n_fluid)) why = WL_SPH_BLOCK_EXCLUDED;
@@ -1160,8 +1183,56 @@ __global__ void k_end(struct wl_sph_const kp, struct wl_particles p, int n,
     b->why = why;
     st->plan.stop = 1;
   } else {
-    plan_step(&k, st);
+    plan_step(k, st);
   }
+}
+
+/* The update (when update != 0: the corrector, or the Verlet step with
+ * its Euler flag, as planned) and guard, the lowest faulty index; then
+ * each particle's key of its new position and the particles per key
+ * (count, zeroed by the step's k_cellsort), for the next step's sort; and
+ * the end of the step (end_step) by the block that finishes last, so that
+ * a step needs no one-thread kernel of its own. The wall faces are read
+ * from shared memory (each particle tests every face twice). */
+template <int DIM>
+__global__ void __launch_bounds__(THREADS)
+    k_update(struct wl_sph_const kp, struct wl_sph_grid gp, struct wl_particles p, int n,
+             int update, const struct dmeta *m, int *count, struct dstats *st) {
+  if (st->plan.stop) return; /* the same for every block: only the last one sets it */
+  __shared__ struct wl_sph_walls_sh ws;
+  __shared__ bool last;
+  const int nw = m->n_walls;
+  for (int w = threadIdx.x; w < nw; w += blockDim.x) ws.w[w] = m->walls[w];
+  __syncthreads();
+  const int i = tid();
+  const struct wl_sph_const k = kp;
+  if (i < n) {
+    const struct dplan *pl = &st->plan;
+    if (update && k.integrator == WL_SPH_VERLET)
+      wl_sph_verlet(DIM, &k, &p, pl->dt, pl->dt_prev, pl->body_vel, pl->euler, i);
+    else if (update)
+      wl_sph_correct(DIM, &k, &p, pl->dt, pl->body_vel, i);
+    if (update && k.wall_limiter && wl_sph_wall_limit(DIM, &p, ws.w, nw, k.penetration, i))
+      atomicAdd(&st->limited, 1ull);
+    if (update && wl_sph_exclude(DIM, &p, m->lo, m->hi, i)) atomicAdd(&st->excluded, 1ull);
+    int w = -1;
+    if (wl_sph_guard(DIM, &k, &p, m->lo, m->hi, ws.w, nw, i, &w)) atomicMin(&st->first, i);
+    const struct wl_sph_grid g = gp;
+    const unsigned group = p.kind[i] == WL_KIND_FLUID ? 1u : 0u;
+    const unsigned key = group * (unsigned)g.n_cells + (unsigned)wl_sph_cell_of(DIM, &g, p.pos, i);
+    p.key[i] = key;
+    atomicAdd(&count[key], 1);
+  }
+  /* the last block to finish ends the step (the threadfence pattern: every
+   * thread's writes ordered before its block's ticket) */
+  __threadfence();
+  __syncthreads();
+  if (threadIdx.x == 0) last = atomicAdd(&st->ticket, 1u) == gridDim.x - 1;
+  __syncthreads();
+  if (!last || threadIdx.x != 0) return;
+  __threadfence();
+  st->ticket = 0;
+  end_step<DIM>(&k, &p, n, m, &ws, st);
 }
 
 /* The wall load (backend.h wall_load): each fluid particle's share
@@ -1257,25 +1328,33 @@ static struct wl_particles view(const struct gpu *c) {
  * key, pos_h, vel_h, rho_h receive the sorted keys and state and swap
  * roles with the unsorted ones (key with ace[0]), and so does ar with id
  * (both 4-byte arrays; ar is rewritten by the next force evaluation). */
-static enum wl_status rebuild(struct gpu *c, struct wl_error *err) {
+/* The keys and counts come from the update that ended the last step
+ * (k_update), or with REBUILD_KEYS from k_keys (the initial state); with
+ * REBUILD_ZERO the counts are zeroed for the step's update to count anew
+ * (a step), else kept (wall_load: the next step sorts the same state). */
+enum { REBUILD_KEYS = 1, REBUILD_ZERO = 2 };
+static enum wl_status rebuild(struct gpu *c, int how, struct wl_error *err) {
   const int n = c->n, dim = c->dim, n_keys = 2 * c->grid.n_cells;
   unsigned int *key_d = (unsigned int *)c->ace[0];
   unsigned int *perm = (unsigned int *)c->ace[1];
   const size_t count_bytes = sizeof(int) * (size_t)(n_keys + 1);
-  CK(cudaMemsetAsync(c->count, 0, count_bytes, c->stream));
-  if (dim == 3)
-    k_keys<3><<<blocks(n), THREADS, 0, c->stream>>>(c->grid, c->pos[0], c->pos[1], c->pos[2],
-                                                     c->kind, c->key, c->count, n, c->stats);
-  else
-    k_keys<2><<<blocks(n), THREADS, 0, c->stream>>>(c->grid, c->pos[0], c->pos[1], c->pos[1],
-                                                     c->kind, c->key, c->count, n, c->stats);
-  CKL("keys");
+  if (how & REBUILD_KEYS) {
+    CK(cudaMemsetAsync(c->count, 0, count_bytes, c->stream));
+    if (dim == 3)
+      k_keys<3><<<blocks(n), THREADS, 0, c->stream>>>(c->grid, c->pos[0], c->pos[1], c->pos[2],
+                                                       c->kind, c->key, c->count, n, c->stats);
+    else
+      k_keys<2><<<blocks(n), THREADS, 0, c->stream>>>(c->grid, c->pos[0], c->pos[1], c->pos[1],
+                                                       c->kind, c->key, c->count, n, c->stats);
+    CKL("keys");
+  }
   size_t tmp = c->sort_tmp_bytes;
   CK(cub::DeviceScan::ExclusiveSum(c->sort_tmp, tmp, c->count, c->begin, n_keys + 1, c->stream));
-  CK(cudaMemsetAsync(c->count, 0, count_bytes, c->stream));
-  k_scatter<<<blocks(n), THREADS, 0, c->stream>>>(c->key, c->begin, c->count, perm, n, c->stats);
+  CK(cudaMemsetAsync(c->fill, 0, count_bytes, c->stream));
+  k_scatter<<<blocks(n), THREADS, 0, c->stream>>>(c->key, c->begin, c->fill, perm, n, c->stats);
   CKL("scatter");
-  k_cellsort<<<blocks(n_keys), THREADS, 0, c->stream>>>(c->begin, perm, n_keys, c->stats);
+  k_cellsort<<<blocks(n_keys), THREADS, 0, c->stream>>>(c->begin, perm, n_keys, c->count,
+                                                        (how & REBUILD_ZERO) != 0, c->stats);
   CKL("cell sort");
   struct permute_args a;
   memset(&a, 0, sizeof a);
@@ -1415,21 +1494,18 @@ static enum wl_status evaluate(struct gpu *c, double *const *pos, wl_real *const
   return WL_OK;
 }
 
-/* The update (update != 0; the plan says how) and guard, then the end of
- * the step (k_end). */
+/* The update (update != 0; the plan says how), guard, the next sort's keys
+ * and the end of the step (k_update). */
 static enum wl_status enqueue_update(struct gpu *c, int update, struct wl_error *err) {
   const struct wl_particles p = view(c);
   const int n = c->n;
-  if (c->dim == 3) {
-    k_correct_guard<3><<<blocks(n), THREADS, 0, c->stream>>>(c->k, p, n, update, c->meta, c->stats);
-    CKL("correct");
-    k_end<3><<<1, 1, 0, c->stream>>>(c->k, p, n, c->meta, c->stats);
-  } else {
-    k_correct_guard<2><<<blocks(n), THREADS, 0, c->stream>>>(c->k, p, n, update, c->meta, c->stats);
-    CKL("correct");
-    k_end<2><<<1, 1, 0, c->stream>>>(c->k, p, n, c->meta, c->stats);
-  }
-  CKL("end of step");
+  if (c->dim == 3)
+    k_update<3><<<blocks(n), THREADS, 0, c->stream>>>(c->k, c->grid, p, n, update, c->meta,
+                                                      c->count, c->stats);
+  else
+    k_update<2><<<blocks(n), THREADS, 0, c->stream>>>(c->k, c->grid, p, n, update, c->meta,
+                                                      c->count, c->stats);
+  CKL("update");
   return WL_OK;
 }
 
@@ -1477,6 +1553,7 @@ static void cuda_free(void *ctx) {
   for (int q = 0; q < c->n_allocs; q++) cudaFree(c->allocs[q]);
   if (c->h_stats) cudaFreeHost(c->h_stats);
   if (c->h_up) cudaFreeHost(c->h_up);
+  if (c->h_dl) cudaFreeHost(c->h_dl);
   if (c->stream) cudaStreamDestroy(c->stream);
   free(c);
 }
@@ -1486,7 +1563,7 @@ static void cuda_free(void *ctx) {
  * and guard, end of step. Enqueued only; the roles of the arrays are those
  * after the step's rebuild. */
 static enum wl_status enqueue_step(struct gpu *c, struct wl_error *err) {
-  enum wl_status st = rebuild(c, err);
+  enum wl_status st = rebuild(c, REBUILD_ZERO, err);
   if (st) return st;
   if (c->k.shift_coef > 0 && c->n > c->nb) {
     const struct wl_sph_eval e = wl_sph_eval_inputs(c->dim, c->pos, c->vel, c->rho, c->key, c->begin);
@@ -1681,7 +1758,7 @@ static enum wl_status cuda_wall_load(void *ctx, int body, double z_ref, double *
                                      double *moment, struct wl_error *err) {
   struct gpu *c = (struct gpu *)ctx;
   *force = *moment = 0.0;
-  enum wl_status st = rebuild(c, err);
+  enum wl_status st = rebuild(c, 0, err);
   if (st) return st;
   const int n = c->n, nb = c->nb, lam = c->k.visc == WL_SPH_VISC_LAMINAR;
   if (n > nb) {
@@ -1719,6 +1796,16 @@ static void cuda_describe(void *ctx, char *buf, size_t size) {
            c->grid.cell, c->bytes / 1048576.0, (double)c->bytes / (c->n > 0 ? c->n : 1));
 }
 
+/* The fields download copies, in the order of its pinned staging buffer:
+ * pos (dim doubles), vel (dim wl_real), rho, id, kind, body. */
+static size_t download_bytes(int dim, size_t n) {
+  return n * ((size_t)dim * (sizeof(double) + sizeof(wl_real)) + sizeof(wl_real) +
+              sizeof(unsigned int) + 2);
+}
+
+/* The state into the host's arrays through the pinned staging buffer: the
+ * copies from pageable memory each wait for the driver's own staging, at
+ * an output every few dozen steps of a small flume. */
 static enum wl_status cuda_download(void *ctx, struct wl_particles *host, struct wl_error *err) {
   struct gpu *c = (struct gpu *)ctx;
   if (host->dim != c->dim)
@@ -1728,15 +1815,30 @@ static enum wl_status cuda_download(void *ctx, struct wl_particles *host, struct
     return wl_error_set(err, WL_EINPUT, "cuda backend: download of %d particles into room for %d",
                         c->n, host->capacity);
   const size_t n = (size_t)c->n;
-  for (int a = 0; a < c->dim; a++) {
-    CK(cudaMemcpyAsync(host->pos[a], c->pos[a], n * sizeof(double), cudaMemcpyDeviceToHost, c->stream));
-    CK(cudaMemcpyAsync(host->vel[a], c->vel[a], n * sizeof(wl_real), cudaMemcpyDeviceToHost, c->stream));
+  struct part {
+    void *host;
+    const void *dev;
+    size_t bytes;
+  } parts[2 * WL_SPH_DIM_MAX + 4];
+  int np = 0;
+  for (int a = 0; a < c->dim; a++) parts[np++] = {host->pos[a], c->pos[a], n * sizeof(double)};
+  for (int a = 0; a < c->dim; a++) parts[np++] = {host->vel[a], c->vel[a], n * sizeof(wl_real)};
+  parts[np++] = {host->rho, c->rho, n * sizeof(wl_real)};
+  parts[np++] = {host->id, c->id, n * sizeof(unsigned int)};
+  parts[np++] = {host->kind, c->kind, n};
+  parts[np++] = {host->body, c->body, n};
+  size_t off = 0;
+  for (int q = 0; q < np; q++) {
+    CK(cudaMemcpyAsync(c->h_dl + off, parts[q].dev, parts[q].bytes, cudaMemcpyDeviceToHost,
+                       c->stream));
+    off += parts[q].bytes;
   }
-  CK(cudaMemcpyAsync(host->rho, c->rho, n * sizeof(wl_real), cudaMemcpyDeviceToHost, c->stream));
-  CK(cudaMemcpyAsync(host->id, c->id, n * sizeof(unsigned int), cudaMemcpyDeviceToHost, c->stream));
-  CK(cudaMemcpyAsync(host->kind, c->kind, n, cudaMemcpyDeviceToHost, c->stream));
-  CK(cudaMemcpyAsync(host->body, c->body, n, cudaMemcpyDeviceToHost, c->stream));
   CK(cudaStreamSynchronize(c->stream));
+  off = 0;
+  for (int q = 0; q < np; q++) {
+    memcpy(parts[q].host, c->h_dl + off, parts[q].bytes);
+    off += parts[q].bytes;
+  }
   host->n = c->n;
   host->n_bound = c->nb;
   return WL_OK;
@@ -1836,7 +1938,7 @@ static enum wl_status init_mode(void **ctx, const struct wl_sph_config *cfg,
   const int shifting = k->shift_coef > 0;
   const int verlet = k->integrator == WL_SPH_VERLET;
   const size_t per = bytes_per_particle(dim, shifting, verlet);
-  const size_t need = per * (size_t)n + 2 * sizeof(int) * (size_t)(n_keys + 1) + c->sort_tmp_bytes +
+  const size_t need = per * (size_t)n + 3 * sizeof(int) * (size_t)(n_keys + 1) + c->sort_tmp_bytes +
                       sizeof(struct dmeta) + sizeof(struct dstats);
   size_t free_b = 0, total_b = 0;
   {
@@ -1899,10 +2001,21 @@ static enum wl_status init_mode(void **ctx, const struct wl_sph_config *cfg,
   A(c->body_alt, n8, "body (sort copy)");
   A(c->begin, sizeof(int) * (size_t)(n_keys + 1), "cell index");
   A(c->count, sizeof(int) * (size_t)(n_keys + 1), "cell counts");
+  A(c->fill, sizeof(int) * (size_t)(n_keys + 1), "cell fill counters");
   A(c->sort_tmp, c->sort_tmp_bytes, "sort scratch");
   A(c->meta, sizeof(struct dmeta), "configuration");
   A(c->stats, sizeof(struct dstats), "step record");
 #undef A
+  c->dl_bytes = download_bytes(dim, (size_t)n);
+  {
+    const cudaError_t e = cudaMallocHost((void **)&c->h_dl, c->dl_bytes);
+    if (e != cudaSuccess) {
+      c->h_dl = NULL;
+      cuda_free(c);
+      return wl_error_set(err, WL_ENOMEM, "cuda backend: cudaMallocHost of the download staging "
+                          "(%.1f MiB): %s", c->dl_bytes / 1048576.0, cudaGetErrorString(e));
+    }
+  }
   for (int q = 0; q < 2; q++) {
     struct dstats **h = q ? &c->h_up : &c->h_stats;
     const cudaError_t e = cudaMallocHost((void **)h, sizeof **h);
@@ -1949,7 +2062,8 @@ static enum wl_status init_mode(void **ctx, const struct wl_sph_config *cfg,
 #undef C
   /* forces of the initial state give the first dt (as the CPU backend);
    * then the steps are captured */
-  if ((st = rebuild(c, err)) || (st = evaluate(c, c->pos, c->vel, c->rho, err)) ||
+  if ((st = rebuild(c, REBUILD_KEYS | REBUILD_ZERO, err)) ||
+      (st = evaluate(c, c->pos, c->vel, c->rho, err)) ||
       (st = enqueue_update(c, 0, err)) || (st = fetch_record(c, err)) ||
       (step_out_of(c, out), st = capture_steps(c, err))) {
     cuda_free(c);
