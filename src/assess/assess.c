@@ -412,7 +412,7 @@ enum wl_status wl_assess_case(const struct wl_scenario *s, const struct wl_plan 
 
 enum wl_status assess_case(const struct wl_scenario *s, const struct wl_plan *plan,
                            enum wl_load_case load, const struct wl_assess_opts *opts,
-                           const char *snapshots, int defer, struct wl_case_result *c,
+                           const char *snapshots, int how, struct wl_case_result *c,
                            struct wl_error *err) {
   memset(c, 0, sizeof *c);
   c->load = load;
@@ -420,6 +420,7 @@ enum wl_status assess_case(const struct wl_scenario *s, const struct wl_plan *pl
   enum wl_status st = wl_flume_build(s, plan, load, &c->flume, err);
   if (st) return st;
   if (opts->threads > 0) c->flume.cfg.n_threads = opts->threads;
+  if (how & ASSESS_URGENT) c->flume.cfg.priority = 1;
   c->t_end = opts->end_time > 0 ? opts->end_time : c->flume.t_end;
   c->output_dt = s->run.output_interval.q.si;
   c->dp = plan->dp;
@@ -439,7 +440,7 @@ enum wl_status assess_case(const struct wl_scenario *s, const struct wl_plan *pl
   c->rec.n_probes = c->flume.n_probes;
   const struct wl_backend_ops *ops;
   if ((st = pick_backend(s, opts, &ops, err))) return st;
-  c->status = run_case(opts, ops, snapshots, defer, c, err);
+  c->status = run_case(opts, ops, snapshots, (how & ASSESS_DEFER) != 0, c, err);
   if (c->status != WL_OK) snprintf(c->message, sizeof c->message, "%s", err->msg);
   struct wl_error lerr;
   wl_error_clear(&lerr);
@@ -616,13 +617,16 @@ struct case_job {
   enum wl_status st;
   pthread_t tid;
   int started, ran;
+  int urgent; /* the case in the caller's thread: the others finish before it */
 };
 
 static void *case_thread(void *arg) {
   struct case_job *j = arg;
   j->st = j->s->resolution.n_levels > 0
-              ? ladder_run(j->s, j->plan, j->load, &j->opts, j->snaps, j->c, j->cv, &j->err)
-              : assess_case(j->s, j->plan, j->load, &j->opts, j->snaps, 1, j->c, &j->err);
+              ? ladder_run(j->s, j->plan, j->load, &j->opts, j->snaps, j->urgent, j->c, j->cv,
+                           &j->err)
+              : assess_case(j->s, j->plan, j->load, &j->opts, j->snaps,
+                            ASSESS_DEFER | (j->urgent ? ASSESS_URGENT : 0), j->c, &j->err);
   return NULL;
 }
 
@@ -682,6 +686,7 @@ static enum wl_status assess_locked(const struct wl_scenario *s, const struct wl
       j->cv = &res->conv[i];
       wl_error_clear(&j->err);
       j->ran = 1;
+      j->urgent = i + 1 == n;
       if (i + 1 < n) j->started = pthread_create(&j->tid, NULL, case_thread, j) == 0;
     }
     case_thread(&jobs[n - 1]);
@@ -704,8 +709,9 @@ static enum wl_status assess_locked(const struct wl_scenario *s, const struct wl
       cerr = jobs[i].err;
     } else {
       cst = s->resolution.n_levels > 0
-                ? ladder_run(s, plan, todo[i], opts, snaps, c, &res->conv[i], &cerr)
-                : assess_case(s, plan, todo[i], opts, snaps, 1, c, &cerr);
+                ? ladder_run(s, plan, todo[i], opts, snaps, 1, c, &res->conv[i], &cerr)
+                : assess_case(s, plan, todo[i], opts, snaps, ASSESS_DEFER | ASSESS_URGENT, c,
+                              &cerr);
     }
     /* the next case already ran beside this one: its results are written
      * too, whatever stopped this one */

@@ -71,7 +71,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include <cub/device/device_scan.cuh>
 
 extern "C" {
 #include "wallload/backend.h"
@@ -243,15 +242,18 @@ struct gpu {
   unsigned char *kind, *kind_alt, *body, *body_alt;
   int *begin; /* 2 n_cells + 1 */
   int *count; /* 2 n_cells + 1: particles per key (k_keys at init, then each update) */
-  int *fill;  /* 2 n_cells + 1: the scatter's fill counters */
-  void *sort_tmp; /* the scan's scratch */
-  size_t sort_tmp_bytes;
+  int *bsum;  /* the particles of each SCAN_THREADS keys (k_scan's blocks) */
+  size_t bsum_bytes;
   struct dmeta *meta;
   struct dstats *stats;   /* device */
   struct dstats *h_stats; /* pinned host copy */
   struct dstats *h_up;    /* pinned host staging of the plan (and block) uploads */
-  unsigned char *h_dl;    /* pinned host staging of download (dl_bytes) */
+  unsigned char *h_dl;    /* pinned host staging of download and snapshot (dl_bytes) */
   size_t dl_bytes;
+  double *h_load;         /* pinned: force and moment of each wall load (2 WL_SPH_SNAPSHOT_LOADS) */
+  cudaEvent_t snap_ev;    /* a snapshot's copies done (backend.h snapshot) */
+  int snap_n;             /* its wall loads */
+  int run_q0;             /* a started block's first role set (run_start, run_finish) */
   /* one step captured as a CUDA graph from each of the two role sets (a
    * step's kernels are a dozen launches of a few microseconds each at 20k
    * particles: replayed as a graph they follow each other without the
@@ -272,20 +274,73 @@ struct gpu {
 static __device__ __forceinline__ int tid(void) { return blockIdx.x * blockDim.x + threadIdx.x; }
 
 /* The sort (rebuild): a counting sort by key whose order inside a key is
- * the previous order, the order a stable sort gives. k_keys: each
- * particle's key and the particles per key (count, zeroed before); their
- * exclusive sum is begin (CUB scan); k_scatter: each particle into a free
- * slot of its key's range (fill, zeroed before, as the fill counters: the
- * order inside a range depends on timing); k_cellsort: each range sorted
- * by previous index, which makes it the stable order again, the same
- * permutation on every run. A cell holds ~8 particles in 2D and ~30 in
- * 3D, so the ranges are short; this takes a few short kernels where a
- * radix sort of the keys takes two passes of decoupled look-back that
- * run nearly serially at a few ten thousand particles.
+ * the previous order, the order a stable sort gives. Each particle's key
+ * and the particles per key (count) and per block of SCAN_THREADS keys
+ * (bsum) come from the update that ended the step before (k_update; k_keys
+ * for the initial state); their exclusive sum is begin (k_scan, one
+ * kernel: each block starts from the sum of the block sums before it);
+ * k_scatter: each particle into a free slot of its key's range (count
+ * counted down to 0 as the fill counter: the order inside a range depends
+ * on timing); k_cellsort: each range sorted by previous index, which makes
+ * it the stable order again, the same permutation on every run. A cell
+ * holds ~8 particles in 2D and ~30 in 3D, so the ranges are short; this
+ * takes a few short kernels where a radix sort of the keys takes two
+ * passes of decoupled look-back that run nearly serially at a few ten
+ * thousand particles.
  *
  * Every kernel of a step returns at once when the block has stopped
- * (plan.stop); the memsets and the scan between them then clear and sum
- * scratch, which the next step writes anew. */
+ * (plan.stop), and the counts stay those of the state. */
+
+/* Keys per block of k_scan. */
+enum { SCAN_THREADS = 1024 };
+static int scan_blocks(int m) { return (m + SCAN_THREADS - 1) / SCAN_THREADS; }
+
+/* Particle of key k counted: count[k] and its scan block's bsum (one
+ * atomic per block index among the warp's active lanes: a warp's
+ * particles are in sorted order, so mostly one). */
+static __device__ __forceinline__ void count_key(unsigned k, int *count, int *bsum) {
+  atomicAdd(&count[k], 1);
+  const unsigned b = k / SCAN_THREADS;
+  const unsigned peers = __match_any_sync(__activemask(), b);
+  if ((int)(threadIdx.x & 31) == __ffs(peers) - 1) atomicAdd(&bsum[b], __popc(peers));
+}
+
+/* begin = the exclusive sum of count over m = n_keys + 1 keys: each block
+ * scans its SCAN_THREADS keys (warp shuffles, then the warps' sums) from
+ * the sum of the block sums before it. Integer sums: the same begin
+ * whatever the order. */
+__global__ void __launch_bounds__(SCAN_THREADS)
+    k_scan(const int *__restrict__ count, const int *__restrict__ bsum, int *begin, int m,
+           const struct dstats *st) {
+  if (st->plan.stop) return;
+  __shared__ int wsum[SCAN_THREADS / 32];
+  __shared__ int base;
+  const int t = threadIdx.x, lane = t & 31, w = t >> 5, k = blockIdx.x * SCAN_THREADS + t;
+  if (w == 0) {
+    int b = 0;
+    for (int q = lane; q < (int)blockIdx.x; q += 32) b += bsum[q];
+    for (int o = 16; o > 0; o >>= 1) b += __shfl_xor_sync(0xffffffffu, b, o);
+    if (lane == 0) base = b;
+  }
+  const int v = k < m ? count[k] : 0;
+  int x = v;
+  for (int o = 1; o < 32; o <<= 1) {
+    const int y = __shfl_up_sync(0xffffffffu, x, o);
+    if (lane >= o) x += y;
+  }
+  if (lane == 31) wsum[w] = x;
+  __syncthreads();
+  if (w == 0) {
+    int y = wsum[lane];
+    for (int o = 1; o < 32; o <<= 1) {
+      const int z = __shfl_up_sync(0xffffffffu, y, o);
+      if (lane >= o) y += z;
+    }
+    wsum[lane] = y;
+  }
+  __syncthreads();
+  if (k < m) begin[k] = base + (w > 0 ? wsum[w - 1] : 0) + x - v;
+}
 
 /* Keys and particles per key, of the initial state (a step's come from
  * the update that ends the step before it, k_update). */
@@ -293,7 +348,7 @@ template <int DIM>
 __global__ void k_keys(struct wl_sph_grid g, const double *__restrict__ x,
                        const double *__restrict__ y, const double *__restrict__ z,
                        const unsigned char *__restrict__ kind, unsigned int *key, int *count,
-                       int n, struct dstats *st) {
+                       int *bsum, int n, struct dstats *st) {
   if (st->plan.stop) return;
   const int i = tid();
   if (i >= n) return;
@@ -302,14 +357,14 @@ __global__ void k_keys(struct wl_sph_grid g, const double *__restrict__ x,
   const unsigned group = kind[i] == WL_KIND_FLUID ? 1u : 0u;
   const unsigned k = group * (unsigned)g.n_cells + (unsigned)wl_sph_cell_of(DIM, &g, pos, i);
   key[i] = k;
-  atomicAdd(&count[k], 1);
+  count_key(k, count, bsum);
 }
 
-/* Particle i into a free slot of its key's range of perm (fill: the
- * ranges' fill counters, zeroed before); thread 0 resets the step
+/* Particle i into a free slot of its key's range of perm, counting its
+ * count down (to 0 when all are placed); thread 0 resets the step
  * record. */
 __global__ void k_scatter(const unsigned int *__restrict__ key, const int *__restrict__ begin,
-                          int *fill, unsigned int *perm, int n, struct dstats *st) {
+                          int *count, unsigned int *perm, int n, struct dstats *st) {
   const int i = tid();
   if (i >= n || st->plan.stop) return;
   if (i == 0) {
@@ -320,24 +375,44 @@ __global__ void k_scatter(const unsigned int *__restrict__ key, const int *__res
     st->excluded = 0ull;
   }
   const unsigned k = key[i];
-  perm[begin[k] + atomicAdd(&fill[k], 1)] = (unsigned)i;
+  perm[begin[k] + atomicSub(&count[k], 1) - 1] = (unsigned)i;
 }
 
-/* Range of key k of perm into ascending order (insertion sort; in
- * registers up to CELLSORT_LOCAL entries, in place beyond). With zero,
- * count[k] to 0 for the keys the step's update counts anew (k_update);
- * a rebuild outside a step (wall_load) keeps the counts, which stay those
- * of the state it sorted. */
-enum { CELLSORT_LOCAL = 48 };
+/* Range of key k of perm into ascending order: up to CELLSORT_REG entries
+ * (a 2D cell holds ~8) by an unrolled odd-even transposition sort in
+ * registers (an array indexed at run time lives in local memory, whose
+ * round trips made this the step's slowest sort kernel), up to
+ * CELLSORT_LOCAL (3D cells, ~30) by insertion in a local array, in place
+ * beyond. In a step the block sums go to 0 for the step's update to count
+ * anew (k_update; the scatter left count at 0); a rebuild outside a step
+ * (wall_load: the next step sorts the same state) gives count back. */
+enum { CELLSORT_REG = 16, CELLSORT_LOCAL = 48 };
 __global__ void k_cellsort(const int *__restrict__ begin, unsigned int *perm, int n_keys,
-                           int *count, int zero, const struct dstats *st) {
+                           int *count, int *bsum, int step, const struct dstats *st) {
   const int k = tid();
   if (k >= n_keys || st->plan.stop) return;
-  if (zero) count[k] = 0;
   const int b = begin[k], m = begin[k + 1] - b;
+  if (!step) count[k] = m;
+  else if (k % SCAN_THREADS == 0) bsum[k / SCAN_THREADS] = 0;
   if (m < 2) return;
   unsigned int *p = perm + b;
-  if (m <= CELLSORT_LOCAL) {
+  if (m <= CELLSORT_REG) {
+    unsigned v[CELLSORT_REG];
+#pragma unroll
+    for (int a = 0; a < CELLSORT_REG; a++) v[a] = a < m ? p[a] : 0xffffffffu; /* pads sort last */
+#pragma unroll
+    for (int r = 0; r < CELLSORT_REG; r++) {
+#pragma unroll
+      for (int a = r & 1; a + 1 < CELLSORT_REG; a += 2) {
+        const unsigned lo = min(v[a], v[a + 1]), hi = max(v[a], v[a + 1]);
+        v[a] = lo;
+        v[a + 1] = hi;
+      }
+    }
+#pragma unroll
+    for (int a = 0; a < CELLSORT_REG; a++)
+      if (a < m) p[a] = v[a];
+  } else if (m <= CELLSORT_LOCAL) {
     unsigned int v[CELLSORT_LOCAL];
     for (int a = 0; a < m; a++) {
       const unsigned x = p[a];
@@ -1197,7 +1272,7 @@ static __device__ void end_step(const struct wl_sph_const *k, const struct wl_pa
 template <int DIM>
 __global__ void __launch_bounds__(THREADS)
     k_update(struct wl_sph_const kp, struct wl_sph_grid gp, struct wl_particles p, int n,
-             int update, const struct dmeta *m, int *count, struct dstats *st) {
+             int update, const struct dmeta *m, int *count, int *bsum, struct dstats *st) {
   if (st->plan.stop) return; /* the same for every block: only the last one sets it */
   __shared__ struct wl_sph_walls_sh ws;
   __shared__ bool last;
@@ -1221,7 +1296,7 @@ __global__ void __launch_bounds__(THREADS)
     const unsigned group = p.kind[i] == WL_KIND_FLUID ? 1u : 0u;
     const unsigned key = group * (unsigned)g.n_cells + (unsigned)wl_sph_cell_of(DIM, &g, p.pos, i);
     p.key[i] = key;
-    atomicAdd(&count[key], 1);
+    count_key(key, count, bsum);
   }
   /* the last block to finish ends the step (the threadfence pattern: every
    * thread's writes ordered before its block's ticket) */
@@ -1330,9 +1405,9 @@ static struct wl_particles view(const struct gpu *c) {
  * (both 4-byte arrays; ar is rewritten by the next force evaluation). */
 /* The keys and counts come from the update that ended the last step
  * (k_update), or with REBUILD_KEYS from k_keys (the initial state); with
- * REBUILD_ZERO the counts are zeroed for the step's update to count anew
- * (a step), else kept (wall_load: the next step sorts the same state). */
-enum { REBUILD_KEYS = 1, REBUILD_ZERO = 2 };
+ * REBUILD_STEP they are left for the step's update to count anew, else
+ * given back (wall_load: the next step sorts the same state). */
+enum { REBUILD_KEYS = 1, REBUILD_STEP = 2 };
 static enum wl_status rebuild(struct gpu *c, int how, struct wl_error *err) {
   const int n = c->n, dim = c->dim, n_keys = 2 * c->grid.n_cells;
   unsigned int *key_d = (unsigned int *)c->ace[0];
@@ -1340,21 +1415,24 @@ static enum wl_status rebuild(struct gpu *c, int how, struct wl_error *err) {
   const size_t count_bytes = sizeof(int) * (size_t)(n_keys + 1);
   if (how & REBUILD_KEYS) {
     CK(cudaMemsetAsync(c->count, 0, count_bytes, c->stream));
+    CK(cudaMemsetAsync(c->bsum, 0, c->bsum_bytes, c->stream));
     if (dim == 3)
       k_keys<3><<<blocks(n), THREADS, 0, c->stream>>>(c->grid, c->pos[0], c->pos[1], c->pos[2],
-                                                       c->kind, c->key, c->count, n, c->stats);
+                                                       c->kind, c->key, c->count, c->bsum, n,
+                                                       c->stats);
     else
       k_keys<2><<<blocks(n), THREADS, 0, c->stream>>>(c->grid, c->pos[0], c->pos[1], c->pos[1],
-                                                       c->kind, c->key, c->count, n, c->stats);
+                                                       c->kind, c->key, c->count, c->bsum, n,
+                                                       c->stats);
     CKL("keys");
   }
-  size_t tmp = c->sort_tmp_bytes;
-  CK(cub::DeviceScan::ExclusiveSum(c->sort_tmp, tmp, c->count, c->begin, n_keys + 1, c->stream));
-  CK(cudaMemsetAsync(c->fill, 0, count_bytes, c->stream));
-  k_scatter<<<blocks(n), THREADS, 0, c->stream>>>(c->key, c->begin, c->fill, perm, n, c->stats);
+  k_scan<<<scan_blocks(n_keys + 1), SCAN_THREADS, 0, c->stream>>>(c->count, c->bsum, c->begin,
+                                                                  n_keys + 1, c->stats);
+  CKL("scan");
+  k_scatter<<<blocks(n), THREADS, 0, c->stream>>>(c->key, c->begin, c->count, perm, n, c->stats);
   CKL("scatter");
-  k_cellsort<<<blocks(n_keys), THREADS, 0, c->stream>>>(c->begin, perm, n_keys, c->count,
-                                                        (how & REBUILD_ZERO) != 0, c->stats);
+  k_cellsort<<<blocks(n_keys), THREADS, 0, c->stream>>>(c->begin, perm, n_keys, c->count, c->bsum,
+                                                        (how & REBUILD_STEP) != 0, c->stats);
   CKL("cell sort");
   struct permute_args a;
   memset(&a, 0, sizeof a);
@@ -1501,10 +1579,10 @@ static enum wl_status enqueue_update(struct gpu *c, int update, struct wl_error 
   const int n = c->n;
   if (c->dim == 3)
     k_update<3><<<blocks(n), THREADS, 0, c->stream>>>(c->k, c->grid, p, n, update, c->meta,
-                                                      c->count, c->stats);
+                                                      c->count, c->bsum, c->stats);
   else
     k_update<2><<<blocks(n), THREADS, 0, c->stream>>>(c->k, c->grid, p, n, update, c->meta,
-                                                      c->count, c->stats);
+                                                      c->count, c->bsum, c->stats);
   CKL("update");
   return WL_OK;
 }
@@ -1554,6 +1632,8 @@ static void cuda_free(void *ctx) {
   if (c->h_stats) cudaFreeHost(c->h_stats);
   if (c->h_up) cudaFreeHost(c->h_up);
   if (c->h_dl) cudaFreeHost(c->h_dl);
+  if (c->h_load) cudaFreeHost(c->h_load);
+  if (c->snap_ev) cudaEventDestroy(c->snap_ev);
   if (c->stream) cudaStreamDestroy(c->stream);
   free(c);
 }
@@ -1563,7 +1643,7 @@ static void cuda_free(void *ctx) {
  * and guard, end of step. Enqueued only; the roles of the arrays are those
  * after the step's rebuild. */
 static enum wl_status enqueue_step(struct gpu *c, struct wl_error *err) {
-  enum wl_status st = rebuild(c, REBUILD_ZERO, err);
+  enum wl_status st = rebuild(c, REBUILD_STEP, err);
   if (st) return st;
   if (c->k.shift_coef > 0 && c->n > c->nb) {
     const struct wl_sph_eval e = wl_sph_eval_inputs(c->dim, c->pos, c->vel, c->rho, c->key, c->begin);
@@ -1698,13 +1778,12 @@ static enum wl_status cuda_step(void *ctx, const struct wl_sph_step_in *in,
   return st;
 }
 
-/* backend.h run: the block's state and first plan uploaded, its steps
- * enqueued (each returns at once after the block stopped), one record
- * back. */
-static enum wl_status cuda_run(void *ctx, const struct wl_sph_block_in *in,
-                               struct wl_sph_block_out *out, struct wl_error *err) {
+/* backend.h run_start: the block's state and first plan uploaded, its
+ * steps enqueued (each returns at once after the block stopped), the
+ * record's copy back enqueued; nothing waited for. */
+static enum wl_status cuda_run_start(void *ctx, const struct wl_sph_block_in *in,
+                                     struct wl_error *err) {
   struct gpu *c = (struct gpu *)ctx;
-  memset(out, 0, sizeof *out);
   struct dstats *up = c->h_up;
   memset(&up->plan, 0, sizeof up->plan);
   memset(&up->blk, 0, sizeof up->blk);
@@ -1734,11 +1813,20 @@ static enum wl_status cuda_run(void *ctx, const struct wl_sph_block_in *in,
   CK(cudaMemcpyAsync(c->h_stats, c->stats, sizeof *c->stats, cudaMemcpyDeviceToHost, c->stream));
   /* kernels after the block (wall_load's rebuild, the next step) run */
   CK(cudaMemsetAsync(&c->stats->plan.stop, 0, sizeof c->stats->plan.stop, c->stream));
+  c->run_q0 = q0;
+  return WL_OK;
+}
+
+/* backend.h run_finish: the started block waited for, its record read. */
+static enum wl_status cuda_run_finish(void *ctx, struct wl_sph_block_out *out,
+                                      struct wl_error *err) {
+  struct gpu *c = (struct gpu *)ctx;
+  memset(out, 0, sizeof *out);
   CK(cudaStreamSynchronize(c->stream));
   const struct dblock *hb = &c->h_stats->blk;
   /* the roles after the steps taken (the launches after the stop did
    * nothing) */
-  load_roles(c, &c->roles[(q0 + hb->taken) & 1]);
+  load_roles(c, &c->roles[(c->run_q0 + hb->taken) & 1]);
   out->stop = hb->why;
   out->steps = (long)hb->taken;
   out->t = hb->t;
@@ -1750,35 +1838,55 @@ static enum wl_status cuda_run(void *ctx, const struct wl_sph_block_in *in,
   return WL_OK;
 }
 
+/* backend.h run: run_start, then run_finish (one record back). */
+static enum wl_status cuda_run(void *ctx, const struct wl_sph_block_in *in,
+                               struct wl_sph_block_out *out, struct wl_error *err) {
+  memset(out, 0, sizeof *out);
+  const enum wl_status st = cuda_run_start(ctx, in, err);
+  return st ? st : cuda_run_finish(ctx, out, err);
+}
+
+/* The wall load of body about z_ref on the cell lists rebuilt before
+ * (wall_load, snapshot): each fluid particle's share into pos_h (free
+ * between steps: rebuild left the old order's positions there), their
+ * sums, and their copy into h_load[2 slot], enqueued. */
+static enum wl_status enqueue_wall_load(struct gpu *c, int body, double z_ref, int slot,
+                                        struct wl_error *err) {
+  const int n = c->n, nb = c->nb, lam = c->k.visc == WL_SPH_VISC_LAMINAR;
+  if (n <= nb) {
+    c->h_load[2 * slot] = c->h_load[2 * slot + 1] = 0.0;
+    return WL_OK;
+  }
+  struct wl_sph_eval e = wl_sph_eval_inputs(c->dim, c->pos, c->vel, c->rho, c->key, c->begin);
+  e.press = c->press;
+  double *fx = c->pos_h[0], *my = c->pos_h[1];
+  const int nbk = blocks(n - nb);
+  cudaStream_t s = c->stream;
+  if (c->dim == 3 && lam) k_wall_load<3, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, c->body, body, z_ref, nb, n, fx, my);
+  else if (c->dim == 3) k_wall_load<3, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, c->body, body, z_ref, nb, n, fx, my);
+  else if (lam) k_wall_load<2, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, c->body, body, z_ref, nb, n, fx, my);
+  else k_wall_load<2, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, c->body, body, z_ref, nb, n, fx, my);
+  CKL("wall load");
+  k_load_sum<<<1, LOAD_THREADS, 0, s>>>(fx, my, nb, n, c->stats);
+  CKL("wall load sum");
+  CK(cudaMemcpyAsync(c->h_load + 2 * slot, c->stats->load, sizeof c->stats->load,
+                     cudaMemcpyDeviceToHost, s));
+  return WL_OK;
+}
+
 /* backend.h wall_load: the cell lists of the current state (whose sort
- * also fills press with the EOS of every particle's density), each fluid
- * particle's share into pos_h (free between steps: rebuild left the old
- * order's positions there), their sums, back to the host. */
+ * also fills press with the EOS of every particle's density), the load
+ * (enqueue_wall_load), back to the host. */
 static enum wl_status cuda_wall_load(void *ctx, int body, double z_ref, double *force,
                                      double *moment, struct wl_error *err) {
   struct gpu *c = (struct gpu *)ctx;
   *force = *moment = 0.0;
   enum wl_status st = rebuild(c, 0, err);
+  if (!st) st = enqueue_wall_load(c, body, z_ref, 0, err);
   if (st) return st;
-  const int n = c->n, nb = c->nb, lam = c->k.visc == WL_SPH_VISC_LAMINAR;
-  if (n > nb) {
-    struct wl_sph_eval e = wl_sph_eval_inputs(c->dim, c->pos, c->vel, c->rho, c->key, c->begin);
-    e.press = c->press;
-    double *fx = c->pos_h[0], *my = c->pos_h[1];
-    const int nbk = blocks(n - nb);
-    cudaStream_t s = c->stream;
-    if (c->dim == 3 && lam) k_wall_load<3, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, c->body, body, z_ref, nb, n, fx, my);
-    else if (c->dim == 3) k_wall_load<3, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, c->body, body, z_ref, nb, n, fx, my);
-    else if (lam) k_wall_load<2, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, c->body, body, z_ref, nb, n, fx, my);
-    else k_wall_load<2, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, c->body, body, z_ref, nb, n, fx, my);
-    CKL("wall load");
-    k_load_sum<<<1, LOAD_THREADS, 0, s>>>(fx, my, nb, n, c->stats);
-    CKL("wall load sum");
-    CK(cudaMemcpyAsync(c->h_stats, c->stats, sizeof *c->stats, cudaMemcpyDeviceToHost, s));
-    CK(cudaStreamSynchronize(s));
-    *force = c->h_stats->load[0];
-    *moment = c->h_stats->load[1];
-  }
+  CK(cudaStreamSynchronize(c->stream));
+  *force = c->h_load[0];
+  *moment = c->h_load[1];
   return WL_OK;
 }
 
@@ -1803,44 +1911,109 @@ static size_t download_bytes(int dim, size_t n) {
               sizeof(unsigned int) + 2);
 }
 
-/* The state into the host's arrays through the pinned staging buffer: the
- * copies from pageable memory each wait for the driver's own staging, at
- * an output every few dozen steps of a small flume. */
-static enum wl_status cuda_download(void *ctx, struct wl_particles *host, struct wl_error *err) {
-  struct gpu *c = (struct gpu *)ctx;
+/* The arrays download copies, in their order in the staging buffer (host:
+ * the destinations, NULL for none). */
+struct dl_part {
+  void *host;
+  const void *dev;
+  size_t bytes;
+};
+static int dl_parts(const struct gpu *c, struct wl_particles *host,
+                    struct dl_part parts[2 * WL_SPH_DIM_MAX + 4]) {
+  const size_t n = (size_t)c->n;
+  int np = 0;
+  for (int a = 0; a < c->dim; a++)
+    parts[np++] = {host ? host->pos[a] : NULL, c->pos[a], n * sizeof(double)};
+  for (int a = 0; a < c->dim; a++)
+    parts[np++] = {host ? host->vel[a] : NULL, c->vel[a], n * sizeof(wl_real)};
+  parts[np++] = {host ? host->rho : NULL, c->rho, n * sizeof(wl_real)};
+  parts[np++] = {host ? host->id : NULL, c->id, n * sizeof(unsigned int)};
+  parts[np++] = {host ? host->kind : NULL, c->kind, n};
+  parts[np++] = {host ? host->body : NULL, c->body, n};
+  return np;
+}
+
+static enum wl_status check_host(const struct gpu *c, const struct wl_particles *host,
+                                 struct wl_error *err) {
   if (host->dim != c->dim)
     return wl_error_set(err, WL_EINPUT, "cuda backend: download of %dD particles into %dD", c->dim,
                         host->dim);
   if (host->capacity < c->n)
     return wl_error_set(err, WL_EINPUT, "cuda backend: download of %d particles into room for %d",
                         c->n, host->capacity);
-  const size_t n = (size_t)c->n;
-  struct part {
-    void *host;
-    const void *dev;
-    size_t bytes;
-  } parts[2 * WL_SPH_DIM_MAX + 4];
-  int np = 0;
-  for (int a = 0; a < c->dim; a++) parts[np++] = {host->pos[a], c->pos[a], n * sizeof(double)};
-  for (int a = 0; a < c->dim; a++) parts[np++] = {host->vel[a], c->vel[a], n * sizeof(wl_real)};
-  parts[np++] = {host->rho, c->rho, n * sizeof(wl_real)};
-  parts[np++] = {host->id, c->id, n * sizeof(unsigned int)};
-  parts[np++] = {host->kind, c->kind, n};
-  parts[np++] = {host->body, c->body, n};
+  return WL_OK;
+}
+
+/* The current arrays into the staging buffer, enqueued. */
+static enum wl_status enqueue_dl(struct gpu *c, struct wl_error *err) {
+  struct dl_part parts[2 * WL_SPH_DIM_MAX + 4];
+  const int np = dl_parts(c, NULL, parts);
   size_t off = 0;
   for (int q = 0; q < np; q++) {
     CK(cudaMemcpyAsync(c->h_dl + off, parts[q].dev, parts[q].bytes, cudaMemcpyDeviceToHost,
                        c->stream));
     off += parts[q].bytes;
   }
-  CK(cudaStreamSynchronize(c->stream));
-  off = 0;
+  return WL_OK;
+}
+
+/* The staging buffer into the host's arrays. */
+static void unstage(struct gpu *c, struct wl_particles *host) {
+  struct dl_part parts[2 * WL_SPH_DIM_MAX + 4];
+  const int np = dl_parts(c, host, parts);
+  size_t off = 0;
   for (int q = 0; q < np; q++) {
     memcpy(parts[q].host, c->h_dl + off, parts[q].bytes);
     off += parts[q].bytes;
   }
   host->n = c->n;
   host->n_bound = c->nb;
+}
+
+/* The state into the host's arrays through the pinned staging buffer: the
+ * copies from pageable memory each wait for the driver's own staging, at
+ * an output every few dozen steps of a small flume. */
+static enum wl_status cuda_download(void *ctx, struct wl_particles *host, struct wl_error *err) {
+  struct gpu *c = (struct gpu *)ctx;
+  enum wl_status st = check_host(c, host, err);
+  if (!st) st = enqueue_dl(c, err);
+  if (st) return st;
+  CK(cudaStreamSynchronize(c->stream));
+  unstage(c, host);
+  return WL_OK;
+}
+
+/* backend.h snapshot: the fields download reads into the staging buffer,
+ * then (with loads to compute) the cell lists rebuilt and each wall load
+ * into h_load, as download then wall_load would do; all enqueued, an
+ * event after them. */
+static enum wl_status cuda_snapshot(void *ctx, int n, const int *body, const double *z_ref,
+                                    struct wl_error *err) {
+  struct gpu *c = (struct gpu *)ctx;
+  if (n < 0 || n > WL_SPH_SNAPSHOT_LOADS)
+    return wl_error_set(err, WL_EINPUT, "cuda backend: a snapshot of %d wall loads; at most %d", n,
+                        (int)WL_SPH_SNAPSHOT_LOADS);
+  enum wl_status st = enqueue_dl(c, err);
+  if (!st && n > 0) st = rebuild(c, 0, err);
+  for (int q = 0; q < n && !st; q++) st = enqueue_wall_load(c, body[q], z_ref[q], q, err);
+  if (st) return st;
+  CK(cudaEventRecord(c->snap_ev, c->stream));
+  c->snap_n = n;
+  return WL_OK;
+}
+
+/* backend.h snapshot_wait. */
+static enum wl_status cuda_snapshot_wait(void *ctx, struct wl_particles *host, double *force,
+                                         double *moment, struct wl_error *err) {
+  struct gpu *c = (struct gpu *)ctx;
+  enum wl_status st = check_host(c, host, err);
+  if (st) return st;
+  CK(cudaEventSynchronize(c->snap_ev));
+  unstage(c, host);
+  for (int q = 0; q < c->snap_n; q++) {
+    force[q] = c->h_load[2 * q];
+    moment[q] = c->h_load[2 * q + 1];
+  }
   return WL_OK;
 }
 
@@ -1926,19 +2099,11 @@ static enum wl_status init_mode(void **ctx, const struct wl_sph_config *cfg,
   const int n = c->n, n_keys = 2 * c->grid.n_cells;
 
   /* what the run needs, against what the GPU has free */
-  {
-    const cudaError_t e = cub::DeviceScan::ExclusiveSum(NULL, c->sort_tmp_bytes, (int *)NULL,
-                                                        (int *)NULL, n_keys + 1);
-    if (e != cudaSuccess) {
-      cuda_free(c);
-      return wl_error_set(err, WL_EIO, "cuda backend: scan size query failed: %s",
-                          cudaGetErrorString(e));
-    }
-  }
+  c->bsum_bytes = sizeof(int) * (size_t)scan_blocks(n_keys + 1);
   const int shifting = k->shift_coef > 0;
   const int verlet = k->integrator == WL_SPH_VERLET;
   const size_t per = bytes_per_particle(dim, shifting, verlet);
-  const size_t need = per * (size_t)n + 3 * sizeof(int) * (size_t)(n_keys + 1) + c->sort_tmp_bytes +
+  const size_t need = per * (size_t)n + 2 * sizeof(int) * (size_t)(n_keys + 1) + c->bsum_bytes +
                       sizeof(struct dmeta) + sizeof(struct dstats);
   size_t free_b = 0, total_b = 0;
   {
@@ -1954,7 +2119,7 @@ static enum wl_status init_mode(void **ctx, const struct wl_sph_config *cfg,
   if (need + margin > free_b) {
     const size_t tot = total_b;
     const double need_mib = need / 1048576.0, free_mib = free_b / 1048576.0,
-                 sort_mib = c->sort_tmp_bytes / 1048576.0;
+                 sort_mib = c->bsum_bytes / 1048576.0;
     cuda_free(c);
     return wl_error_set(err, WL_ENOMEM,
                         "cuda backend: %d particles (%dD) need %.1f MiB of GPU memory (%zu B per "
@@ -2001,19 +2166,21 @@ static enum wl_status init_mode(void **ctx, const struct wl_sph_config *cfg,
   A(c->body_alt, n8, "body (sort copy)");
   A(c->begin, sizeof(int) * (size_t)(n_keys + 1), "cell index");
   A(c->count, sizeof(int) * (size_t)(n_keys + 1), "cell counts");
-  A(c->fill, sizeof(int) * (size_t)(n_keys + 1), "cell fill counters");
-  A(c->sort_tmp, c->sort_tmp_bytes, "sort scratch");
+  A(c->bsum, c->bsum_bytes, "sort scratch");
   A(c->meta, sizeof(struct dmeta), "configuration");
   A(c->stats, sizeof(struct dstats), "step record");
 #undef A
   c->dl_bytes = download_bytes(dim, (size_t)n);
   {
-    const cudaError_t e = cudaMallocHost((void **)&c->h_dl, c->dl_bytes);
+    cudaError_t e = cudaMallocHost((void **)&c->h_dl, c->dl_bytes);
+    if (e == cudaSuccess)
+      e = cudaMallocHost((void **)&c->h_load, 2 * WL_SPH_SNAPSHOT_LOADS * sizeof(double));
+    if (e == cudaSuccess) e = cudaEventCreateWithFlags(&c->snap_ev, cudaEventDisableTiming);
     if (e != cudaSuccess) {
-      c->h_dl = NULL;
+      const double mib = c->dl_bytes / 1048576.0;
       cuda_free(c);
-      return wl_error_set(err, WL_ENOMEM, "cuda backend: cudaMallocHost of the download staging "
-                          "(%.1f MiB): %s", c->dl_bytes / 1048576.0, cudaGetErrorString(e));
+      return wl_error_set(err, WL_ENOMEM, "cuda backend: the download staging (%.1f MiB pinned) "
+                          "or its event: %s", mib, cudaGetErrorString(e));
     }
   }
   for (int q = 0; q < 2; q++) {
@@ -2035,7 +2202,13 @@ static enum wl_status init_mode(void **ctx, const struct wl_sph_config *cfg,
                           cudaGetErrorString(e_), __FILE__, __LINE__);                           \
     }                                                                                            \
   } while (0)
-  C(cudaStreamCreateWithFlags(&c->stream, cudaStreamNonBlocking));
+  if (cfg->priority > 0) { /* backend.h: the run the others beside it wait for */
+    int least = 0, greatest = 0;
+    C(cudaDeviceGetStreamPriorityRange(&least, &greatest));
+    C(cudaStreamCreateWithPriority(&c->stream, cudaStreamNonBlocking, greatest));
+  } else {
+    C(cudaStreamCreateWithFlags(&c->stream, cudaStreamNonBlocking));
+  }
   struct dmeta m;
   memset(&m, 0, sizeof m);
   for (int a = 0; a < WL_SPH_DIM_MAX; a++) {
@@ -2062,7 +2235,7 @@ static enum wl_status init_mode(void **ctx, const struct wl_sph_config *cfg,
 #undef C
   /* forces of the initial state give the first dt (as the CPU backend);
    * then the steps are captured */
-  if ((st = rebuild(c, REBUILD_KEYS | REBUILD_ZERO, err)) ||
+  if ((st = rebuild(c, REBUILD_KEYS | REBUILD_STEP, err)) ||
       (st = evaluate(c, c->pos, c->vel, c->rho, err)) ||
       (st = enqueue_update(c, 0, err)) || (st = fetch_record(c, err)) ||
       (step_out_of(c, out), st = capture_steps(c, err))) {
@@ -2084,7 +2257,7 @@ static enum wl_status cuda_init(void **ctx, const struct wl_sph_config *cfg,
 
 extern "C" const struct wl_backend_ops wl_backend_cuda_ops = {
     "cuda", cuda_init, cuda_step, cuda_download, cuda_describe, cuda_free, cuda_wall_load,
-    cuda_run,
+    cuda_run, cuda_snapshot, cuda_snapshot_wait, cuda_run_start, cuda_run_finish,
 };
 #else
 /* The tests' build: one backend per force loop, for test_cuda_backend to
@@ -2099,7 +2272,7 @@ extern "C" const struct wl_backend_ops wl_backend_cuda_ops = {
   }                                                                                              \
   extern "C" const struct wl_backend_ops wl_backend_cuda_##loop##_ops = {                        \
       "cuda", init_##loop, cuda_step, cuda_download, cuda_describe, cuda_free, cuda_wall_load,   \
-      cuda_run,                                                                                  \
+      cuda_run, cuda_snapshot, cuda_snapshot_wait, cuda_run_start, cuda_run_finish,              \
   };
 TEST_OPS(ref, MODE_REF)
 TEST_OPS(fast, MODE_FAST)
