@@ -17,6 +17,8 @@
 #       DIR/NAME (packed by hand: its wallload) runs the solitary case too,
 #       compared bit for bit with the new build's. GPU_STEP_NCU=1: each
 #       kernel's duration over a few steps of both builds (Nsight Compute).
+#       GPU_STEP_PLAN=1: seawall.yaml at dp = 0.0125 m, one level, Verlet
+#       and symplectic (plan.h's step costs), both builds.
 set -u
 here=$(cd "$(dirname "$0")/.." && pwd)
 case ${1:-} in
@@ -116,6 +118,17 @@ PY
     (cd $R && WL_H5_SERIES_EQUAL=$D/new/h5_series_equal timeout 300 bash "$here/tests/cli_gpu_cases.sh" \
       "$D/new/wallload" >$R/cli_gpu_cases.log 2>&1; echo "cli_gpu_cases.sh rc=$?")
     grep -E '^(FAIL|SKIP)' $R/cli_gpu_cases.log | head
+    if [ -n "${GPU_STEP_PLAN:-}" ]; then
+      # plan.h's step costs: seawall.yaml at dp = 0.0125 m, one level (its
+      # two cases side by side), Verlet and symplectic, both builds
+      sed -e 's/^  dp: auto$/  dp: 0.0125 m/' -e '/^  particles_per_height:/d' -e '/^  convergence:/d' \
+        "$here/scenarios/seawall.yaml" >$R/p125.yaml
+      sed 's/^  integrator: verlet$/  integrator: symplectic/' $R/p125.yaml >$R/p125s.yaml
+      for b in base new; do
+        one $b p125 $R/p125.yaml
+        one $b p125s $R/p125s.yaml
+      done
+    fi
     if [ -n "${GPU_STEP_NCU:-}" ] && command -v ncu >/dev/null; then
       # each kernel's duration (Nsight Compute, clocks as found) over a few
       # steps of the solitary case, past its start

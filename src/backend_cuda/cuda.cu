@@ -260,6 +260,10 @@ struct gpu {
    * launch gaps) */
   cudaGraph_t graph[2];
   cudaGraphExec_t exec[2];
+  /* two steps as one graph from each role set (back to it after them): a
+   * block's steps in pairs, one graph launch's gap for two steps */
+  cudaGraph_t graph2[2];
+  cudaGraphExec_t exec2[2];
   struct roles roles[2];
   int graphs; /* exec[] captured */
   void *allocs[64];       /* everything cudaMalloc'd, for free */
@@ -458,20 +462,34 @@ __global__ void k_permute(struct permute_args a, struct wl_sph_const k, int n,
   const int s = tid();
   if (s >= n || st->plan.stop) return;
   const int j = (int)a.perm[s];
-  a.key_d[s] = a.key[j];
+  /* every load before the first store: the arrays may alias for all the
+   * compiler knows, and a store between two loads would keep them apart */
+  const unsigned key = a.key[j], id = a.id[j];
+  double pos[DIM];
+  wl_real vel[DIM], vel_m1[DIM], rho_m1 = 0;
   for (int c = 0; c < DIM; c++) {
-    a.pos_d[c][s] = a.pos[c][j];
-    a.vel_d[c][s] = a.vel[c][j];
+    pos[c] = a.pos[c][j];
+    vel[c] = a.vel[c][j];
   }
   const wl_real rho = a.rho[j];
+  const unsigned char kind = a.kind[j], body = a.body[j];
+  if (a.rho_m1) {
+    for (int c = 0; c < DIM; c++) vel_m1[c] = a.vel_m1[c][j];
+    rho_m1 = a.rho_m1[j];
+  }
+  a.key_d[s] = key;
+  for (int c = 0; c < DIM; c++) {
+    a.pos_d[c][s] = pos[c];
+    a.vel_d[c][s] = vel[c];
+  }
   a.rho_d[s] = rho;
   a.press[s] = wl_sph_eos_p(&k, rho);
-  a.id_d[s] = a.id[j];
-  a.kind_d[s] = a.kind[j];
-  a.body_d[s] = a.body[j];
+  a.id_d[s] = id;
+  a.kind_d[s] = kind;
+  a.body_d[s] = body;
   if (a.rho_m1) {
-    for (int c = 0; c < DIM; c++) a.vel_m1_d[c][s] = a.vel_m1[c][j];
-    a.rho_m1_d[s] = a.rho_m1[j];
+    for (int c = 0; c < DIM; c++) a.vel_m1_d[c][s] = vel_m1[c];
+    a.rho_m1_d[s] = rho_m1;
   }
 }
 
@@ -1292,6 +1310,10 @@ __global__ void __launch_bounds__(THREADS)
     if (update && wl_sph_exclude(DIM, &p, m->lo, m->hi, i)) atomicAdd(&st->excluded, 1ull);
     int w = -1;
     if (wl_sph_guard(DIM, &k, &p, m->lo, m->hi, ws.w, nw, i, &w)) atomicMin(&st->first, i);
+    /* through the arrays themselves: a one-particle view in registers
+     * saves round trips to memory but lets the compiler contract the
+     * Verlet step's products into FMAs otherwise, which changes the
+     * results' last bits */
     const struct wl_sph_grid g = gp;
     const unsigned group = p.kind[i] == WL_KIND_FLUID ? 1u : 0u;
     const unsigned key = group * (unsigned)g.n_cells + (unsigned)wl_sph_cell_of(DIM, &g, p.pos, i);
@@ -1627,6 +1649,8 @@ static void cuda_free(void *ctx) {
   for (int q = 0; q < 2; q++) {
     if (c->exec[q]) cudaGraphExecDestroy(c->exec[q]);
     if (c->graph[q]) cudaGraphDestroy(c->graph[q]);
+    if (c->exec2[q]) cudaGraphExecDestroy(c->exec2[q]);
+    if (c->graph2[q]) cudaGraphDestroy(c->graph2[q]);
   }
   for (int q = 0; q < c->n_allocs; q++) cudaFree(c->allocs[q]);
   if (c->h_stats) cudaFreeHost(c->h_stats);
@@ -1746,6 +1770,25 @@ static enum wl_status capture_steps(struct gpu *c, struct wl_error *err) {
   if (role_set(c) != 0)
     return wl_error_set(err, WL_EIO, "cuda backend: two captured steps do not give the arrays' "
                         "roles back");
+  for (int q = 0; q < 2; q++) {
+    load_roles(c, &c->roles[q]);
+    CK(cudaStreamBeginCapture(c->stream, cudaStreamCaptureModeThreadLocal));
+    enum wl_status st = enqueue_step(c, err);
+    if (!st) st = enqueue_step(c, err);
+    cudaGraph_t g = NULL;
+    const cudaError_t e = cudaStreamEndCapture(c->stream, &g);
+    if (st) {
+      if (g) cudaGraphDestroy(g);
+      return st;
+    }
+    CK(e);
+    c->graph2[q] = g;
+    CK(cudaGraphInstantiate(&c->exec2[q], g, 0));
+    if (role_set(c) != q)
+      return wl_error_set(err, WL_EIO, "cuda backend: two captured steps do not give the arrays' "
+                          "roles back");
+  }
+  load_roles(c, &c->roles[0]);
   c->graphs = 1;
   return WL_OK;
 }
@@ -1808,8 +1851,8 @@ static enum wl_status cuda_run_start(void *ctx, const struct wl_sph_block_in *in
   const int q0 = role_set(c);
   if (!c->graphs || q0 < 0)
     return wl_error_set(err, WL_EIO, "cuda backend: a block of steps without its captured steps");
-  for (long s = 0; s < in->max_steps; s++)
-    CK(cudaGraphLaunch(c->exec[(q0 + s) & 1], c->stream));
+  for (long s = 0; s + 1 < in->max_steps; s += 2) CK(cudaGraphLaunch(c->exec2[q0], c->stream));
+  if (in->max_steps & 1) CK(cudaGraphLaunch(c->exec[q0], c->stream));
   CK(cudaMemcpyAsync(c->h_stats, c->stats, sizeof *c->stats, cudaMemcpyDeviceToHost, c->stream));
   /* kernels after the block (wall_load's rebuild, the next step) run */
   CK(cudaMemsetAsync(&c->stats->plan.stop, 0, sizeof c->stats->plan.stop, c->stream));
