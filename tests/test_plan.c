@@ -104,15 +104,15 @@ int main(void) {
   wl_scenario_clear(&s);
   /* The GPU runtime estimate of `check` against what scenarios/seawall.yaml
    * (Verlet integrator) took on the H100 (BENCHMARKS.md "CUDA backend: the
-   * cost of a step", 2026-11-26: 2.7 s + 6.7 s for its two cases): a
-   * measurement, not this code's output. Within 25 %: an estimate, not a
-   * prediction to the second. */
+   * cost of a step", 2026-11-26, 01de198: 2.01 s + 4.70 s for its two
+   * cases, run side by side): a measurement, not this code's output.
+   * Within 25 %: an estimate, not a prediction to the second. */
   {
     struct wl_scenario sw;
     struct wl_plan pw;
     /* at the spacing those runs had (dp auto now picks 0.012 m, below) */
     if (plan_seawall(0.0125, &sw, &pw)) {
-      CHECK_REL(pw.gpu_seconds, 2.7 + 6.7, 0.25,
+      CHECK_REL(pw.gpu_seconds, 2.01 + 4.70, 0.25,
                 "GPU runtime estimate of seawall.yaml vs its H100 run (BENCHMARKS.md)");
     }
     wl_scenario_clear(&sw);
