@@ -15,7 +15,10 @@
 #       alternations of the timings; then the tests; $OUT/gpu_step.log and
 #       $OUT/gpu_step.tgz (summaries). GPU_STEP_ALSO=NAME: a third build
 #       DIR/NAME (packed by hand: its wallload) runs the solitary case too,
-#       compared bit for bit with the new build's.
+#       compared bit for bit with the new build's. GPU_STEP_NCU=1: each
+#       kernel's duration over a few steps of both builds (Nsight Compute).
+#       GPU_STEP_PLAN=1: seawall.yaml at dp = 0.0125 m, one level, Verlet
+#       and symplectic (plan.h's step costs), both builds.
 set -u
 here=$(cd "$(dirname "$0")/.." && pwd)
 case ${1:-} in
@@ -112,6 +115,43 @@ PY
     (cd $R && WL_H5_SERIES_EQUAL=$D/new/h5_series_equal timeout 300 bash "$here/tests/cli_sweep_run.sh" \
       "$D/new/wallload" "$here" cuda >$R/cli_sweep_run.log 2>&1; echo "cli_sweep_run.sh cuda rc=$?")
     grep -E '^(FAIL|SKIP)' $R/cli_sweep_run.log | head
+    (cd $R && WL_H5_SERIES_EQUAL=$D/new/h5_series_equal timeout 300 bash "$here/tests/cli_gpu_cases.sh" \
+      "$D/new/wallload" >$R/cli_gpu_cases.log 2>&1; echo "cli_gpu_cases.sh rc=$?")
+    grep -E '^(FAIL|SKIP)' $R/cli_gpu_cases.log | head
+    if [ -n "${GPU_STEP_PLAN:-}" ]; then
+      # plan.h's step costs: seawall.yaml at dp = 0.0125 m, one level (its
+      # two cases side by side), Verlet and symplectic, both builds
+      sed -e 's/^  dp: auto$/  dp: 0.0125 m/' -e '/^  particles_per_height:/d' -e '/^  convergence:/d' \
+        "$here/scenarios/seawall.yaml" >$R/p125.yaml
+      sed 's/^  integrator: verlet$/  integrator: symplectic/' $R/p125.yaml >$R/p125s.yaml
+      for b in base new; do
+        one $b p125 $R/p125.yaml
+        one $b p125s $R/p125s.yaml
+      done
+    fi
+    if [ -n "${GPU_STEP_NCU:-}" ] && command -v ncu >/dev/null; then
+      # each kernel's duration (Nsight Compute, clocks as found) over a few
+      # steps of the solitary case, past its start
+      for b in base new; do
+        timeout 240 ncu --clock-control none --launch-skip 4000 --launch-count 120 --csv \
+          --metrics gpu__time_duration.sum "$D/$b/wallload" assess $R/sol.yaml --backend cuda \
+          --quiet --force -o $R/ncu_$b --end-time 0.6 >$R/ncu_$b.csv 2>$R/ncu_$b.err
+        python3 - $R/ncu_$b.csv $b <<'PY'
+import csv, sys, collections, re
+rows = [r for r in csv.reader(open(sys.argv[1])) if len(r) > 10]
+if not rows: print("ncu %s: no rows" % sys.argv[2]); sys.exit(0)
+h = rows[0]; ki = h.index("Kernel Name"); vi = h.index("Metric Value"); ui = h.index("Metric Unit")
+d = collections.OrderedDict()
+for r in rows[1:]:
+    name = re.sub(r"\(.*", "", r[ki]).replace("void ", "").strip()
+    v = float(r[vi].replace(",", "")); v = v / 1000 if r[ui] == "nsecond" else v
+    d.setdefault(name, []).append(v)
+print("ncu %s: kernel, launches, median us" % sys.argv[2])
+for k, v in d.items():
+    v.sort(); print("   %-40s %4d %7.2f" % (k[:40], len(v), v[len(v) // 2]))
+PY
+      done
+    fi
   } 2>&1 | tee "$out/gpu_step.log"
   (cd $R && tar czf "$out/gpu_step.tgz" */summary.json *.log 2>/dev/null)
   ;;

@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # cli_sweep_price.sh: `wallload check` prices a sweep on the CPU as the sum
 # of its cases, each priced as `check` prices that case's scenario alone
-# (issue 21), and on a GPU as the cases run there, side by side: k at a time
-# take their times alone over k / (1 + 0.15 (k - 1)), never less than the
-# longest (plan.h WL_PLAN_GPU_SHARE_COST; the tiny cases' force loops are
-# far from the bound of their work). The scenarios alone are written by tests/sweep_alone.py,
+# (issue 21), and on a GPU as the cases run there, side by side: with k on
+# the GPU each advances at 1 / (1 + 0.15 (k - 1)) of its speed alone
+# (processor sharing, plan.h WL_PLAN_GPU_SHARE_COST; the tiny cases' force
+# loops are far from the bound of their work), computed here from the cases
+# priced alone. The scenarios alone are written by tests/sweep_alone.py,
 # independently of wallload's sweep code; the sum is taken here. The budget
 # judges the sum: a budget that each case fits but the sweep does not is
 # refused, by check and by sweep (exit 2, nothing run).
@@ -24,20 +25,29 @@ python3 "$src/tests/sweep_alone.py" tiny-sweep.yaml alone >/dev/null || bad "swe
 total_cpu=$(sed -n 's/.*sweep CPU runtime (estimate) \([0-9.e+-]*\) s.*/\1/p' sweep.txt)
 total_gpu=$(sed -n 's/.*GPU runtime (estimate, an H100) \([0-9.e+-]*\) s, up to \([0-9]*\) cases side by side$/\1/p' sweep.txt)
 width=$(sed -n 's/.*GPU runtime (estimate, an H100) \([0-9.e+-]*\) s, up to \([0-9]*\) cases side by side$/\2/p' sweep.txt)
-sum_cpu=0; sum_gpu=0; max_case=0; max_gpu=0
+sum_cpu=0; sum_gpu=0; max_case=0; gpus="" 
 for i in 0 1 2 3; do
   "$bin" check "alone/case_$i.yaml" --backend cpu >case.txt 2>&1 || bad "check of case $i alone failed"
   c=$(sed -n 's/^  CPU runtime (estimate) *\([0-9.e+-]*\) s.*/\1/p' case.txt)
   g=$(sed -n 's/^  GPU runtime (estimate) *\([0-9.e+-]*\) s.*/\1/p' case.txt)
   sum_cpu=$(python3 -c "print($sum_cpu + $c)"); sum_gpu=$(python3 -c "print($sum_gpu + $g)")
-  max_case=$(python3 -c "print(max($max_case, $c))"); max_gpu=$(python3 -c "print(max($max_gpu, $g))")
+  max_case=$(python3 -c "print(max($max_case, $c))"); gpus="$gpus $g"
 done
 # check prints 4 significant digits a case alone and 6 for the sweep
 if python3 -c "import sys; sys.exit(0 if abs($total_cpu - $sum_cpu) <= 1e-3 * $sum_cpu else 1)"; then
   ok "sweep CPU price $total_cpu s = sum of the cases alone $sum_cpu s"
 else bad "sweep CPU price '$total_cpu' s, sum of the cases alone $sum_cpu s"; fi
 [ "$width" = 4 ] && ok "the 4 cases side by side on a GPU" || bad "side by side: '$width', expected 4"
-want_gpu=$(python3 -c "print(max($sum_gpu / (4 / (1 + 0.15 * 3)), $max_gpu))")
+want_gpu=$(python3 - $gpus <<'PY'
+import sys
+left, t = [float(x) for x in sys.argv[1:]], 0.0
+while left:  # all four on the GPU until the shortest ends, and so on
+    m = min(left)
+    t += m * (1 + 0.15 * (len(left) - 1))
+    left = [x - m for x in left if x - m > 0]
+print(t)
+PY
+)
 if python3 -c "import sys; sys.exit(0 if abs($total_gpu - $want_gpu) <= 1e-3 * $want_gpu else 1)"; then
   ok "sweep GPU price $total_gpu s = the cases alone ($sum_gpu s) 4 side by side, $want_gpu s"
 else bad "sweep GPU price '$total_gpu' s, expected $want_gpu s (the cases alone: $sum_gpu s)"; fi

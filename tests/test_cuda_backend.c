@@ -338,11 +338,21 @@ struct outs {
   int n;
   double t[256], force[256];
   long steps[256];
+  double state[256]; /* the downloaded state, summed in its order */
 };
 
+/* The host's state at an output (the blocks' runs read it from a snapshot
+ * taken while the next block runs, backend.h snapshot), then the wall load,
+ * as assess's output does. */
 static enum wl_status on_out(void *user, struct wl_sph_sim *sim, double t, struct wl_error *err) {
   struct outs *o = user;
   if (o->n >= 256) return WL_OK;
+  const struct wl_particles *p = wl_sph_sim_particles(sim, err);
+  if (!p) return err->status ? err->status : WL_EIO;
+  double sum = 0;
+  for (int i = 0; i < p->n; i++)
+    sum = sum * 0.5 + p->pos[0][i] + p->pos[1][i] + p->vel[0][i] + p->rho[i] + p->id[i] + p->body[i];
+  o->state[o->n] = sum;
   double f[2];
   const enum wl_status st = load(sim, f, err);
   if (st) return st;
@@ -355,8 +365,9 @@ static enum wl_status on_out(void *user, struct wl_sph_sim *sim, double t, struc
 /* The same run through the backend's blocks of steps (backend.h run: the
  * steps chosen, counted and guarded on the device, one record a block)
  * and step by step (run = NULL: the host's loop), to the same end: the
- * same steps, output times, wall loads and final state, bit for bit, and
- * for a run that stops (guard: a density range it leaves; dt collapse:
+ * same steps, output times, states and wall loads at the outputs (the
+ * blocks' from snapshots beside the next block) and final state, bit for
+ * bit, and for a run that stops (guard: a density range it leaves; dt collapse:
  * a floor it falls under) the same message, naming the same step, time
  * and particle. */
 static void blocks_vs_steps(const char *name, int verlet, double rho_max_factor,
@@ -413,9 +424,11 @@ static void blocks_vs_steps(const char *name, int verlet, double rho_max_factor,
              wl_sph_sim_time(a) == wl_sph_sim_time(b) && wl_sph_sim_dt(a) == wl_sph_sim_dt(b) &&
              wl_sph_sim_excluded(a) == wl_sph_sim_excluded(b) &&
              wl_sph_sim_limited(a) == wl_sph_sim_limited(b), what);
-  snprintf(what, sizeof what, "%s: same outputs (times, steps, wall force), bit for bit", name);
+  snprintf(what, sizeof what, "%s: same outputs (times, steps, state, wall force), bit for bit",
+           name);
   CHECK_TRUE(oa.n == ob.n && oa.n > 0 && !memcmp(oa.t, ob.t, sizeof oa.t) &&
              !memcmp(oa.steps, ob.steps, sizeof oa.steps) &&
+             !memcmp(oa.state, ob.state, sizeof oa.state) &&
              !memcmp(oa.force, ob.force, sizeof oa.force), what);
   const struct wl_particles *pa = wl_sph_sim_particles(a, &err);
   const struct wl_particles *pb = pa ? wl_sph_sim_particles(b, &err) : NULL;

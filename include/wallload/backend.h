@@ -66,6 +66,8 @@ struct wl_sph_config {
   struct wl_sph_wall walls[WL_SPH_WALLS_MAX];
   int n_threads;                       /* CPU: OpenMP threads, 0 = OpenMP's default */
   struct wl_isph_opts isph;            /* the ISPH backend's options (zero: defaults) */
+  int priority;                        /* CUDA: 1 = the run the others beside it wait for
+                                          (its stream at the GPU's greatest priority) */
 };
 
 /* Input of one step. */
@@ -262,7 +264,26 @@ struct wl_backend_ops {
    * error. */
   enum wl_status (*run)(void *ctx, const struct wl_sph_block_in *in, struct wl_sph_block_out *out,
                         struct wl_error *err);
+  /* Optional, all four or none (NULL: the driver's output reads the state
+   * between blocks): an output overlapped with the next block. snapshot
+   * enqueues, behind the work already queued, the copy of the fields
+   * download reads and then the wall loads of n (body, z_ref) pairs (n <=
+   * WL_SPH_SNAPSHOT_LOADS, as wall_load), and returns at once; run_start
+   * enqueues a block as run would and returns at once; snapshot_wait waits
+   * for the snapshot and gives its state (as download) and loads;
+   * run_finish waits for the block and gives its out (as run). The
+   * snapshot's results are those of download and wall_load at that point,
+   * to the last bit. */
+  enum wl_status (*snapshot)(void *ctx, int n, const int *body, const double *z_ref,
+                             struct wl_error *err);
+  enum wl_status (*snapshot_wait)(void *ctx, struct wl_particles *host, double *force,
+                                  double *moment, struct wl_error *err);
+  enum wl_status (*run_start)(void *ctx, const struct wl_sph_block_in *in, struct wl_error *err);
+  enum wl_status (*run_finish)(void *ctx, struct wl_sph_block_out *out, struct wl_error *err);
 };
+
+/* Most wall loads one snapshot computes (backend.h snapshot). */
+enum { WL_SPH_SNAPSHOT_LOADS = 4 };
 
 /* The OpenMP CPU backend (src/backend_cpu). */
 extern const struct wl_backend_ops wl_backend_cpu_ops;

@@ -133,6 +133,10 @@ struct wl_plan {
   double gpu_seconds;               /* estimated for the CUDA backend on an H100 */
   double gpu_work_seconds;          /* its force loops alone at WL_PLAN_GPU_RATE(_3D): the
                                        bound when runs share the GPU */
+  int n_cases;                      /* the load cases the plan runs (1 or 2) */
+  double gpu_case_seconds[2];       /* each case alone on the GPU; gpu_seconds is
+                                       the cases side by side, as assess runs them */
+  double gpu_case_work_seconds[2];
   int n_notes;
   char notes[WL_PLAN_MAX_NOTES][320]; /* warnings and assumptions worth reading */
 };
@@ -185,14 +189,17 @@ static inline void wl_plan_default_numerics(struct wl_sph_params *prm) {
  * machine. */
 #define WL_PLAN_CPU_RATE_3D 6.0e5
 /* The CUDA backend on an H100 (BENCHMARKS.md, "CUDA backend: the cost of a
- * step"): a small flume's step costs a fixed time whatever its size (a
- * dozen latency-bound kernels and the outputs: about 98 us symplectic,
- * 72 us Verlet, from seawall.yaml's cases at dp = 0.0125 m); large runs go
- * at the force loop's rate (the 2D dam break of 0.89M particles, the 3D one
- * of 1.03M with the split loop). The estimate takes the larger of the two
- * times. */
-#define WL_PLAN_GPU_STEP_S 9.8e-5
-#define WL_PLAN_GPU_STEP_S_VERLET 7.2e-5
+ * step"): a small flume's step costs a fixed time whatever its size (seven
+ * latency-bound kernels, the outputs overlapped with the next steps); large
+ * runs go at the force loop's rate (the 2D dam break of 0.89M particles,
+ * the 3D one of 1.03M with the split loop). A run alone takes the larger of
+ * the two times; runs side by side (a scenario's cases, a ladder's levels,
+ * a sweep's cases) are priced by wl_plan_gpu_side_by_side. The Verlet step
+ * alone: 46 us (seawall.yaml's solitary case alone at dp = 0.012 m); the
+ * symplectic step alone is that times the ratio of the two integrators'
+ * steps measured beside each other at dp = 0.0125 m (83 against 53 us). */
+#define WL_PLAN_GPU_STEP_S 7.3e-5
+#define WL_PLAN_GPU_STEP_S_VERLET 4.6e-5
 #define WL_PLAN_GPU_RATE 2.70e9
 #define WL_PLAN_GPU_RATE_3D 7.67e8
 
@@ -268,18 +275,17 @@ enum wl_status wl_plan_ladder_cost(const struct wl_scenario *s, const struct wl_
 #define WL_PLAN_GPU_SIDE_BY_SIDE_MEMORY 0.5
 /* The GPU `check` prices runs for: the H100's memory [bytes]. */
 #define WL_PLAN_GPU_BYTES 80.0e9
-/* A small flume's step is a dozen latency-bound kernels that leave the GPU
- * mostly idle, so k runs sharing it take, together, their times alone
- * divided by k / (1 + WL_PLAN_GPU_SHARE_COST (k - 1)): each run beside
- * others costs the GPU 0.15 of a run alone. Never less than the longest
- * run alone, nor than the force loops' work of all of them at the full
- * rate. Fitted to the 16-case sweep of BENCHMARKS.md ("Sweeps"): 16 at a
- * time took 42.0 s, 8 at a time 49.4 s, one after the other 197.4 s; the
- * model gives 40.1 and 50.6 s. */
+/* A small flume's step is a few latency-bound kernels that leave the GPU
+ * mostly idle, so runs share it well: with k runs on it each advances at
+ * 1 / (1 + WL_PLAN_GPU_SHARE_COST (k - 1)) of its speed alone (processor
+ * sharing), and a waiting run starts as one ends. Never less than the
+ * force loops' work of all of them at the full rate. Fitted to the 16-case
+ * sweep of BENCHMARKS.md ("Sweeps"): 16 at a time took 42.0 s, 8 at a time
+ * 49.4 s, one after the other 197.4 s; the model gives 42.7 and 53.0 s. */
 #define WL_PLAN_GPU_SHARE_COST 0.15
 
 /* The GPU time of n runs (each costed alone in runs[i]) run at most
- * `width` at a time on one GPU, a new one starting as one ends. */
+ * `width` at a time on one GPU, in order, a new one starting as one ends. */
 double wl_plan_gpu_side_by_side(const struct wl_plan_cost *runs, int n, int width);
 
 /* How many runs of `device_bytes` each fit side by side on a GPU of

@@ -30,6 +30,10 @@ struct wl_store; /* an HDF5 file being written; opaque */
  * HDF5 call. Idempotent. */
 void wl_store_hdf5_init(void);
 
+/* 1 when the HDF5 library serialises its calls (a thread-safe build), so
+ * that files may be written from several threads at once. */
+int wl_store_thread_safe(void);
+
 /* fsync the directory holding path, so that a rename in it reaches the
  * disk (best effort: the files themselves are synced before). */
 void wl_store_sync_dir_of(const char *path);

@@ -8,6 +8,7 @@
 #include <fcntl.h>
 #include <math.h>
 #include <omp.h>
+#include <pthread.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -318,7 +319,7 @@ enum wl_status wl_assess_case(const struct wl_scenario *s, const struct wl_plan 
 
 enum wl_status assess_case(const struct wl_scenario *s, const struct wl_plan *plan,
                            enum wl_load_case load, const struct wl_assess_opts *opts,
-                           const char *snapshots, int defer, struct wl_case_result *c,
+                           const char *snapshots, int how, struct wl_case_result *c,
                            struct wl_error *err) {
   memset(c, 0, sizeof *c);
   c->load = load;
@@ -326,6 +327,7 @@ enum wl_status assess_case(const struct wl_scenario *s, const struct wl_plan *pl
   enum wl_status st = wl_flume_build(s, plan, load, &c->flume, err);
   if (st) return st;
   if (opts->threads > 0) c->flume.cfg.n_threads = opts->threads;
+  if (how & ASSESS_URGENT) c->flume.cfg.priority = 1;
   c->t_end = opts->end_time > 0 ? opts->end_time : c->flume.t_end;
   c->output_dt = s->run.output_interval.q.si;
   c->dp = plan->dp;
@@ -345,7 +347,7 @@ enum wl_status assess_case(const struct wl_scenario *s, const struct wl_plan *pl
   c->rec.n_probes = c->flume.n_probes;
   const struct wl_backend_ops *ops;
   if ((st = pick_backend(s, opts, &ops, err))) return st;
-  c->status = run_case(opts, ops, snapshots, defer, c, err);
+  c->status = run_case(opts, ops, snapshots, (how & ASSESS_DEFER) != 0, c, err);
   if (c->status != WL_OK) snprintf(c->message, sizeof c->message, "%s", err->msg);
   struct wl_error lerr;
   wl_error_clear(&lerr);
@@ -486,6 +488,55 @@ static void discard_snapshots(const char *dir, struct wl_case_result *c) {
   c->snapshot_files &= ~3;
 }
 
+/* The load cases side by side on one GPU (issue 21): a small flume's step
+ * leaves most of the GPU idle, so the cases run at once, each in its own
+ * thread and CUDA stream, as a ladder's levels do (ladder.c) and a sweep's
+ * cases (src/sweep/run.c); each case's results are those it gives alone
+ * (every run is deterministic on its own stream). On the GPU only (the CPU
+ * backend's threads are the cores'), not inside a sweep that already runs
+ * its assessments side by side (opts->write_lock), with snapshots only
+ * where HDF5 may be written from two threads, and when every case's runs
+ * (its ladder's levels side by side) fit CASES_GPU_MEMORY_SHARE of the
+ * GPU's memory together (the plan's estimate). */
+#define CASES_GPU_MEMORY_SHARE 0.5
+
+static int cases_side_by_side(const struct wl_scenario *s, const struct wl_plan *plan,
+                              const struct wl_assess_opts *opts, int n) {
+  if (n < 2 || opts->write_lock) return 0;
+  if (!opts->no_snapshots && !wl_store_thread_safe()) return 0;
+  const double gpu = assess_gpu_memory(s, opts);
+  if (!(gpu > 0)) return 0;
+  const int levels = s->resolution.n_levels > 0 ? s->resolution.n_levels : 1;
+  return n * levels * plan->gpu_memory_bytes <= CASES_GPU_MEMORY_SHARE * gpu;
+}
+
+/* A case run beside the others (cases_side_by_side). */
+struct case_job {
+  const struct wl_scenario *s;
+  const struct wl_plan *plan;
+  enum wl_load_case load;
+  struct wl_assess_opts opts; /* no progress: the case in the caller's thread reports */
+  char snap[1100];
+  const char *snaps;
+  struct wl_case_result *c;
+  struct wl_assess_convergence *cv;
+  struct wl_error err;
+  enum wl_status st;
+  pthread_t tid;
+  int started, ran;
+  int urgent; /* the case in the caller's thread: the others finish before it */
+};
+
+static void *case_thread(void *arg) {
+  struct case_job *j = arg;
+  j->st = j->s->resolution.n_levels > 0
+              ? ladder_run(j->s, j->plan, j->load, &j->opts, j->snaps, j->urgent, j->c, j->cv,
+                           &j->err)
+              : assess_case(j->s, j->plan, j->load, &j->opts, j->snaps,
+                            ASSESS_DEFER | (j->urgent ? ASSESS_URGENT : 0), j->c, &j->err);
+  return NULL;
+}
+
 /* A stop signal (SIGINT, SIGTERM, SIGHUP: opts->interrupted) stops the
  * stepping at the next output time (on_output); what was computed is then
  * written, and the report rendered, as after any stop. One that comes after
@@ -500,6 +551,18 @@ static void discard_snapshots(const char *dir, struct wl_case_result *c) {
  * writing of that case: the files of the previous run (or of this run's
  * earlier cases) stay as they were, and the report is rendered only when
  * this run moved results into place. */
+/* The cases from `from` on that ran beside the others but were not taken
+ * into res (a failure ended the writing first): their waiting snapshot
+ * files removed and their results freed. */
+static void drop_unwritten(struct wl_assess_result *res, struct case_job *jobs, int from, int n) {
+  for (int k = from; k < n; k++)
+    if (jobs[k].ran && k >= res->n_cases) {
+      discard_snapshots(res->out_dir, &res->cases[k]);
+      wl_assess_case_clear(&res->cases[k]);
+      jobs[k].ran = 0;
+    }
+}
+
 static enum wl_status assess_locked(const struct wl_scenario *s, const struct wl_plan *plan,
                                     const struct wl_assess_opts *opts,
                                     struct wl_assess_result *res, struct wl_error *err) {
@@ -512,16 +575,54 @@ static enum wl_status assess_locked(const struct wl_scenario *s, const struct wl
   struct wl_error first;
   wl_error_clear(&first);
   int committed = 0; /* results moved into place by this run */
-  for (int i = 0; i < n; i++) {
+  /* side by side: every case but the last in its own thread, the last (the
+   * longest: the explosion's train travels further) here with the progress;
+   * their results are then written in order as if run one after the other */
+  struct case_job jobs[2];
+  memset(jobs, 0, sizeof jobs);
+  if (cases_side_by_side(s, plan, opts, n)) {
+    for (int i = 0; i < n; i++) {
+      struct case_job *j = &jobs[i];
+      j->s = s, j->plan = plan, j->load = todo[i];
+      j->opts = *opts;
+      if (i + 1 < n) j->opts.progress = NULL;
+      snprintf(j->snap, sizeof j->snap, "%s/particles_%s.h5", res->out_dir,
+               wl_flume_case_name(todo[i]));
+      j->snaps = opts->no_snapshots ? NULL : j->snap;
+      j->c = &res->cases[i];
+      j->cv = &res->conv[i];
+      wl_error_clear(&j->err);
+      j->ran = 1;
+      j->urgent = i + 1 == n;
+      if (i + 1 < n) j->started = pthread_create(&j->tid, NULL, case_thread, j) == 0;
+    }
+    case_thread(&jobs[n - 1]);
+    for (int i = 0; i + 1 < n; i++) {
+      if (jobs[i].started) pthread_join(jobs[i].tid, NULL);
+      else case_thread(&jobs[i]); /* no thread to be had: here, after the others */
+    }
+  }
+  int i = 0;
+  for (; i < n; i++) {
     struct wl_case_result *c = &res->cases[res->n_cases++];
     char snap[1100];
     snprintf(snap, sizeof snap, "%s/particles_%s.h5", res->out_dir, wl_flume_case_name(todo[i]));
     struct wl_error cerr;
     wl_error_clear(&cerr);
     const char *snaps = opts->no_snapshots ? NULL : snap;
-    enum wl_status cst = s->resolution.n_levels > 0
-                             ? ladder_run(s, plan, todo[i], opts, snaps, c, &res->conv[i], &cerr)
-                             : assess_case(s, plan, todo[i], opts, snaps, 1, c, &cerr);
+    enum wl_status cst;
+    if (jobs[i].ran) {
+      cst = jobs[i].st;
+      cerr = jobs[i].err;
+    } else {
+      cst = s->resolution.n_levels > 0
+                ? ladder_run(s, plan, todo[i], opts, snaps, 1, c, &res->conv[i], &cerr)
+                : assess_case(s, plan, todo[i], opts, snaps, ASSESS_DEFER | ASSESS_URGENT, c,
+                              &cerr);
+    }
+    /* the next case already ran beside this one: its results are written
+     * too, whatever stopped this one */
+    const int next_ran = i + 1 < n && jobs[i + 1].ran;
     res->threads = c->flume.cfg.n_threads > 0 ? c->flume.cfg.n_threads : omp_get_max_threads();
     if (cst != WL_OK && cst != WL_EUNSTABLE && cst != WL_EINTERRUPTED &&
         (c->rec.n == 0 || cst == WL_EIO)) {
@@ -536,6 +637,7 @@ static enum wl_status assess_locked(const struct wl_scenario *s, const struct wl
       if (cst == WL_EIO && c->rec.n)
         wl_error_prefix(err, "case %s stopped at t = %.4g s of %.4g s: ", c->name, c->t_reached,
                         c->t_end);
+      drop_unwritten(res, jobs, i + 1, n);
       return cst;
     }
     if (cst != WL_OK && overall == WL_OK) {
@@ -554,9 +656,11 @@ static enum wl_status assess_locked(const struct wl_scenario *s, const struct wl
     }
     if (st) {
       if (overall != WL_OK) add_failure(err, "before that", first.msg);
+      drop_unwritten(res, jobs, i + 1, n);
       return st;
     }
     committed = 1;
+    if (next_ran) continue;
     if (c->status == WL_EINTERRUPTED) break;
     if (c->status != WL_OK && c->status != WL_EUNSTABLE) break;
     const int sig = stop_signal(opts);
@@ -572,6 +676,7 @@ static enum wl_status assess_locked(const struct wl_scenario *s, const struct wl
       break;
     }
   }
+  drop_unwritten(res, jobs, i + 1, n);
   if (opts->no_report) {
     if (overall != WL_OK) *err = first;
     return overall;

@@ -10,12 +10,16 @@ void case_loads_clear(struct wl_case_loads *l);
 enum wl_status case_loads_compute(struct wl_case_result *c, struct wl_error *err);
 
 /* assess.c */
-/* wl_assess_case; with `defer` the snapshot files are left complete under
- * their temporary names (c->snapshot_files), for write_results to move
- * into place with the results. */
+/* wl_assess_case; `how`: ASSESS_DEFER leaves the snapshot files complete
+ * under their temporary names (c->snapshot_files), for write_results to
+ * move into place with the results; ASSESS_URGENT marks the run that runs
+ * beside others on a GPU and that they all wait for (the finest level of
+ * the last case: its stream gets the GPU's greatest priority, so that the
+ * runs beside it fill the GPU around it instead of slowing it). */
+enum { ASSESS_DEFER = 1, ASSESS_URGENT = 2 };
 enum wl_status assess_case(const struct wl_scenario *s, const struct wl_plan *plan,
                            enum wl_load_case load, const struct wl_assess_opts *opts,
-                           const char *snapshots, int defer, struct wl_case_result *c,
+                           const char *snapshots, int how, struct wl_case_result *c,
                            struct wl_error *err);
 
 /* The GPU's memory [bytes] when this scenario's run goes to the CUDA backend
@@ -25,12 +29,13 @@ double assess_gpu_memory(const struct wl_scenario *s, const struct wl_assess_opt
 /* ladder.c */
 /* Run load case `load` on the scenario's convergence ladder into c (the last
  * level run, as wl_assess_case fills it) and cv (every level, the estimate
- * and how the ladder ended). Returns the last level's status (a level that
+ * and how the ladder ended; urgent: its finest level's run is ASSESS_URGENT).
+ * Returns the last level's status (a level that
  * cannot be planned or built returns its error, c keeping the level before
  * when there was one). */
 enum wl_status ladder_run(const struct wl_scenario *s, const struct wl_plan *plan,
                           enum wl_load_case load, const struct wl_assess_opts *opts,
-                          const char *snapshots, struct wl_case_result *c,
+                          const char *snapshots, int urgent, struct wl_case_result *c,
                           struct wl_assess_convergence *cv, struct wl_error *err);
 /* Order, extrapolation and error estimates of the levels run so far. */
 void ladder_estimate(struct wl_assess_convergence *cv);

@@ -130,7 +130,7 @@ struct level_job {
 
 static void *level_thread(void *arg) {
   struct level_job *j = arg;
-  j->st = assess_case(&j->s, &j->p, j->load, &j->opts, NULL, 1, &j->c, &j->err);
+  j->st = assess_case(&j->s, &j->p, j->load, &j->opts, NULL, ASSESS_DEFER, &j->c, &j->err);
   return NULL;
 }
 
@@ -159,7 +159,7 @@ static enum wl_status plan_level(const struct wl_scenario *s, const struct wl_as
  * runs them one after the other. */
 static int ladder_side_by_side(const struct wl_scenario *s, enum wl_load_case load,
                                const struct wl_assess_opts *opts, double gpu_bytes,
-                               const char *snapshots, struct wl_case_result *c,
+                               const char *snapshots, int urgent, struct wl_case_result *c,
                                struct wl_assess_convergence *cv, enum wl_status *st_out,
                                struct wl_error *err) {
   const int n = cv->n_planned;
@@ -193,7 +193,8 @@ static int ladder_side_by_side(const struct wl_scenario *s, enum wl_load_case lo
     lo.progress = ladder_on_progress;
     lo.user = &lp;
   }
-  st = assess_case(&jobs[n - 1].s, &jobs[n - 1].p, load, &lo, snapshots, 1, c, err);
+  st = assess_case(&jobs[n - 1].s, &jobs[n - 1].p, load, &lo, snapshots,
+                   ASSESS_DEFER | (urgent ? ASSESS_URGENT : 0), c, err);
   for (int k = 0; k + 1 < n; k++) {
     if (started[k])
       pthread_join(tid[k], NULL);
@@ -219,7 +220,7 @@ static int ladder_side_by_side(const struct wl_scenario *s, enum wl_load_case lo
 
 enum wl_status ladder_run(const struct wl_scenario *s, const struct wl_plan *plan,
                           enum wl_load_case load, const struct wl_assess_opts *opts,
-                          const char *snapshots, struct wl_case_result *c,
+                          const char *snapshots, int urgent, struct wl_case_result *c,
                           struct wl_assess_convergence *cv, struct wl_error *err) {
   memset(cv, 0, sizeof *cv);
   memset(c, 0, sizeof *c);
@@ -237,7 +238,8 @@ enum wl_status ladder_run(const struct wl_scenario *s, const struct wl_plan *pla
    * next level depends on the last) */
   const double gpu_bytes = cv->target_given || n < 2 ? 0.0 : assess_gpu_memory(s, opts);
   enum wl_status side_st;
-  if (gpu_bytes > 0 && ladder_side_by_side(s, load, opts, gpu_bytes, snapshots, c, cv, &side_st, err))
+  if (gpu_bytes > 0 &&
+      ladder_side_by_side(s, load, opts, gpu_bytes, snapshots, urgent, c, cv, &side_st, err))
     return side_st;
   /* each level is the scenario with dp set to the level's (plan.h
    * wl_plan_level_dp), planned again */
@@ -262,7 +264,8 @@ enum wl_status ladder_run(const struct wl_scenario *s, const struct wl_plan *pla
     }
     if (k > 0) wl_assess_case_clear(c); /* the finer level replaces the coarser one */
     /* every level writes the snapshots file; the last level run keeps it */
-    st = assess_case(sl, pl, load, &lo, snapshots, 1, c, err);
+    st = assess_case(sl, pl, load, &lo, snapshots, ASSESS_DEFER | (urgent ? ASSESS_URGENT : 0), c,
+                     err);
     level_from_case(lv, c);
     cv->n_levels = k + 1;
     ladder_estimate(cv);

@@ -4,8 +4,10 @@
  * include/wallload/sph/:
  *
  *   keys      key = group * n_cells + cell (sph/cells.h wl_sph_cell_of)
- *   sort      counting sort by key in the stable order (k_keys, a CUB
- *             scan that gives begin[key] = first sorted index of each key,
+ *             and the particles per key, computed by the update that ends
+ *             the step before (k_update; k_keys for the initial state)
+ *   sort      counting sort by key in the stable order (a CUB scan that
+ *             gives begin[key] = first sorted index of each key,
  *             k_scatter, k_cellsort), then the state fields gathered into
  *             sorted order
  *   walls     with the wall condition (the default), k_wall: one thread per
@@ -14,8 +16,10 @@
  *   forces    the force loop of the dimension (below) at the step start;
  *             predictor (sph/integrate.h) and the forces again at the half
  *             step
- *   corrector and guard (sph/guard.h) in one kernel; the first faulty
- *             particle (lowest sorted index) by an atomic min
+ *   corrector and guard (sph/guard.h), the next step's keys and the end
+ *             of the step in one kernel (k_update, whose last block ends
+ *             the step); the first faulty particle (lowest sorted index)
+ *             by an atomic min
  *   dt        each particle's time-step input (sph/gather.h
  *             wl_sph_eval_dt_input), then block reductions, one atomic max
  *             of the bit pattern per block (exact: the max of non-negative
@@ -31,7 +35,7 @@
  * two role sets of the arrays (a rebuild swaps them) and replayed. A step
  * of the driver (backend.h step) uploads its plan, replays and reads the
  * record back. A block (backend.h run) plans each step on the device by
- * the driver's rules (k_plan, k_end: backend.h wl_sph_dt_toward and
+ * the driver's rules (k_plan, k_update's end_step: backend.h wl_sph_dt_toward and
  * friends, the time step's wl_sph_step_dt, the guards), so the host
  * enqueues the block's steps and reads one record at its end; after a
  * fault, a collapse, the output time or the step count the plan stops
@@ -67,7 +71,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include <cub/device/device_scan.cuh>
 
 extern "C" {
 #include "wallload/backend.h"
@@ -165,7 +168,7 @@ struct dplan {
   double dt, dt_prev; /* the step and the previous one [s] */
   int euler;          /* Verlet: the Euler step (integrate.h wl_sph_verlet_euler) */
   int stop;           /* the block has stopped: every step kernel returns at once */
-  int block;          /* 1: a block (k_end accounts and plans the next step), 0: one step */
+  int block;          /* 1: a block (end_step accounts and plans the next step), 0: one step */
   int pad;
   double body_vel[WL_SPH_BODIES_MAX + 1][WL_SPH_DIM_MAX]; /* backend.h wl_sph_step_in */
   double body_acc[WL_SPH_BODIES_MAX + 1][WL_SPH_DIM_MAX];
@@ -192,8 +195,15 @@ struct dstats {
   unsigned long long limited; /* particles the wall limiter moved */
   unsigned long long excluded; /* particles that left the domain box (guard.h wl_sph_exclude) */
   double load[2];              /* wall_load: force [N or N/m], moment [N m or N m/m] */
+  unsigned int ticket;         /* k_update's blocks done (its last block ends the step) */
+  int pad2;
   struct dplan plan;           /* uploaded (with blk in a block) before the step */
   struct dblock blk;
+};
+
+/* The wall faces in a block's shared memory (k_update). */
+struct wl_sph_walls_sh {
+  struct wl_sph_wall w[WL_SPH_WALLS_MAX];
 };
 
 /* Read-only configuration on the device (guard). */
@@ -231,19 +241,29 @@ struct gpu {
   unsigned int *key, *id;
   unsigned char *kind, *kind_alt, *body, *body_alt;
   int *begin; /* 2 n_cells + 1 */
-  int *count; /* 2 n_cells + 1: particles per key, then the sort's fill counters */
-  void *sort_tmp; /* the scan's scratch */
-  size_t sort_tmp_bytes;
+  int *count; /* 2 n_cells + 1: particles per key (k_keys at init, then each update) */
+  int *bsum;  /* the particles of each SCAN_THREADS keys (k_scan's blocks) */
+  size_t bsum_bytes;
   struct dmeta *meta;
   struct dstats *stats;   /* device */
   struct dstats *h_stats; /* pinned host copy */
   struct dstats *h_up;    /* pinned host staging of the plan (and block) uploads */
+  unsigned char *h_dl;    /* pinned host staging of download and snapshot (dl_bytes) */
+  size_t dl_bytes;
+  double *h_load;         /* pinned: force and moment of each wall load (2 WL_SPH_SNAPSHOT_LOADS) */
+  cudaEvent_t snap_ev;    /* a snapshot's copies done (backend.h snapshot) */
+  int snap_n;             /* its wall loads */
+  int run_q0;             /* a started block's first role set (run_start, run_finish) */
   /* one step captured as a CUDA graph from each of the two role sets (a
    * step's kernels are a dozen launches of a few microseconds each at 20k
    * particles: replayed as a graph they follow each other without the
    * launch gaps) */
   cudaGraph_t graph[2];
   cudaGraphExec_t exec[2];
+  /* two steps as one graph from each role set (back to it after them): a
+   * block's steps in pairs, one graph launch's gap for two steps */
+  cudaGraph_t graph2[2];
+  cudaGraphExec_t exec2[2];
   struct roles roles[2];
   int graphs; /* exec[] captured */
   void *allocs[64];       /* everything cudaMalloc'd, for free */
@@ -258,29 +278,99 @@ struct gpu {
 static __device__ __forceinline__ int tid(void) { return blockIdx.x * blockDim.x + threadIdx.x; }
 
 /* The sort (rebuild): a counting sort by key whose order inside a key is
- * the previous order, the order a stable sort gives. k_keys: each
- * particle's key and the particles per key (count, zeroed before); their
- * exclusive sum is begin (CUB scan); k_scatter: each particle into a free
- * slot of its key's range (count, zeroed again, as the fill counters: the
- * order inside a range depends on timing); k_cellsort: each range sorted
- * by previous index, which makes it the stable order again, the same
- * permutation on every run. A cell holds ~8 particles in 2D and ~30 in
- * 3D, so the ranges are short; this takes a few short kernels where a
- * radix sort of the keys takes two passes of decoupled look-back that
- * run nearly serially at a few ten thousand particles.
+ * the previous order, the order a stable sort gives. Each particle's key
+ * and the particles per key (count) and per block of SCAN_THREADS keys
+ * (bsum) come from the update that ended the step before (k_update; k_keys
+ * for the initial state); their exclusive sum is begin (k_scan, one
+ * kernel: each block starts from the sum of the block sums before it);
+ * k_scatter: each particle into a free slot of its key's range (count
+ * counted down to 0 as the fill counter: the order inside a range depends
+ * on timing); k_cellsort: each range sorted by previous index, which makes
+ * it the stable order again, the same permutation on every run. A cell
+ * holds ~8 particles in 2D and ~30 in 3D, so the ranges are short; this
+ * takes a few short kernels where a radix sort of the keys takes two
+ * passes of decoupled look-back that run nearly serially at a few ten
+ * thousand particles.
  *
  * Every kernel of a step returns at once when the block has stopped
- * (plan.stop); the memsets and the scan between them then clear and sum
- * scratch, which the next step writes anew. */
+ * (plan.stop), and the counts stay those of the state. */
 
-/* Keys and particles per key; thread 0 resets the step record. */
+/* Keys per block of k_scan. */
+enum { SCAN_THREADS = 1024 };
+static int scan_blocks(int m) { return (m + SCAN_THREADS - 1) / SCAN_THREADS; }
+
+/* Particle of key k counted: count[k] and its scan block's bsum (one
+ * atomic per block index among the warp's active lanes: a warp's
+ * particles are in sorted order, so mostly one). */
+static __device__ __forceinline__ void count_key(unsigned k, int *count, int *bsum) {
+  atomicAdd(&count[k], 1);
+  const unsigned b = k / SCAN_THREADS;
+  const unsigned peers = __match_any_sync(__activemask(), b);
+  if ((int)(threadIdx.x & 31) == __ffs(peers) - 1) atomicAdd(&bsum[b], __popc(peers));
+}
+
+/* begin = the exclusive sum of count over m = n_keys + 1 keys: each block
+ * scans its SCAN_THREADS keys (warp shuffles, then the warps' sums) from
+ * the sum of the block sums before it. Integer sums: the same begin
+ * whatever the order. */
+__global__ void __launch_bounds__(SCAN_THREADS)
+    k_scan(const int *__restrict__ count, const int *__restrict__ bsum, int *begin, int m,
+           const struct dstats *st) {
+  if (st->plan.stop) return;
+  __shared__ int wsum[SCAN_THREADS / 32];
+  __shared__ int base;
+  const int t = threadIdx.x, lane = t & 31, w = t >> 5, k = blockIdx.x * SCAN_THREADS + t;
+  if (w == 0) {
+    int b = 0;
+    for (int q = lane; q < (int)blockIdx.x; q += 32) b += bsum[q];
+    for (int o = 16; o > 0; o >>= 1) b += __shfl_xor_sync(0xffffffffu, b, o);
+    if (lane == 0) base = b;
+  }
+  const int v = k < m ? count[k] : 0;
+  int x = v;
+  for (int o = 1; o < 32; o <<= 1) {
+    const int y = __shfl_up_sync(0xffffffffu, x, o);
+    if (lane >= o) x += y;
+  }
+  if (lane == 31) wsum[w] = x;
+  __syncthreads();
+  if (w == 0) {
+    int y = wsum[lane];
+    for (int o = 1; o < 32; o <<= 1) {
+      const int z = __shfl_up_sync(0xffffffffu, y, o);
+      if (lane >= o) y += z;
+    }
+    wsum[lane] = y;
+  }
+  __syncthreads();
+  if (k < m) begin[k] = base + (w > 0 ? wsum[w - 1] : 0) + x - v;
+}
+
+/* Keys and particles per key, of the initial state (a step's come from
+ * the update that ends the step before it, k_update). */
 template <int DIM>
 __global__ void k_keys(struct wl_sph_grid g, const double *__restrict__ x,
                        const double *__restrict__ y, const double *__restrict__ z,
                        const unsigned char *__restrict__ kind, unsigned int *key, int *count,
-                       int n, struct dstats *st) {
+                       int *bsum, int n, struct dstats *st) {
   if (st->plan.stop) return;
   const int i = tid();
+  if (i >= n) return;
+  double *pos[WL_SPH_DIM_MAX] = {(double *)x, (double *)y, (double *)z};
+  if (DIM == 2) pos[1] = (double *)z;
+  const unsigned group = kind[i] == WL_KIND_FLUID ? 1u : 0u;
+  const unsigned k = group * (unsigned)g.n_cells + (unsigned)wl_sph_cell_of(DIM, &g, pos, i);
+  key[i] = k;
+  count_key(k, count, bsum);
+}
+
+/* Particle i into a free slot of its key's range of perm, counting its
+ * count down (to 0 when all are placed); thread 0 resets the step
+ * record. */
+__global__ void k_scatter(const unsigned int *__restrict__ key, const int *__restrict__ begin,
+                          int *count, unsigned int *perm, int n, struct dstats *st) {
+  const int i = tid();
+  if (i >= n || st->plan.stop) return;
   if (i == 0) {
     st->ace2 = st->vel2 = st->visc = 0ull;
     st->first = 0x7fffffff;
@@ -288,35 +378,45 @@ __global__ void k_keys(struct wl_sph_grid g, const double *__restrict__ x,
     st->limited = 0ull;
     st->excluded = 0ull;
   }
-  if (i >= n) return;
-  double *pos[WL_SPH_DIM_MAX] = {(double *)x, (double *)y, (double *)z};
-  if (DIM == 2) pos[1] = (double *)z;
-  const unsigned group = kind[i] == WL_KIND_FLUID ? 1u : 0u;
-  const unsigned k = group * (unsigned)g.n_cells + (unsigned)wl_sph_cell_of(DIM, &g, pos, i);
-  key[i] = k;
-  atomicAdd(&count[k], 1);
-}
-
-/* Particle i into a free slot of its key's range of perm. */
-__global__ void k_scatter(const unsigned int *__restrict__ key, const int *__restrict__ begin,
-                          int *count, unsigned int *perm, int n, const struct dstats *st) {
-  const int i = tid();
-  if (i >= n || st->plan.stop) return;
   const unsigned k = key[i];
-  perm[begin[k] + atomicAdd(&count[k], 1)] = (unsigned)i;
+  perm[begin[k] + atomicSub(&count[k], 1) - 1] = (unsigned)i;
 }
 
-/* Range of key k of perm into ascending order (insertion sort; in
- * registers up to CELLSORT_LOCAL entries, in place beyond). */
-enum { CELLSORT_LOCAL = 48 };
+/* Range of key k of perm into ascending order: up to CELLSORT_REG entries
+ * (a 2D cell holds ~8) by an unrolled odd-even transposition sort in
+ * registers (an array indexed at run time lives in local memory, whose
+ * round trips made this the step's slowest sort kernel), up to
+ * CELLSORT_LOCAL (3D cells, ~30) by insertion in a local array, in place
+ * beyond. In a step the block sums go to 0 for the step's update to count
+ * anew (k_update; the scatter left count at 0); a rebuild outside a step
+ * (wall_load: the next step sorts the same state) gives count back. */
+enum { CELLSORT_REG = 16, CELLSORT_LOCAL = 48 };
 __global__ void k_cellsort(const int *__restrict__ begin, unsigned int *perm, int n_keys,
-                           const struct dstats *st) {
+                           int *count, int *bsum, int step, const struct dstats *st) {
   const int k = tid();
   if (k >= n_keys || st->plan.stop) return;
   const int b = begin[k], m = begin[k + 1] - b;
+  if (!step) count[k] = m;
+  else if (k % SCAN_THREADS == 0) bsum[k / SCAN_THREADS] = 0;
   if (m < 2) return;
   unsigned int *p = perm + b;
-  if (m <= CELLSORT_LOCAL) {
+  if (m <= CELLSORT_REG) {
+    unsigned v[CELLSORT_REG];
+#pragma unroll
+    for (int a = 0; a < CELLSORT_REG; a++) v[a] = a < m ? p[a] : 0xffffffffu; /* pads sort last */
+#pragma unroll
+    for (int r = 0; r < CELLSORT_REG; r++) {
+#pragma unroll
+      for (int a = r & 1; a + 1 < CELLSORT_REG; a += 2) {
+        const unsigned lo = min(v[a], v[a + 1]), hi = max(v[a], v[a + 1]);
+        v[a] = lo;
+        v[a + 1] = hi;
+      }
+    }
+#pragma unroll
+    for (int a = 0; a < CELLSORT_REG; a++)
+      if (a < m) p[a] = v[a];
+  } else if (m <= CELLSORT_LOCAL) {
     unsigned int v[CELLSORT_LOCAL];
     for (int a = 0; a < m; a++) {
       const unsigned x = p[a];
@@ -362,20 +462,34 @@ __global__ void k_permute(struct permute_args a, struct wl_sph_const k, int n,
   const int s = tid();
   if (s >= n || st->plan.stop) return;
   const int j = (int)a.perm[s];
-  a.key_d[s] = a.key[j];
+  /* every load before the first store: the arrays may alias for all the
+   * compiler knows, and a store between two loads would keep them apart */
+  const unsigned key = a.key[j], id = a.id[j];
+  double pos[DIM];
+  wl_real vel[DIM], vel_m1[DIM], rho_m1 = 0;
   for (int c = 0; c < DIM; c++) {
-    a.pos_d[c][s] = a.pos[c][j];
-    a.vel_d[c][s] = a.vel[c][j];
+    pos[c] = a.pos[c][j];
+    vel[c] = a.vel[c][j];
   }
   const wl_real rho = a.rho[j];
+  const unsigned char kind = a.kind[j], body = a.body[j];
+  if (a.rho_m1) {
+    for (int c = 0; c < DIM; c++) vel_m1[c] = a.vel_m1[c][j];
+    rho_m1 = a.rho_m1[j];
+  }
+  a.key_d[s] = key;
+  for (int c = 0; c < DIM; c++) {
+    a.pos_d[c][s] = pos[c];
+    a.vel_d[c][s] = vel[c];
+  }
   a.rho_d[s] = rho;
   a.press[s] = wl_sph_eos_p(&k, rho);
-  a.id_d[s] = a.id[j];
-  a.kind_d[s] = a.kind[j];
-  a.body_d[s] = a.body[j];
+  a.id_d[s] = id;
+  a.kind_d[s] = kind;
+  a.body_d[s] = body;
   if (a.rho_m1) {
-    for (int c = 0; c < DIM; c++) a.vel_m1_d[c][s] = a.vel_m1[c][j];
-    a.rho_m1_d[s] = a.rho_m1[j];
+    for (int c = 0; c < DIM; c++) a.vel_m1_d[c][s] = vel_m1[c];
+    a.rho_m1_d[s] = rho_m1;
   }
 }
 
@@ -1053,43 +1167,43 @@ __global__ void k_predict(struct wl_sph_const kp, struct wl_particles p, int n,
   p.press[i] = wl_sph_eos_p(&k, p.rho_h[i]);
 }
 
-/* The update (when update != 0: the corrector, or the Verlet step with
- * its Euler flag, as planned) and guard; the lowest faulty index. */
+/* The fault record of faulty particle f, written by another block of
+ * the kernel that calls it: its fields read past L1 (__ldcg), which may
+ * hold the lines from before their update, into a one-particle view for
+ * the shared guard. */
 template <int DIM>
-__global__ void k_correct_guard(struct wl_sph_const kp, struct wl_particles p, int n, int update,
-                                const struct dmeta *m, struct dstats *st) {
-  const int i = tid();
-  if (i >= n || st->plan.stop) return;
-  const struct wl_sph_const k = kp;
-  const struct dplan *pl = &st->plan;
-  if (update && k.integrator == WL_SPH_VERLET)
-    wl_sph_verlet(DIM, &k, &p, pl->dt, pl->dt_prev, pl->body_vel, pl->euler, i);
-  else if (update)
-    wl_sph_correct(DIM, &k, &p, pl->dt, pl->body_vel, i);
-  if (update && k.wall_limiter && wl_sph_wall_limit(DIM, &p, m->walls, m->n_walls, k.penetration, i))
-    atomicAdd(&st->limited, 1ull);
-  if (update && wl_sph_exclude(DIM, &p, m->lo, m->hi, i)) atomicAdd(&st->excluded, 1ull);
-  int w = -1;
-  if (wl_sph_guard(DIM, &k, &p, m->lo, m->hi, m->walls, m->n_walls, i, &w))
-    atomicMin(&st->first, i);
-}
-
-/* The fault record of faulty particle f. */
-template <int DIM>
-static __device__ void fault_record(const struct wl_sph_const *kp, const struct wl_particles *pp,
-                                    int f, const struct dmeta *m, struct dstats *st) {
-  const struct wl_sph_const &k = *kp;
-  const struct wl_particles &p = *pp;
-  int w = -1;
-  st->fault = wl_sph_guard(DIM, &k, &p, m->lo, m->hi, m->walls, m->n_walls, f, &w);
-  st->wall = w;
-  st->id = p.id[f];
-  st->kind = p.kind[f];
-  for (int a = 0; a < WL_SPH_DIM_MAX; a++) {
-    st->pos[a] = a < DIM ? p.pos[a][f] : 0;
-    st->vel[a] = a < DIM ? (double)p.vel[a][f] : 0;
+static __device__ void fault_record(const struct wl_sph_const *k, const struct wl_particles *pp,
+                                    int f, const struct dmeta *m,
+                                    const struct wl_sph_wall *walls, struct dstats *st) {
+  double pos[WL_SPH_DIM_MAX] = {0, 0, 0};
+  wl_real vel[WL_SPH_DIM_MAX] = {0, 0, 0}, rho = __ldcg(&pp->rho[f]);
+  unsigned char kind = pp->kind[f], body = pp->body[f]; /* not written by the update */
+  for (int a = 0; a < DIM; a++) {
+    pos[a] = __ldcg(&pp->pos[a][f]);
+    vel[a] = __ldcg(&pp->vel[a][f]);
   }
-  st->rho = p.rho[f];
+  if (kind == WL_KIND_FLUID) body = __ldcg((const unsigned char *)&pp->body[f]); /* excluded */
+  struct wl_particles one;
+  memset(&one, 0, sizeof one);
+  one.dim = DIM;
+  one.n = one.capacity = 1;
+  for (int a = 0; a < DIM; a++) {
+    one.pos[a] = &pos[a];
+    one.vel[a] = &vel[a];
+  }
+  one.rho = &rho;
+  one.kind = &kind;
+  one.body = &body;
+  int w = -1;
+  st->fault = wl_sph_guard(DIM, k, &one, m->lo, m->hi, walls, m->n_walls, 0, &w);
+  st->wall = w;
+  st->id = __ldcg(&pp->id[f]);
+  st->kind = kind;
+  for (int a = 0; a < WL_SPH_DIM_MAX; a++) {
+    st->pos[a] = a < DIM ? pos[a] : 0;
+    st->vel[a] = a < DIM ? (double)vel[a] : 0;
+  }
+  st->rho = rho;
 }
 
 /* The plan of a block's next step on the device, as the host's loop
@@ -1121,17 +1235,19 @@ __global__ void k_plan(struct wl_sph_const kp, struct dstats *st) {
   plan_step(&k, st);
 }
 
-/* The end of a step (one thread): the fault record of the first faulty
- * particle; in a block, the step counted as the host's loop counts it
- * (time, step, the next CFL step, the guards in its order) and the next
- * one planned, or the block stopped after it. */
+/* The end of a step (one thread, after every particle's update): the fault
+ * record of the first faulty particle; in a block, the step counted as
+ * the host's loop counts it (time, step, the next CFL step, the guards in
+ * its order) and the next one planned, or the block stopped after it. The
+ * counters the update's blocks added to are read atomically (past L1). */
 template <int DIM>
-__global__ void k_end(struct wl_sph_const kp, struct wl_particles p, int n,
-                      const struct dmeta *m, struct dstats *st) {
-  if (st->plan.stop) return;
-  const struct wl_sph_const k = kp;
-  const int f = st->first;
-  if (f < n) fault_record<DIM>(&k, &p, f, m, st);
+static __device__ void end_step(const struct wl_sph_const *k, const struct wl_particles *p, int n,
+                                const struct dmeta *m, const struct wl_sph_walls_sh *ws,
+                                struct dstats *st) {
+  const int f = atomicAdd(&st->first, 0);
+  const unsigned long long limited = atomicAdd(&st->limited, 0ull);
+  const unsigned long long excluded = atomicAdd(&st->excluded, 0ull);
+  if (f < n) fault_record<DIM>(k, p, f, m, ws->w, st);
   if (!st->plan.block) return;
   struct dblock *b = &st->blk;
   const double dt = st->plan.dt;
@@ -1144,11 +1260,11 @@ __global__ void k_end(struct wl_sph_const kp, struct wl_particles p, int n,
   memcpy(&vel2, &st->vel2, sizeof vel2);
   memcpy(&visc, &st->visc, sizeof visc);
   struct wl_sph_step_out o;
-  wl_sph_step_dt(&k, ace2, vel2, visc, &o);
+  wl_sph_step_dt(k, ace2, vel2, visc, &o);
   b->dt_next = o.dt_next;
-  b->limited += st->limited;
-  b->excluded += st->excluded;
-  b->n_excluded += (long long)st->excluded;
+  b->limited += limited;
+  b->excluded += excluded;
+  b->n_excluded += (long long)excluded;
   int why = -1;
   if (f < n) why = WL_SPH_BLOCK_FAULT;
   else if (wl_sph_excluded_too_many((long)b->n_excluded, (long)b->n_fluid)) why = WL_SPH_BLOCK_EXCLUDED;
@@ -1160,8 +1276,60 @@ __global__ void k_end(struct wl_sph_const kp, struct wl_particles p, int n,
     b->why = why;
     st->plan.stop = 1;
   } else {
-    plan_step(&k, st);
+    plan_step(k, st);
   }
+}
+
+/* The update (when update != 0: the corrector, or the Verlet step with
+ * its Euler flag, as planned) and guard, the lowest faulty index; then
+ * each particle's key of its new position and the particles per key
+ * (count, zeroed by the step's k_cellsort), for the next step's sort; and
+ * the end of the step (end_step) by the block that finishes last, so that
+ * a step needs no one-thread kernel of its own. The wall faces are read
+ * from shared memory (each particle tests every face twice). */
+template <int DIM>
+__global__ void __launch_bounds__(THREADS)
+    k_update(struct wl_sph_const kp, struct wl_sph_grid gp, struct wl_particles p, int n,
+             int update, const struct dmeta *m, int *count, int *bsum, struct dstats *st) {
+  if (st->plan.stop) return; /* the same for every block: only the last one sets it */
+  __shared__ struct wl_sph_walls_sh ws;
+  __shared__ bool last;
+  const int nw = m->n_walls;
+  for (int w = threadIdx.x; w < nw; w += blockDim.x) ws.w[w] = m->walls[w];
+  __syncthreads();
+  const int i = tid();
+  const struct wl_sph_const k = kp;
+  if (i < n) {
+    const struct dplan *pl = &st->plan;
+    if (update && k.integrator == WL_SPH_VERLET)
+      wl_sph_verlet(DIM, &k, &p, pl->dt, pl->dt_prev, pl->body_vel, pl->euler, i);
+    else if (update)
+      wl_sph_correct(DIM, &k, &p, pl->dt, pl->body_vel, i);
+    if (update && k.wall_limiter && wl_sph_wall_limit(DIM, &p, ws.w, nw, k.penetration, i))
+      atomicAdd(&st->limited, 1ull);
+    if (update && wl_sph_exclude(DIM, &p, m->lo, m->hi, i)) atomicAdd(&st->excluded, 1ull);
+    int w = -1;
+    if (wl_sph_guard(DIM, &k, &p, m->lo, m->hi, ws.w, nw, i, &w)) atomicMin(&st->first, i);
+    /* through the arrays themselves: a one-particle view in registers
+     * saves round trips to memory but lets the compiler contract the
+     * Verlet step's products into FMAs otherwise, which changes the
+     * results' last bits */
+    const struct wl_sph_grid g = gp;
+    const unsigned group = p.kind[i] == WL_KIND_FLUID ? 1u : 0u;
+    const unsigned key = group * (unsigned)g.n_cells + (unsigned)wl_sph_cell_of(DIM, &g, p.pos, i);
+    p.key[i] = key;
+    count_key(key, count, bsum);
+  }
+  /* the last block to finish ends the step (the threadfence pattern: every
+   * thread's writes ordered before its block's ticket) */
+  __threadfence();
+  __syncthreads();
+  if (threadIdx.x == 0) last = atomicAdd(&st->ticket, 1u) == gridDim.x - 1;
+  __syncthreads();
+  if (!last || threadIdx.x != 0) return;
+  __threadfence();
+  st->ticket = 0;
+  end_step<DIM>(&k, &p, n, m, &ws, st);
 }
 
 /* The wall load (backend.h wall_load): each fluid particle's share
@@ -1257,25 +1425,36 @@ static struct wl_particles view(const struct gpu *c) {
  * key, pos_h, vel_h, rho_h receive the sorted keys and state and swap
  * roles with the unsorted ones (key with ace[0]), and so does ar with id
  * (both 4-byte arrays; ar is rewritten by the next force evaluation). */
-static enum wl_status rebuild(struct gpu *c, struct wl_error *err) {
+/* The keys and counts come from the update that ended the last step
+ * (k_update), or with REBUILD_KEYS from k_keys (the initial state); with
+ * REBUILD_STEP they are left for the step's update to count anew, else
+ * given back (wall_load: the next step sorts the same state). */
+enum { REBUILD_KEYS = 1, REBUILD_STEP = 2 };
+static enum wl_status rebuild(struct gpu *c, int how, struct wl_error *err) {
   const int n = c->n, dim = c->dim, n_keys = 2 * c->grid.n_cells;
   unsigned int *key_d = (unsigned int *)c->ace[0];
   unsigned int *perm = (unsigned int *)c->ace[1];
   const size_t count_bytes = sizeof(int) * (size_t)(n_keys + 1);
-  CK(cudaMemsetAsync(c->count, 0, count_bytes, c->stream));
-  if (dim == 3)
-    k_keys<3><<<blocks(n), THREADS, 0, c->stream>>>(c->grid, c->pos[0], c->pos[1], c->pos[2],
-                                                     c->kind, c->key, c->count, n, c->stats);
-  else
-    k_keys<2><<<blocks(n), THREADS, 0, c->stream>>>(c->grid, c->pos[0], c->pos[1], c->pos[1],
-                                                     c->kind, c->key, c->count, n, c->stats);
-  CKL("keys");
-  size_t tmp = c->sort_tmp_bytes;
-  CK(cub::DeviceScan::ExclusiveSum(c->sort_tmp, tmp, c->count, c->begin, n_keys + 1, c->stream));
-  CK(cudaMemsetAsync(c->count, 0, count_bytes, c->stream));
+  if (how & REBUILD_KEYS) {
+    CK(cudaMemsetAsync(c->count, 0, count_bytes, c->stream));
+    CK(cudaMemsetAsync(c->bsum, 0, c->bsum_bytes, c->stream));
+    if (dim == 3)
+      k_keys<3><<<blocks(n), THREADS, 0, c->stream>>>(c->grid, c->pos[0], c->pos[1], c->pos[2],
+                                                       c->kind, c->key, c->count, c->bsum, n,
+                                                       c->stats);
+    else
+      k_keys<2><<<blocks(n), THREADS, 0, c->stream>>>(c->grid, c->pos[0], c->pos[1], c->pos[1],
+                                                       c->kind, c->key, c->count, c->bsum, n,
+                                                       c->stats);
+    CKL("keys");
+  }
+  k_scan<<<scan_blocks(n_keys + 1), SCAN_THREADS, 0, c->stream>>>(c->count, c->bsum, c->begin,
+                                                                  n_keys + 1, c->stats);
+  CKL("scan");
   k_scatter<<<blocks(n), THREADS, 0, c->stream>>>(c->key, c->begin, c->count, perm, n, c->stats);
   CKL("scatter");
-  k_cellsort<<<blocks(n_keys), THREADS, 0, c->stream>>>(c->begin, perm, n_keys, c->stats);
+  k_cellsort<<<blocks(n_keys), THREADS, 0, c->stream>>>(c->begin, perm, n_keys, c->count, c->bsum,
+                                                        (how & REBUILD_STEP) != 0, c->stats);
   CKL("cell sort");
   struct permute_args a;
   memset(&a, 0, sizeof a);
@@ -1415,21 +1594,18 @@ static enum wl_status evaluate(struct gpu *c, double *const *pos, wl_real *const
   return WL_OK;
 }
 
-/* The update (update != 0; the plan says how) and guard, then the end of
- * the step (k_end). */
+/* The update (update != 0; the plan says how), guard, the next sort's keys
+ * and the end of the step (k_update). */
 static enum wl_status enqueue_update(struct gpu *c, int update, struct wl_error *err) {
   const struct wl_particles p = view(c);
   const int n = c->n;
-  if (c->dim == 3) {
-    k_correct_guard<3><<<blocks(n), THREADS, 0, c->stream>>>(c->k, p, n, update, c->meta, c->stats);
-    CKL("correct");
-    k_end<3><<<1, 1, 0, c->stream>>>(c->k, p, n, c->meta, c->stats);
-  } else {
-    k_correct_guard<2><<<blocks(n), THREADS, 0, c->stream>>>(c->k, p, n, update, c->meta, c->stats);
-    CKL("correct");
-    k_end<2><<<1, 1, 0, c->stream>>>(c->k, p, n, c->meta, c->stats);
-  }
-  CKL("end of step");
+  if (c->dim == 3)
+    k_update<3><<<blocks(n), THREADS, 0, c->stream>>>(c->k, c->grid, p, n, update, c->meta,
+                                                      c->count, c->bsum, c->stats);
+  else
+    k_update<2><<<blocks(n), THREADS, 0, c->stream>>>(c->k, c->grid, p, n, update, c->meta,
+                                                      c->count, c->bsum, c->stats);
+  CKL("update");
   return WL_OK;
 }
 
@@ -1473,10 +1649,15 @@ static void cuda_free(void *ctx) {
   for (int q = 0; q < 2; q++) {
     if (c->exec[q]) cudaGraphExecDestroy(c->exec[q]);
     if (c->graph[q]) cudaGraphDestroy(c->graph[q]);
+    if (c->exec2[q]) cudaGraphExecDestroy(c->exec2[q]);
+    if (c->graph2[q]) cudaGraphDestroy(c->graph2[q]);
   }
   for (int q = 0; q < c->n_allocs; q++) cudaFree(c->allocs[q]);
   if (c->h_stats) cudaFreeHost(c->h_stats);
   if (c->h_up) cudaFreeHost(c->h_up);
+  if (c->h_dl) cudaFreeHost(c->h_dl);
+  if (c->h_load) cudaFreeHost(c->h_load);
+  if (c->snap_ev) cudaEventDestroy(c->snap_ev);
   if (c->stream) cudaStreamDestroy(c->stream);
   free(c);
 }
@@ -1486,7 +1667,7 @@ static void cuda_free(void *ctx) {
  * and guard, end of step. Enqueued only; the roles of the arrays are those
  * after the step's rebuild. */
 static enum wl_status enqueue_step(struct gpu *c, struct wl_error *err) {
-  enum wl_status st = rebuild(c, err);
+  enum wl_status st = rebuild(c, REBUILD_STEP, err);
   if (st) return st;
   if (c->k.shift_coef > 0 && c->n > c->nb) {
     const struct wl_sph_eval e = wl_sph_eval_inputs(c->dim, c->pos, c->vel, c->rho, c->key, c->begin);
@@ -1589,6 +1770,25 @@ static enum wl_status capture_steps(struct gpu *c, struct wl_error *err) {
   if (role_set(c) != 0)
     return wl_error_set(err, WL_EIO, "cuda backend: two captured steps do not give the arrays' "
                         "roles back");
+  for (int q = 0; q < 2; q++) {
+    load_roles(c, &c->roles[q]);
+    CK(cudaStreamBeginCapture(c->stream, cudaStreamCaptureModeThreadLocal));
+    enum wl_status st = enqueue_step(c, err);
+    if (!st) st = enqueue_step(c, err);
+    cudaGraph_t g = NULL;
+    const cudaError_t e = cudaStreamEndCapture(c->stream, &g);
+    if (st) {
+      if (g) cudaGraphDestroy(g);
+      return st;
+    }
+    CK(e);
+    c->graph2[q] = g;
+    CK(cudaGraphInstantiate(&c->exec2[q], g, 0));
+    if (role_set(c) != q)
+      return wl_error_set(err, WL_EIO, "cuda backend: two captured steps do not give the arrays' "
+                          "roles back");
+  }
+  load_roles(c, &c->roles[0]);
   c->graphs = 1;
   return WL_OK;
 }
@@ -1621,13 +1821,12 @@ static enum wl_status cuda_step(void *ctx, const struct wl_sph_step_in *in,
   return st;
 }
 
-/* backend.h run: the block's state and first plan uploaded, its steps
- * enqueued (each returns at once after the block stopped), one record
- * back. */
-static enum wl_status cuda_run(void *ctx, const struct wl_sph_block_in *in,
-                               struct wl_sph_block_out *out, struct wl_error *err) {
+/* backend.h run_start: the block's state and first plan uploaded, its
+ * steps enqueued (each returns at once after the block stopped), the
+ * record's copy back enqueued; nothing waited for. */
+static enum wl_status cuda_run_start(void *ctx, const struct wl_sph_block_in *in,
+                                     struct wl_error *err) {
   struct gpu *c = (struct gpu *)ctx;
-  memset(out, 0, sizeof *out);
   struct dstats *up = c->h_up;
   memset(&up->plan, 0, sizeof up->plan);
   memset(&up->blk, 0, sizeof up->blk);
@@ -1652,16 +1851,25 @@ static enum wl_status cuda_run(void *ctx, const struct wl_sph_block_in *in,
   const int q0 = role_set(c);
   if (!c->graphs || q0 < 0)
     return wl_error_set(err, WL_EIO, "cuda backend: a block of steps without its captured steps");
-  for (long s = 0; s < in->max_steps; s++)
-    CK(cudaGraphLaunch(c->exec[(q0 + s) & 1], c->stream));
+  for (long s = 0; s + 1 < in->max_steps; s += 2) CK(cudaGraphLaunch(c->exec2[q0], c->stream));
+  if (in->max_steps & 1) CK(cudaGraphLaunch(c->exec[q0], c->stream));
   CK(cudaMemcpyAsync(c->h_stats, c->stats, sizeof *c->stats, cudaMemcpyDeviceToHost, c->stream));
   /* kernels after the block (wall_load's rebuild, the next step) run */
   CK(cudaMemsetAsync(&c->stats->plan.stop, 0, sizeof c->stats->plan.stop, c->stream));
+  c->run_q0 = q0;
+  return WL_OK;
+}
+
+/* backend.h run_finish: the started block waited for, its record read. */
+static enum wl_status cuda_run_finish(void *ctx, struct wl_sph_block_out *out,
+                                      struct wl_error *err) {
+  struct gpu *c = (struct gpu *)ctx;
+  memset(out, 0, sizeof *out);
   CK(cudaStreamSynchronize(c->stream));
   const struct dblock *hb = &c->h_stats->blk;
   /* the roles after the steps taken (the launches after the stop did
    * nothing) */
-  load_roles(c, &c->roles[(q0 + hb->taken) & 1]);
+  load_roles(c, &c->roles[(c->run_q0 + hb->taken) & 1]);
   out->stop = hb->why;
   out->steps = (long)hb->taken;
   out->t = hb->t;
@@ -1673,35 +1881,55 @@ static enum wl_status cuda_run(void *ctx, const struct wl_sph_block_in *in,
   return WL_OK;
 }
 
+/* backend.h run: run_start, then run_finish (one record back). */
+static enum wl_status cuda_run(void *ctx, const struct wl_sph_block_in *in,
+                               struct wl_sph_block_out *out, struct wl_error *err) {
+  memset(out, 0, sizeof *out);
+  const enum wl_status st = cuda_run_start(ctx, in, err);
+  return st ? st : cuda_run_finish(ctx, out, err);
+}
+
+/* The wall load of body about z_ref on the cell lists rebuilt before
+ * (wall_load, snapshot): each fluid particle's share into pos_h (free
+ * between steps: rebuild left the old order's positions there), their
+ * sums, and their copy into h_load[2 slot], enqueued. */
+static enum wl_status enqueue_wall_load(struct gpu *c, int body, double z_ref, int slot,
+                                        struct wl_error *err) {
+  const int n = c->n, nb = c->nb, lam = c->k.visc == WL_SPH_VISC_LAMINAR;
+  if (n <= nb) {
+    c->h_load[2 * slot] = c->h_load[2 * slot + 1] = 0.0;
+    return WL_OK;
+  }
+  struct wl_sph_eval e = wl_sph_eval_inputs(c->dim, c->pos, c->vel, c->rho, c->key, c->begin);
+  e.press = c->press;
+  double *fx = c->pos_h[0], *my = c->pos_h[1];
+  const int nbk = blocks(n - nb);
+  cudaStream_t s = c->stream;
+  if (c->dim == 3 && lam) k_wall_load<3, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, c->body, body, z_ref, nb, n, fx, my);
+  else if (c->dim == 3) k_wall_load<3, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, c->body, body, z_ref, nb, n, fx, my);
+  else if (lam) k_wall_load<2, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, c->body, body, z_ref, nb, n, fx, my);
+  else k_wall_load<2, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, c->body, body, z_ref, nb, n, fx, my);
+  CKL("wall load");
+  k_load_sum<<<1, LOAD_THREADS, 0, s>>>(fx, my, nb, n, c->stats);
+  CKL("wall load sum");
+  CK(cudaMemcpyAsync(c->h_load + 2 * slot, c->stats->load, sizeof c->stats->load,
+                     cudaMemcpyDeviceToHost, s));
+  return WL_OK;
+}
+
 /* backend.h wall_load: the cell lists of the current state (whose sort
- * also fills press with the EOS of every particle's density), each fluid
- * particle's share into pos_h (free between steps: rebuild left the old
- * order's positions there), their sums, back to the host. */
+ * also fills press with the EOS of every particle's density), the load
+ * (enqueue_wall_load), back to the host. */
 static enum wl_status cuda_wall_load(void *ctx, int body, double z_ref, double *force,
                                      double *moment, struct wl_error *err) {
   struct gpu *c = (struct gpu *)ctx;
   *force = *moment = 0.0;
-  enum wl_status st = rebuild(c, err);
+  enum wl_status st = rebuild(c, 0, err);
+  if (!st) st = enqueue_wall_load(c, body, z_ref, 0, err);
   if (st) return st;
-  const int n = c->n, nb = c->nb, lam = c->k.visc == WL_SPH_VISC_LAMINAR;
-  if (n > nb) {
-    struct wl_sph_eval e = wl_sph_eval_inputs(c->dim, c->pos, c->vel, c->rho, c->key, c->begin);
-    e.press = c->press;
-    double *fx = c->pos_h[0], *my = c->pos_h[1];
-    const int nbk = blocks(n - nb);
-    cudaStream_t s = c->stream;
-    if (c->dim == 3 && lam) k_wall_load<3, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, c->body, body, z_ref, nb, n, fx, my);
-    else if (c->dim == 3) k_wall_load<3, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, c->body, body, z_ref, nb, n, fx, my);
-    else if (lam) k_wall_load<2, 1><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, c->body, body, z_ref, nb, n, fx, my);
-    else k_wall_load<2, 0><<<nbk, THREADS, 0, s>>>(c->k, c->grid, e, c->body, body, z_ref, nb, n, fx, my);
-    CKL("wall load");
-    k_load_sum<<<1, LOAD_THREADS, 0, s>>>(fx, my, nb, n, c->stats);
-    CKL("wall load sum");
-    CK(cudaMemcpyAsync(c->h_stats, c->stats, sizeof *c->stats, cudaMemcpyDeviceToHost, s));
-    CK(cudaStreamSynchronize(s));
-    *force = c->h_stats->load[0];
-    *moment = c->h_stats->load[1];
-  }
+  CK(cudaStreamSynchronize(c->stream));
+  *force = c->h_load[0];
+  *moment = c->h_load[1];
   return WL_OK;
 }
 
@@ -1719,26 +1947,116 @@ static void cuda_describe(void *ctx, char *buf, size_t size) {
            c->grid.cell, c->bytes / 1048576.0, (double)c->bytes / (c->n > 0 ? c->n : 1));
 }
 
-static enum wl_status cuda_download(void *ctx, struct wl_particles *host, struct wl_error *err) {
-  struct gpu *c = (struct gpu *)ctx;
+/* The fields download copies, in the order of its pinned staging buffer:
+ * pos (dim doubles), vel (dim wl_real), rho, id, kind, body. */
+static size_t download_bytes(int dim, size_t n) {
+  return n * ((size_t)dim * (sizeof(double) + sizeof(wl_real)) + sizeof(wl_real) +
+              sizeof(unsigned int) + 2);
+}
+
+/* The arrays download copies, in their order in the staging buffer (host:
+ * the destinations, NULL for none). */
+struct dl_part {
+  void *host;
+  const void *dev;
+  size_t bytes;
+};
+static int dl_parts(const struct gpu *c, struct wl_particles *host,
+                    struct dl_part parts[2 * WL_SPH_DIM_MAX + 4]) {
+  const size_t n = (size_t)c->n;
+  int np = 0;
+  for (int a = 0; a < c->dim; a++)
+    parts[np++] = {host ? host->pos[a] : NULL, c->pos[a], n * sizeof(double)};
+  for (int a = 0; a < c->dim; a++)
+    parts[np++] = {host ? host->vel[a] : NULL, c->vel[a], n * sizeof(wl_real)};
+  parts[np++] = {host ? host->rho : NULL, c->rho, n * sizeof(wl_real)};
+  parts[np++] = {host ? host->id : NULL, c->id, n * sizeof(unsigned int)};
+  parts[np++] = {host ? host->kind : NULL, c->kind, n};
+  parts[np++] = {host ? host->body : NULL, c->body, n};
+  return np;
+}
+
+static enum wl_status check_host(const struct gpu *c, const struct wl_particles *host,
+                                 struct wl_error *err) {
   if (host->dim != c->dim)
     return wl_error_set(err, WL_EINPUT, "cuda backend: download of %dD particles into %dD", c->dim,
                         host->dim);
   if (host->capacity < c->n)
     return wl_error_set(err, WL_EINPUT, "cuda backend: download of %d particles into room for %d",
                         c->n, host->capacity);
-  const size_t n = (size_t)c->n;
-  for (int a = 0; a < c->dim; a++) {
-    CK(cudaMemcpyAsync(host->pos[a], c->pos[a], n * sizeof(double), cudaMemcpyDeviceToHost, c->stream));
-    CK(cudaMemcpyAsync(host->vel[a], c->vel[a], n * sizeof(wl_real), cudaMemcpyDeviceToHost, c->stream));
+  return WL_OK;
+}
+
+/* The current arrays into the staging buffer, enqueued. */
+static enum wl_status enqueue_dl(struct gpu *c, struct wl_error *err) {
+  struct dl_part parts[2 * WL_SPH_DIM_MAX + 4];
+  const int np = dl_parts(c, NULL, parts);
+  size_t off = 0;
+  for (int q = 0; q < np; q++) {
+    CK(cudaMemcpyAsync(c->h_dl + off, parts[q].dev, parts[q].bytes, cudaMemcpyDeviceToHost,
+                       c->stream));
+    off += parts[q].bytes;
   }
-  CK(cudaMemcpyAsync(host->rho, c->rho, n * sizeof(wl_real), cudaMemcpyDeviceToHost, c->stream));
-  CK(cudaMemcpyAsync(host->id, c->id, n * sizeof(unsigned int), cudaMemcpyDeviceToHost, c->stream));
-  CK(cudaMemcpyAsync(host->kind, c->kind, n, cudaMemcpyDeviceToHost, c->stream));
-  CK(cudaMemcpyAsync(host->body, c->body, n, cudaMemcpyDeviceToHost, c->stream));
-  CK(cudaStreamSynchronize(c->stream));
+  return WL_OK;
+}
+
+/* The staging buffer into the host's arrays. */
+static void unstage(struct gpu *c, struct wl_particles *host) {
+  struct dl_part parts[2 * WL_SPH_DIM_MAX + 4];
+  const int np = dl_parts(c, host, parts);
+  size_t off = 0;
+  for (int q = 0; q < np; q++) {
+    memcpy(parts[q].host, c->h_dl + off, parts[q].bytes);
+    off += parts[q].bytes;
+  }
   host->n = c->n;
   host->n_bound = c->nb;
+}
+
+/* The state into the host's arrays through the pinned staging buffer: the
+ * copies from pageable memory each wait for the driver's own staging, at
+ * an output every few dozen steps of a small flume. */
+static enum wl_status cuda_download(void *ctx, struct wl_particles *host, struct wl_error *err) {
+  struct gpu *c = (struct gpu *)ctx;
+  enum wl_status st = check_host(c, host, err);
+  if (!st) st = enqueue_dl(c, err);
+  if (st) return st;
+  CK(cudaStreamSynchronize(c->stream));
+  unstage(c, host);
+  return WL_OK;
+}
+
+/* backend.h snapshot: the fields download reads into the staging buffer,
+ * then (with loads to compute) the cell lists rebuilt and each wall load
+ * into h_load, as download then wall_load would do; all enqueued, an
+ * event after them. */
+static enum wl_status cuda_snapshot(void *ctx, int n, const int *body, const double *z_ref,
+                                    struct wl_error *err) {
+  struct gpu *c = (struct gpu *)ctx;
+  if (n < 0 || n > WL_SPH_SNAPSHOT_LOADS)
+    return wl_error_set(err, WL_EINPUT, "cuda backend: a snapshot of %d wall loads; at most %d", n,
+                        (int)WL_SPH_SNAPSHOT_LOADS);
+  enum wl_status st = enqueue_dl(c, err);
+  if (!st && n > 0) st = rebuild(c, 0, err);
+  for (int q = 0; q < n && !st; q++) st = enqueue_wall_load(c, body[q], z_ref[q], q, err);
+  if (st) return st;
+  CK(cudaEventRecord(c->snap_ev, c->stream));
+  c->snap_n = n;
+  return WL_OK;
+}
+
+/* backend.h snapshot_wait. */
+static enum wl_status cuda_snapshot_wait(void *ctx, struct wl_particles *host, double *force,
+                                         double *moment, struct wl_error *err) {
+  struct gpu *c = (struct gpu *)ctx;
+  enum wl_status st = check_host(c, host, err);
+  if (st) return st;
+  CK(cudaEventSynchronize(c->snap_ev));
+  unstage(c, host);
+  for (int q = 0; q < c->snap_n; q++) {
+    force[q] = c->h_load[2 * q];
+    moment[q] = c->h_load[2 * q + 1];
+  }
   return WL_OK;
 }
 
@@ -1824,19 +2142,11 @@ static enum wl_status init_mode(void **ctx, const struct wl_sph_config *cfg,
   const int n = c->n, n_keys = 2 * c->grid.n_cells;
 
   /* what the run needs, against what the GPU has free */
-  {
-    const cudaError_t e = cub::DeviceScan::ExclusiveSum(NULL, c->sort_tmp_bytes, (int *)NULL,
-                                                        (int *)NULL, n_keys + 1);
-    if (e != cudaSuccess) {
-      cuda_free(c);
-      return wl_error_set(err, WL_EIO, "cuda backend: scan size query failed: %s",
-                          cudaGetErrorString(e));
-    }
-  }
+  c->bsum_bytes = sizeof(int) * (size_t)scan_blocks(n_keys + 1);
   const int shifting = k->shift_coef > 0;
   const int verlet = k->integrator == WL_SPH_VERLET;
   const size_t per = bytes_per_particle(dim, shifting, verlet);
-  const size_t need = per * (size_t)n + 2 * sizeof(int) * (size_t)(n_keys + 1) + c->sort_tmp_bytes +
+  const size_t need = per * (size_t)n + 2 * sizeof(int) * (size_t)(n_keys + 1) + c->bsum_bytes +
                       sizeof(struct dmeta) + sizeof(struct dstats);
   size_t free_b = 0, total_b = 0;
   {
@@ -1852,7 +2162,7 @@ static enum wl_status init_mode(void **ctx, const struct wl_sph_config *cfg,
   if (need + margin > free_b) {
     const size_t tot = total_b;
     const double need_mib = need / 1048576.0, free_mib = free_b / 1048576.0,
-                 sort_mib = c->sort_tmp_bytes / 1048576.0;
+                 sort_mib = c->bsum_bytes / 1048576.0;
     cuda_free(c);
     return wl_error_set(err, WL_ENOMEM,
                         "cuda backend: %d particles (%dD) need %.1f MiB of GPU memory (%zu B per "
@@ -1899,10 +2209,23 @@ static enum wl_status init_mode(void **ctx, const struct wl_sph_config *cfg,
   A(c->body_alt, n8, "body (sort copy)");
   A(c->begin, sizeof(int) * (size_t)(n_keys + 1), "cell index");
   A(c->count, sizeof(int) * (size_t)(n_keys + 1), "cell counts");
-  A(c->sort_tmp, c->sort_tmp_bytes, "sort scratch");
+  A(c->bsum, c->bsum_bytes, "sort scratch");
   A(c->meta, sizeof(struct dmeta), "configuration");
   A(c->stats, sizeof(struct dstats), "step record");
 #undef A
+  c->dl_bytes = download_bytes(dim, (size_t)n);
+  {
+    cudaError_t e = cudaMallocHost((void **)&c->h_dl, c->dl_bytes);
+    if (e == cudaSuccess)
+      e = cudaMallocHost((void **)&c->h_load, 2 * WL_SPH_SNAPSHOT_LOADS * sizeof(double));
+    if (e == cudaSuccess) e = cudaEventCreateWithFlags(&c->snap_ev, cudaEventDisableTiming);
+    if (e != cudaSuccess) {
+      const double mib = c->dl_bytes / 1048576.0;
+      cuda_free(c);
+      return wl_error_set(err, WL_ENOMEM, "cuda backend: the download staging (%.1f MiB pinned) "
+                          "or its event: %s", mib, cudaGetErrorString(e));
+    }
+  }
   for (int q = 0; q < 2; q++) {
     struct dstats **h = q ? &c->h_up : &c->h_stats;
     const cudaError_t e = cudaMallocHost((void **)h, sizeof **h);
@@ -1922,7 +2245,13 @@ static enum wl_status init_mode(void **ctx, const struct wl_sph_config *cfg,
                           cudaGetErrorString(e_), __FILE__, __LINE__);                           \
     }                                                                                            \
   } while (0)
-  C(cudaStreamCreateWithFlags(&c->stream, cudaStreamNonBlocking));
+  if (cfg->priority > 0) { /* backend.h: the run the others beside it wait for */
+    int least = 0, greatest = 0;
+    C(cudaDeviceGetStreamPriorityRange(&least, &greatest));
+    C(cudaStreamCreateWithPriority(&c->stream, cudaStreamNonBlocking, greatest));
+  } else {
+    C(cudaStreamCreateWithFlags(&c->stream, cudaStreamNonBlocking));
+  }
   struct dmeta m;
   memset(&m, 0, sizeof m);
   for (int a = 0; a < WL_SPH_DIM_MAX; a++) {
@@ -1949,7 +2278,8 @@ static enum wl_status init_mode(void **ctx, const struct wl_sph_config *cfg,
 #undef C
   /* forces of the initial state give the first dt (as the CPU backend);
    * then the steps are captured */
-  if ((st = rebuild(c, err)) || (st = evaluate(c, c->pos, c->vel, c->rho, err)) ||
+  if ((st = rebuild(c, REBUILD_KEYS | REBUILD_STEP, err)) ||
+      (st = evaluate(c, c->pos, c->vel, c->rho, err)) ||
       (st = enqueue_update(c, 0, err)) || (st = fetch_record(c, err)) ||
       (step_out_of(c, out), st = capture_steps(c, err))) {
     cuda_free(c);
@@ -1970,7 +2300,7 @@ static enum wl_status cuda_init(void **ctx, const struct wl_sph_config *cfg,
 
 extern "C" const struct wl_backend_ops wl_backend_cuda_ops = {
     "cuda", cuda_init, cuda_step, cuda_download, cuda_describe, cuda_free, cuda_wall_load,
-    cuda_run,
+    cuda_run, cuda_snapshot, cuda_snapshot_wait, cuda_run_start, cuda_run_finish,
 };
 #else
 /* The tests' build: one backend per force loop, for test_cuda_backend to
@@ -1985,7 +2315,7 @@ extern "C" const struct wl_backend_ops wl_backend_cuda_ops = {
   }                                                                                              \
   extern "C" const struct wl_backend_ops wl_backend_cuda_##loop##_ops = {                        \
       "cuda", init_##loop, cuda_step, cuda_download, cuda_describe, cuda_free, cuda_wall_load,   \
-      cuda_run,                                                                                  \
+      cuda_run, cuda_snapshot, cuda_snapshot_wait, cuda_run_start, cuda_run_finish,              \
   };
 TEST_OPS(ref, MODE_REF)
 TEST_OPS(fast, MODE_FAST)

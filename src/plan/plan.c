@@ -695,17 +695,28 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
                    (p->dims == 3 ? WL_PLAN_CPU_RATE_3D : WL_PLAN_CPU_RATE);
   const double gpu_rate = p->dims == 3 ? WL_PLAN_GPU_RATE_3D : WL_PLAN_GPU_RATE;
   const double gpu_step = gpu_step_seconds(p);
-  p->gpu_seconds = p->gpu_work_seconds = 0;
+  /* each case alone, then side by side as assess runs them on a GPU */
+  struct wl_plan_cost cases[2];
+  p->n_cases = 0;
+  p->gpu_work_seconds = 0;
   if (p->solitary.present) {
     const double work = p->solitary.particle_steps * p->evals_per_step / gpu_rate;
-    p->gpu_seconds += fmax(p->solitary.end_time / p->solitary.dt * gpu_step, work);
-    p->gpu_work_seconds += work;
+    cases[p->n_cases++] = (struct wl_plan_cost){
+        .gpu_seconds = fmax(p->solitary.end_time / p->solitary.dt * gpu_step, work),
+        .gpu_work_seconds = work};
   }
   if (p->explosion.present) {
     const double work = p->explosion.particle_steps * p->evals_per_step / gpu_rate;
-    p->gpu_seconds += fmax(p->explosion.end_time / p->explosion.dt * gpu_step, work);
-    p->gpu_work_seconds += work;
+    cases[p->n_cases++] = (struct wl_plan_cost){
+        .gpu_seconds = fmax(p->explosion.end_time / p->explosion.dt * gpu_step, work),
+        .gpu_work_seconds = work};
   }
+  for (int i = 0; i < p->n_cases; i++) {
+    p->gpu_case_seconds[i] = cases[i].gpu_seconds;
+    p->gpu_case_work_seconds[i] = cases[i].gpu_work_seconds;
+    p->gpu_work_seconds += cases[i].gpu_work_seconds;
+  }
+  p->gpu_seconds = wl_plan_gpu_side_by_side(cases, p->n_cases, p->n_cases);
   return WL_OK;
 }
 
@@ -724,7 +735,8 @@ enum wl_status wl_plan_ladder_cost(const struct wl_scenario *s, const struct wl_
   if (n == 0) return WL_OK;
   struct wl_scenario *sl = malloc(sizeof *sl);
   struct wl_plan *pl = malloc(sizeof *pl);
-  struct wl_plan_cost sum = {plan->dims, 0, 0, 0, 0, 0}, level[WL_SCENARIO_MAX_LEVELS];
+  struct wl_plan_cost sum = {plan->dims, 0, 0, 0, 0, 0}, run[2 * WL_SCENARIO_MAX_LEVELS];
+  int n_runs = 0;
   double steps = 0.0, device_total = 0.0;
   enum wl_status st = sl && pl ? WL_OK : wl_error_set(err, WL_ENOMEM, "no memory to plan the ladder");
   int ok = st == WL_OK;
@@ -739,7 +751,9 @@ enum wl_status wl_plan_ladder_cost(const struct wl_scenario *s, const struct wl_
       ok = 0;
       break;
     }
-    level[k] = wl_plan_cost_of(pl);
+    for (int c = 0; c < pl->n_cases; c++) /* a level's cases, each a run */
+      run[n_runs++] = (struct wl_plan_cost){.gpu_seconds = pl->gpu_case_seconds[c],
+                                            .gpu_work_seconds = pl->gpu_case_work_seconds[c]};
     device_total += pl->gpu_memory_bytes;
     sum.cpu_seconds += pl->cpu_seconds;
     sum.gpu_work_seconds += pl->gpu_work_seconds;
@@ -759,7 +773,16 @@ enum wl_status wl_plan_ladder_cost(const struct wl_scenario *s, const struct wl_
   if (!ok) return st;
   const int side_by_side = !s->resolution.target_error.given &&
                            device_total <= WL_PLAN_GPU_SIDE_BY_SIDE_MEMORY * WL_PLAN_GPU_BYTES;
-  sum.gpu_seconds = wl_plan_gpu_side_by_side(level, n, side_by_side ? n : 1);
+  /* side by side: every level of every case at once; else the levels one
+   * after the other, each level's cases side by side */
+  if (side_by_side) {
+    sum.gpu_seconds = wl_plan_gpu_side_by_side(run, n_runs, n_runs);
+  } else {
+    const int per_level = n_runs / n;
+    sum.gpu_seconds = 0.0;
+    for (int k = 0; k < n; k++)
+      sum.gpu_seconds += wl_plan_gpu_side_by_side(run + k * per_level, per_level, per_level);
+  }
   if (!brief && out)
     fprintf(out,
             "  all levels: %.3e particle-steps, about %.0f s on the CPU%s; %.0f s on an H100 "
@@ -767,22 +790,35 @@ enum wl_status wl_plan_ladder_cost(const struct wl_scenario *s, const struct wl_
             steps, sum.cpu_seconds,
             s->resolution.target_error.given ? " (less when target_error stops the ladder early)"
                                              : "",
-            sum.gpu_seconds, side_by_side ? "levels side by side" : "levels one after the other");
+            sum.gpu_seconds, side_by_side ? "every level of every case side by side" : "the levels one after the other");
   *cost = sum;
   return WL_OK;
 }
 
 double wl_plan_gpu_side_by_side(const struct wl_plan_cost *runs, int n, int width) {
-  double sum = 0.0, longest = 0.0, work = 0.0;
-  for (int i = 0; i < n; i++) {
-    sum += runs[i].gpu_seconds;
-    longest = fmax(longest, runs[i].gpu_seconds);
-    work += runs[i].gpu_work_seconds;
+  double sum = 0.0, work = 0.0;
+  for (int i = 0; i < n; i++) sum += runs[i].gpu_seconds, work += runs[i].gpu_work_seconds;
+  if (width > n) width = n;
+  double *left = width > 1 ? malloc((size_t)width * sizeof *left) : NULL;
+  if (!left) return sum; /* one at a time (or no memory: the dearer answer) */
+  /* processor sharing: the k runs on the GPU each advance by 1 / (1 + cost
+   * (k - 1)) of a second alone per second, until the first of them ends;
+   * the next run in order takes its place */
+  double t = 0.0;
+  int k = 0, next = 0;
+  while (next < n && k < width) left[k++] = runs[next++].gpu_seconds;
+  while (k > 0) {
+    double m = left[0];
+    for (int i = 1; i < k; i++) m = fmin(m, left[i]);
+    t += m * (1.0 + WL_PLAN_GPU_SHARE_COST * (k - 1));
+    int still = 0;
+    for (int i = 0; i < k; i++)
+      if (left[i] - m > 0.0) left[still++] = left[i] - m;
+    k = still;
+    while (next < n && k < width) left[k++] = runs[next++].gpu_seconds;
   }
-  const int k = width < n ? width : n;
-  if (k <= 1) return sum;
-  const double speedup = k / (1.0 + WL_PLAN_GPU_SHARE_COST * (k - 1));
-  return fmax(fmax(sum / speedup, longest), work);
+  free(left);
+  return fmax(t, work);
 }
 
 int wl_plan_gpu_side_by_side_width(double device_bytes, double gpu_bytes, int max_width) {

@@ -38,6 +38,16 @@ struct wl_sph_sim {
   long n_excluded;          /* fluid particles that left the domain box (sph/guard.h) */
   long n_fluid;             /* fluid particles of the run */
   struct body_motion motion[WL_SPH_BODIES_MAX + 1];
+  /* the wall loads the outputs asked for (wl_sph_sim_wall_load): a
+   * snapshot computes them for the next output */
+  int n_loads;
+  int load_body[WL_SPH_SNAPSHOT_LOADS];
+  double load_z[WL_SPH_SNAPSHOT_LOADS];
+  /* an output overlapped with the next block (backend.h snapshot): during
+   * it the state is the snapshot's; `pending`: that block is started and
+   * not yet finished */
+  int snap, snap_read, pending;
+  double snap_force[WL_SPH_SNAPSHOT_LOADS], snap_moment[WL_SPH_SNAPSHOT_LOADS];
 };
 
 static void motion_clear(struct body_motion *m) {
@@ -46,8 +56,18 @@ static void motion_clear(struct body_motion *m) {
   memset(m, 0, sizeof *m);
 }
 
+static void finish_pending(struct wl_sph_sim *sim) {
+  if (!sim->pending) return;
+  struct wl_sph_block_out out;
+  struct wl_error e;
+  wl_error_clear(&e);
+  sim->ops->run_finish(sim->ctx, &out, &e); /* a run that stopped: its steps are not taken */
+  sim->pending = 0;
+}
+
 void wl_sph_sim_free(struct wl_sph_sim *sim) {
   if (!sim) return;
+  finish_pending(sim);
   if (sim->ops && sim->ctx) sim->ops->free(sim->ctx);
   wl_particles_clear(&sim->host);
   for (int b = 0; b <= WL_SPH_BODIES_MAX; b++) motion_clear(&sim->motion[b]);
@@ -270,23 +290,42 @@ static int blocks_possible(const struct wl_sph_sim *sim) {
 /* Steps toward t_out in one block of the backend (backend.h run), with the
  * driver's state before and after it and the messages of wl_sph_sim_step;
  * *landed: the last step landed on t_out. */
+static void block_in_of(const struct wl_sph_sim *sim, double t_out, long max_steps,
+                        struct wl_sph_block_in *in) {
+  memset(in, 0, sizeof *in);
+  in->t = sim->t;
+  in->t_out = t_out;
+  in->dt_next = sim->dt_next;
+  in->dt_last = sim->dt_last;
+  in->dt_initial = sim->dt_initial;
+  in->step = sim->steps;
+  in->max_steps = max_steps;
+  in->n_excluded = sim->n_excluded;
+  in->n_fluid = sim->n_fluid;
+}
+
+/* The steps of a block toward t_out, rest = t_out - t ahead: about the
+ * steps to t_out, and one more for a split rest (a block that ends short
+ * of it is followed by another). */
+static long block_steps(double rest, double dt) {
+  const double est = rest / dt + 2;
+  return est < WL_SPH_BLOCK_STEPS ? (long)est : WL_SPH_BLOCK_STEPS;
+}
+
 static enum wl_status step_block(struct wl_sph_sim *sim, double t_out, long max_steps,
                                  int *landed, struct wl_error *err) {
   *landed = 0;
-  struct wl_sph_block_in in;
-  memset(&in, 0, sizeof in);
-  in.t = sim->t;
-  in.t_out = t_out;
-  in.dt_next = sim->dt_next;
-  in.dt_last = sim->dt_last;
-  in.dt_initial = sim->dt_initial;
-  in.step = sim->steps;
-  in.max_steps = max_steps;
-  in.n_excluded = sim->n_excluded;
-  in.n_fluid = sim->n_fluid;
   struct wl_sph_block_out out;
   memset(&out, 0, sizeof out);
-  enum wl_status st = sim->ops->run(sim->ctx, &in, &out, err);
+  enum wl_status st;
+  if (sim->pending) { /* started during the last output, with these t_out and max_steps */
+    sim->pending = 0;
+    st = sim->ops->run_finish(sim->ctx, &out, err);
+  } else {
+    struct wl_sph_block_in in;
+    block_in_of(sim, t_out, max_steps, &in);
+    st = sim->ops->run(sim->ctx, &in, &out, err);
+  }
   if (out.steps > 0) sim->host_valid = 0;
   if (st != WL_OK) {
     wl_error_prefix(err, "%s backend, t = %.6g s, step %ld: ", sim->ops->name, sim->t, sim->steps);
@@ -308,6 +347,39 @@ static enum wl_status step_block(struct wl_sph_sim *sim, double t_out, long max_
   case WL_SPH_BLOCK_LANDED: *landed = 1; break;
   default: break;
   }
+  return WL_OK;
+}
+
+/* A snapshot of the state for the output at the current time, and the
+ * next block (toward t_out, max_steps) started behind it (backend.h
+ * snapshot, run_start). */
+static enum wl_status overlap_start(struct wl_sph_sim *sim, double t_out, long max_steps,
+                                    struct wl_error *err) {
+  enum wl_status st = sim->ops->snapshot(sim->ctx, sim->n_loads, sim->load_body, sim->load_z, err);
+  if (st == WL_OK) {
+    struct wl_sph_block_in in;
+    block_in_of(sim, t_out, max_steps, &in);
+    st = sim->ops->run_start(sim->ctx, &in, err);
+    sim->pending = st == WL_OK;
+  }
+  if (st != WL_OK) {
+    wl_error_prefix(err, "%s backend, t = %.6g s, step %ld: ", sim->ops->name, sim->t, sim->steps);
+    return st;
+  }
+  sim->snap = 1;
+  sim->snap_read = 0;
+  sim->host_valid = 0;
+  return WL_OK;
+}
+
+/* The snapshot's state and loads, once (the output's first look). */
+static enum wl_status snapshot_read(struct wl_sph_sim *sim, struct wl_error *err) {
+  if (sim->snap_read) return WL_OK;
+  const enum wl_status st =
+      sim->ops->snapshot_wait(sim->ctx, &sim->host, sim->snap_force, sim->snap_moment, err);
+  if (st) return st;
+  sim->snap_read = 1;
+  sim->host_valid = 1;
   return WL_OK;
 }
 
@@ -344,11 +416,7 @@ enum wl_status wl_sph_sim_run(struct wl_sph_sim *sim, const struct wl_sph_run_op
     }
     int lands;
     if (blocks) {
-      /* about the steps to t_out, and one more for a split rest: a block
-       * that ends short of it is followed by another */
-      const double est = rest / dt + 2;
-      const long max_steps = est < WL_SPH_BLOCK_STEPS ? (long)est : WL_SPH_BLOCK_STEPS;
-      st = step_block(sim, t_out, max_steps, &lands, err);
+      st = step_block(sim, t_out, block_steps(rest, dt), &lands, err);
     } else {
       const double dt_max = wl_sph_dt_toward(rest, dt, &lands);
       st = wl_sph_sim_step(sim, dt_max, err);
@@ -356,7 +424,19 @@ enum wl_status wl_sph_sim_run(struct wl_sph_sim *sim, const struct wl_sph_run_op
     if (st != WL_OK) break;
     if (lands) {
       sim->t = t_out; /* exact, against rounding of t + dt */
-      if (o->output) st = o->output(o->user, sim, sim->t, err);
+      if (o->output) {
+        /* the next block runs on the GPU while the host samples this
+         * output from a snapshot: the block the next pass of this loop
+         * would start, with the same t_out and step count */
+        double t_next = o->output_dt > 0 ? t0 + (double)(m + 1) * o->output_dt : o->t_end;
+        if (t_next > o->t_end) t_next = o->t_end;
+        if (blocks && sim->ops->snapshot && sim->t < o->t_end && t_next - sim->t > 0)
+          st = overlap_start(sim, t_next, block_steps(t_next - sim->t, sim->dt_next), err);
+        if (st == WL_OK) st = o->output(o->user, sim, sim->t, err);
+        sim->snap = 0;
+        sim->host_valid = 0;
+        if (st != WL_OK) finish_pending(sim);
+      }
       m++;
     }
     if (o->progress) {
@@ -381,6 +461,7 @@ enum wl_status wl_sph_sim_run(struct wl_sph_sim *sim, const struct wl_sph_run_op
 }
 
 const struct wl_particles *wl_sph_sim_particles(struct wl_sph_sim *sim, struct wl_error *err) {
+  if (sim->snap) return snapshot_read(sim, err) ? NULL : &sim->host;
   if (!sim->host_valid) {
     if (sim->ops->download(sim->ctx, &sim->host, err) != WL_OK) return NULL;
     sim->host_valid = 1;
@@ -397,6 +478,23 @@ enum wl_status wl_sph_sim_wall_load(struct wl_sph_sim *sim, int body, double z_r
   if (!sim->ops->wall_load)
     return wl_error_set(err, WL_EUNSUPPORTED, "sph: the %s backend has no wall load",
                         sim->ops->name);
+  int q = 0;
+  while (q < sim->n_loads && !(sim->load_body[q] == body && sim->load_z[q] == z_ref)) q++;
+  if (sim->snap) { /* during an overlapped output: the snapshot computed the loads asked before */
+    if (q == sim->n_loads)
+      return wl_error_set(err, WL_EUNSUPPORTED, "sph: the wall load of body %d about z = %g m was "
+                          "not asked for at the first output, so no snapshot has it", body, z_ref);
+    const enum wl_status st = snapshot_read(sim, err);
+    if (st) return st;
+    *force = sim->snap_force[q];
+    *moment = sim->snap_moment[q];
+    return WL_OK;
+  }
+  if (q == sim->n_loads && q < WL_SPH_SNAPSHOT_LOADS) {
+    sim->load_body[q] = body;
+    sim->load_z[q] = z_ref;
+    sim->n_loads++;
+  }
   const enum wl_status st = sim->ops->wall_load(sim->ctx, body, z_ref, force, moment, err);
   if (st) *force = *moment = 0.0;
   return st;

@@ -41,12 +41,19 @@ struct wl_store {
 };
 
 void wl_store_hdf5_init(void) {
-  static int done = 0;
+  /* per thread: a thread-safe HDF5 keeps the error printing setting of
+   * each thread's default error stack (cases run side by side, assess.c) */
+  static _Thread_local int done = 0;
   if (done) return;
   done = 1;
   /* before any other HDF5 call (later it is refused, harmlessly) */
   H5dont_atexit();
   H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+}
+
+int wl_store_thread_safe(void) {
+  hbool_t safe = 0;
+  return H5is_library_threadsafe(&safe) >= 0 && safe;
 }
 
 /* ---- reasons ------------------------------------------------------------------ */
