@@ -2,7 +2,7 @@
 # cli_sweep_price.sh: `wallload check` prices a sweep on the CPU as the sum
 # of its cases, each priced as `check` prices that case's scenario alone
 # (issue 21), and on a GPU as the cases run there, side by side: with k on
-# the GPU each advances at 1 / (1 + 0.15 (k - 1)) of its speed alone
+# the GPU each advances at 1 / (1 + 0.064 (k - 1)) of its speed alone
 # (processor sharing, plan.h WL_PLAN_GPU_SHARE_COST; the tiny cases' force
 # loops are far from the bound of their work), computed here from the cases
 # priced alone. The scenarios alone are written by tests/sweep_alone.py,
@@ -43,7 +43,7 @@ import sys
 left, t = [float(x) for x in sys.argv[1:]], 0.0
 while left:  # all four on the GPU until the shortest ends, and so on
     m = min(left)
-    t += m * (1 + 0.15 * (len(left) - 1))
+    t += m * (1 + 0.064 * (len(left) - 1))
     left = [x - m for x in left if x - m > 0]
 print(t)
 PY

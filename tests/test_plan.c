@@ -157,41 +157,44 @@ int main(void) {
     wl_scenario_clear(&sw);
   }
   /* Runs side by side on one GPU (plan.h wl_plan_gpu_side_by_side) against
-   * the measured 16-case sweep of seawall-sweep.yaml (BENCHMARKS.md,
-   * "Sweeps", H200, 2026-11-26): its cases took 9.4 to 15.6 s alone, 197.4 s
-   * one after the other, 49.4 s 8 at a time and 42.0 s 16 at a time. The
-   * cases' times here are spread evenly over that range with the measured
-   * sum; within 10 % of each measured sweep. */
+   * the measured sweep of seawall-sweep.yaml (BENCHMARKS.md, "Sweeps", H100,
+   * 2026-11-26): its 16 cases alone took these times one after the other
+   * (73.5 s) and 24.8 s side by side. The force loops' work of the 16 at
+   * the full rate (8.91 s, their plans') is the model's input; within 10 %
+   * of the measured sweep. */
   {
+    static const double alone[16] = {4.17, 4.69, 5.31, 5.83, 4.18, 4.33, 5.05, 5.46,
+                                     3.70, 4.17, 4.69, 5.15, 3.42, 3.99, 4.40, 4.96};
     struct wl_plan_cost runs[16];
-    double sum = 0.0;
     for (int i = 0; i < 16; i++) {
       memset(&runs[i], 0, sizeof runs[i]);
-      runs[i].gpu_seconds = 9.4 + (15.6 - 9.4) * i / 15.0;
-      sum += runs[i].gpu_seconds;
+      runs[i].gpu_seconds = alone[i];
+      runs[i].gpu_work_seconds = 8.91 / 16;
     }
-    for (int i = 0; i < 16; i++) runs[i].gpu_seconds *= 197.4 / sum;
-    CHECK_REL(wl_plan_gpu_side_by_side(runs, 16, 1), 197.4, 1e-12,
+    CHECK_REL(wl_plan_gpu_side_by_side(runs, 16, 1), 73.5, 1e-12,
               "one at a time: the cases' times added");
-    CHECK_REL(wl_plan_gpu_side_by_side(runs, 16, 8), 49.4, 0.10,
-              "8 side by side vs the measured sweep (BENCHMARKS.md, Sweeps)");
-    CHECK_REL(wl_plan_gpu_side_by_side(runs, 16, 16), 42.0, 0.10,
+    CHECK_REL(wl_plan_gpu_side_by_side(runs, 16, 16), 24.8, 0.10,
               "16 side by side vs the measured sweep (BENCHMARKS.md, Sweeps)");
-    /* processor sharing by hand: runs of 1 s and 3 s alone side by side
-     * share the GPU for 1 s of the first's (1.15 s), then the second runs
-     * alone for its remaining 2 s: 3.15 s; two equal runs of 2 s: 2.3 s */
+    /* processor sharing by hand (cost 0.064 a run beside): runs of 1 s and
+     * 3 s alone share the GPU for 1 s of the first's (1.064 s), then the
+     * second runs alone for its remaining 2 s; two equal runs of 2 s take
+     * 2 x 1.064 s together */
     struct wl_plan_cost two[2];
     memset(two, 0, sizeof two);
     two[0].gpu_seconds = 1.0, two[1].gpu_seconds = 3.0;
-    CHECK_REL(wl_plan_gpu_side_by_side(two, 2, 2), 1.15 + 2.0, 1e-12,
-              "1 s beside 3 s: 1.15 s shared, then 2 s alone");
+    CHECK_REL(wl_plan_gpu_side_by_side(two, 2, 2), 1.064 + 2.0, 1e-12,
+              "1 s beside 3 s: 1.064 s shared, then 2 s alone");
     two[0].gpu_seconds = two[1].gpu_seconds = 2.0;
-    CHECK_REL(wl_plan_gpu_side_by_side(two, 2, 2), 2.3, 1e-12, "two equal runs of 2 s: 2.3 s");
+    CHECK_REL(wl_plan_gpu_side_by_side(two, 2, 2), 2.128, 1e-12, "two equal runs of 2 s");
     CHECK_REL(wl_plan_gpu_side_by_side(two, 2, 1), 4.0, 1e-12, "one at a time: 4 s");
-    /* never below the force loops' work of all of them */
-    for (int i = 0; i < 16; i++) runs[i].gpu_work_seconds = 9.0;
+    /* never below the force loops' work: small (latency-bound) runs at
+     * 0.37 of the full rate together, large runs at the full rate */
+    for (int i = 0; i < 16; i++) runs[i].gpu_seconds = 10.0, runs[i].gpu_work_seconds = 9.0;
+    CHECK_REL(wl_plan_gpu_side_by_side(runs, 16, 16), 16 * 9.0 / 0.37, 1e-12,
+              "latency-bound runs: their work at the shared efficiency");
+    for (int i = 0; i < 16; i++) runs[i].gpu_seconds = runs[i].gpu_work_seconds = 9.0;
     CHECK_REL(wl_plan_gpu_side_by_side(runs, 16, 16), 16 * 9.0, 1e-12,
-              "work-bound cases: their work added");
+              "rate-bound runs: their work added");
     /* how many fit: half of the GPU's memory */
     CHECK_TRUE(wl_plan_gpu_side_by_side_width(10e9, 80e9, 16) == 4, "4 runs of 10 GB in half of 80 GB");
     CHECK_TRUE(wl_plan_gpu_side_by_side_width(1e6, 80e9, 16) == 16, "at most the given width");

@@ -278,11 +278,18 @@ enum wl_status wl_plan_ladder_cost(const struct wl_scenario *s, const struct wl_
 /* A small flume's step is a few latency-bound kernels that leave the GPU
  * mostly idle, so runs share it well: with k runs on it each advances at
  * 1 / (1 + WL_PLAN_GPU_SHARE_COST (k - 1)) of its speed alone (processor
- * sharing), and a waiting run starts as one ends. Never less than the
- * force loops' work of all of them at the full rate. Fitted to the 16-case
- * sweep of BENCHMARKS.md ("Sweeps"): 16 at a time took 42.0 s, 8 at a time
- * 49.4 s, one after the other 197.4 s; the model gives 42.7 and 53.0 s. */
-#define WL_PLAN_GPU_SHARE_COST 0.15
+ * sharing), and a waiting run starts as one ends; but many small runs
+ * together reach only WL_PLAN_GPU_SHARED_EFFICIENCY of the force loop's
+ * rate on one large run (each runs its own sort and small kernels), which
+ * bounds the time from below (a large run, at that rate alone, counts its
+ * work at the full rate). Measured on the H100, 2026-11-26
+ * (BENCHMARKS.md, "Sweeps"): seawall.yaml's explosion's finest level
+ * stepped 1.32 times slower beside its ladder's five other runs (0.064);
+ * seawall-sweep.yaml's 16 cases took 73.5 s one after the other and 24.8 s
+ * side by side, a 64-case version 93.7 s, 2.7 times their force loops' work
+ * at the full rate (0.37). */
+#define WL_PLAN_GPU_SHARE_COST 0.064
+#define WL_PLAN_GPU_SHARED_EFFICIENCY 0.37
 
 /* The GPU time of n runs (each costed alone in runs[i]) run at most
  * `width` at a time on one GPU, in order, a new one starting as one ends. */
