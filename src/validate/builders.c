@@ -385,11 +385,34 @@ static enum wl_status run_dambreak(const struct wl_val_case *c, const struct wl_
 #define ZHOU_RUNNING_MEAN 0.010
 #define ZHOU_TOL_TENSION 1.0
 
+/* Series columns: the gauges, the judged P2 (probe), and two readings that
+ * tell a probe artefact from the flow itself: the pressure the wall
+ * particles carry over the sensor's window (sph/wall.h: the pressure that
+ * pushes the fluid off the wall, and what OpenMPS reads as P2) and the
+ * height of the water standing at the wall. */
+enum { ZHOU_H1, ZHOU_H2, ZHOU_P2, ZHOU_P2_WALL, ZHOU_H_WALL, ZHOU_K };
+
 struct zhou {
   double dp;
   struct wl_sph_probe *probe;
-  struct wl_val_series s; /* t, h1, h2, p2 */
+  struct wl_val_series s; /* ZHOU_K columns */
 };
+
+/* Mean pressure [Pa] of the wall particles of the impact wall's first layer
+ * (x in (-dp, 0)) within the sensor's window; 0 when none is there. A wall
+ * particle's density is the Tait density of its pressure (sph/wall.h), so
+ * the pressure is read back from it. */
+static double zhou_wall_pressure(const struct wl_particles *p, const struct wl_sph_const *k,
+                                 double dp) {
+  const double z0 = ZHOU_Z_P2 - 0.5 * ZHOU_P2_WINDOW, z1 = ZHOU_Z_P2 + 0.5 * ZHOU_P2_WINDOW;
+  double s = 0;
+  int n = 0;
+  for (int i = 0; i < p->n_bound; i++) {
+    const double x = p->pos[0][i], z = p->pos[1][i];
+    if (x < 0 && x > -dp && z >= z0 && z <= z1) s += wl_sph_eos_p(k, p->rho[i]), n++;
+  }
+  return n ? s / n : 0;
+}
 
 static enum wl_status zhou_out(void *user, struct wl_sph_sim *sim, double t, struct wl_error *err) {
   struct zhou *z = user;
@@ -397,9 +420,11 @@ static enum wl_status zhou_out(void *user, struct wl_sph_sim *sim, double t, str
   if (!p) return err->status;
   enum wl_status st = wl_sph_probe_index(z->probe, p, err);
   if (st) return st;
-  double y[3];
-  y[0] = wl_val_wetted_length(z->probe, 2, ZHOU_X_H1, 0, 3 * ZHOU_COL_H, z->dp);
-  y[1] = wl_val_wetted_length(z->probe, 2, ZHOU_X_H2, 0, 3 * ZHOU_COL_H, z->dp);
+  double y[ZHOU_K];
+  y[ZHOU_H1] = wl_val_wetted_length(z->probe, 2, ZHOU_X_H1, 0, 3 * ZHOU_COL_H, z->dp);
+  y[ZHOU_H2] = wl_val_wetted_length(z->probe, 2, ZHOU_X_H2, 0, 3 * ZHOU_COL_H, z->dp);
+  y[ZHOU_H_WALL] = wl_val_wetted_length(z->probe, 2, 0.5 * z->dp, 0, 3 * ZHOU_COL_H, z->dp);
+  y[ZHOU_P2_WALL] = zhou_wall_pressure(p, wl_sph_sim_const(sim), z->dp);
   /* sensor: mean over its window, half a spacing off the face (assess's
    * probe placement); dry points read 0 */
   double ps = 0;
@@ -411,7 +436,7 @@ static enum wl_status zhou_out(void *user, struct wl_sph_sim *sim, double t, str
     wl_sph_probe_interp(z->probe, x, NULL, &pr);
     ps += pr;
   }
-  y[2] = ps / n_pts;
+  y[ZHOU_P2] = ps / n_pts;
   return wl_val_series_push(&z->s, t, y, err);
 }
 
@@ -435,7 +460,7 @@ static enum wl_status run_zhou(const struct wl_val_case *c, const struct wl_val_
     st = tank_build(&tk, dp, ZHOU_COL_H, ctx, ZHOU_TANK - ZHOU_COL_W, ZHOU_TANK,
                     ZHOU_COL_H, NULL, NULL, 0, &cfg, &init, err);
   struct zhou z = {dp, NULL, {0}};
-  z.s.k = 3;
+  z.s.k = ZHOU_K;
   if (!st) st = wl_sph_probe_alloc(&z.probe, &cfg, err);
   if (!st) st = wl_val_run_sim(ctx, &cfg, &init, t_end, ZHOU_OUTPUT_DT, zhou_out, &z, lv, err);
   wl_particles_clear(&init);
@@ -449,7 +474,7 @@ static enum wl_status run_zhou(const struct wl_val_case *c, const struct wl_val_
     p_f = malloc(sizeof(double) * (size_t)(z.s.n + 1));
     double *p_raw = malloc(sizeof(double) * (size_t)(z.s.n + 1));
     if (!p_f || !p_raw) st = wl_error_set(err, WL_ENOMEM, "validate: no memory");
-    for (int i = 0; !st && i < z.s.n; i++) p_raw[i] = z.s.y[(size_t)i * 3 + 2];
+    for (int i = 0; !st && i < z.s.n; i++) p_raw[i] = z.s.y[(size_t)i * ZHOU_K + ZHOU_P2];
     struct wl_sph_const k; /* the run's constants: its c0 sets the cutoff */
     if (!st) st = wl_sph_const_make(&cfg.prm, &k, err);
     if (!st && z.s.n > 8)
@@ -465,7 +490,8 @@ static enum wl_status run_zhou(const struct wl_val_case *c, const struct wl_val_
      * a front passing a gauge is sharper in time than the pressure rise at
      * P2, which depends on how the thin front piles up at the wall) */
     const double te_arr = wl_val_first_above(h2.x, h2.y, h2.n, 1, ZHOU_ARRIVAL * ZHOU_COL_H);
-    const double tm_arr = wl_val_first_above(z.s.t, z.s.y + 1, z.s.n, 3, ZHOU_ARRIVAL * ZHOU_COL_H);
+    const double tm_arr =
+        wl_val_first_above(z.s.t, z.s.y + ZHOU_H2, z.s.n, ZHOU_K, ZHOU_ARRIVAL * ZHOU_COL_H);
     const double shift = tm_arr - te_arr; /* experiment time + shift = model time */
     for (int j = 0; j < 3; j++)
       for (int i = 0; i < tabs[j]->n; i++) tabs[j]->x[i] += shift;
@@ -475,7 +501,8 @@ static enum wl_status run_zhou(const struct wl_val_case *c, const struct wl_val_
       ym[j] = malloc(sizeof(double) * (size_t)(z.s.n + 1));
       if (!ym[j]) ok = 0;
       else
-        for (int i = 0; i < z.s.n; i++) ym[j][i] = j == 2 ? p_f[i] : z.s.y[(size_t)i * 3 + (size_t)j];
+        for (int i = 0; i < z.s.n; i++)
+          ym[j][i] = j == 2 ? p_f[i] : z.s.y[(size_t)i * ZHOU_K + (size_t)j];
     }
     if (!ok) {
       st = wl_error_set(err, WL_ENOMEM, "validate: no memory");
@@ -518,7 +545,7 @@ static enum wl_status run_zhou(const struct wl_val_case *c, const struct wl_val_
       if (!rm_m || !rm_e) {
         st = wl_error_set(err, WL_ENOMEM, "validate: no memory");
       } else {
-        wl_val_running_mean(z.s.t, z.s.y + 2, z.s.n, 3, ZHOU_RUNNING_MEAN, rm_m);
+        wl_val_running_mean(z.s.t, z.s.y + ZHOU_P2, z.s.n, ZHOU_K, ZHOU_RUNNING_MEAN, rm_m);
         wl_val_running_mean(p2.x, p2.y, p2.n, 1, ZHOU_RUNNING_MEAN, rm_e);
         const double tm_p = wl_val_first_above(z.s.t, rm_m, z.s.n, 1, pa);
         const double te_pr = wl_val_first_above(p2.x, rm_e, p2.n, 1, pa);
@@ -528,13 +555,28 @@ static enum wl_status run_zhou(const struct wl_val_case *c, const struct wl_val_
         const double pk_e = wl_val_window_max(p2.x, rm_e, p2.n, 1, 0, t1);
         wl_val_rel(&lv->m[9], "P2 peak (10 ms running mean)", "Pa", pk_m, pk_e, ZHOU_TOL_P);
         double pmin = INFINITY;
-        for (int i = 0; i < z.s.n; i++) pmin = fmin(pmin, z.s.y[(size_t)i * 3 + 2]);
+        for (int i = 0; i < z.s.n; i++) pmin = fmin(pmin, z.s.y[(size_t)i * ZHOU_K + ZHOU_P2]);
         wl_val_ratio(&lv->m[10], "largest tension P2 / rho g H", "Pa", fmax(0.0, -pmin), rgh,
                      ZHOU_TOL_TENSION);
+        /* Reported, not judged (reference/zhou1999/README.md): the plateau
+         * window's mean of the wall particles' own pressure against the
+         * data (the probe reads the fluid half a spacing off the face: the
+         * two agreeing rules out the probe as the cause of a plateau
+         * error), and of the water standing at the wall, as its
+         * hydrostatic pressure at the sensor against the probe's plateau:
+         * below 1 the water at the wall is a run-up sheet, not a
+         * column at rest. */
+        const double w0 = te_p + ZHOU_PLATEAU_T0, w1 = te_p + ZHOU_PLATEAU_T1;
+        const double pw = wl_val_window_mean(z.s.t, z.s.y + ZHOU_P2_WALL, z.s.n, ZHOU_K, w0, w1);
+        const double hw = wl_val_window_mean(z.s.t, z.s.y + ZHOU_H_WALL, z.s.n, ZHOU_K, w0, w1);
+        wl_val_rel(&lv->m[11], "P2 plateau, wall particles' pressure", "Pa", pw,
+                   ne ? se / ne : NAN, NAN);
+        wl_val_ratio(&lv->m[12], "P2 plateau / rho g (h_wall - z_P2)", "Pa", nm ? sm / nm : NAN,
+                     cfg.prm.rho0 * G * fmax(0.0, hw - ZHOU_Z_P2), NAN);
       }
       free(rm_m);
       free(rm_e);
-      lv->n_metrics = st ? 7 : 11;
+      lv->n_metrics = st ? 7 : 13;
       if (!isfinite(shift))
         snprintf(lv->message, sizeof lv->message,
                  "no arrival at H2 above %.3f m within the run", ZHOU_ARRIVAL * ZHOU_COL_H);
