@@ -195,9 +195,9 @@ static inline void wl_plan_default_numerics(struct wl_sph_params *prm) {
  * the 3D one of 1.03M with the split loop). A run alone takes the larger of
  * the two times; runs side by side (a scenario's cases, a ladder's levels,
  * a sweep's cases) are priced by wl_plan_gpu_side_by_side. The Verlet step
- * alone: 46 us (seawall.yaml's solitary case alone at dp = 0.012 m); the
- * symplectic step alone is that times the ratio of the two integrators'
- * steps measured beside each other at dp = 0.0125 m (83 against 53 us). */
+ * is seawall.yaml's solitary case alone at dp = 0.012 m; the symplectic
+ * step that times the ratio of the two integrators' steps measured beside
+ * each other at dp = 0.0125 m. */
 #define WL_PLAN_GPU_STEP_S 7.3e-5
 #define WL_PLAN_GPU_STEP_S_VERLET 4.6e-5
 #define WL_PLAN_GPU_RATE 2.70e9
@@ -282,12 +282,10 @@ enum wl_status wl_plan_ladder_cost(const struct wl_scenario *s, const struct wl_
  * together reach only WL_PLAN_GPU_SHARED_EFFICIENCY of the force loop's
  * rate on one large run (each runs its own sort and small kernels), which
  * bounds the time from below (a large run, at that rate alone, counts its
- * work at the full rate). Measured on the H100, 2026-11-26
- * (BENCHMARKS.md, "Sweeps"): seawall.yaml's explosion's finest level
- * stepped 1.32 times slower beside its ladder's five other runs (0.064);
- * seawall-sweep.yaml's 16 cases took 73.5 s one after the other and 24.8 s
- * side by side, a 64-case version 93.7 s, 2.7 times their force loops' work
- * at the full rate (0.37). */
+ * work at the full rate). Both fitted on the H100 (BENCHMARKS.md,
+ * "Sweeps"): the cost to the main job's finest explosion level of its
+ * ladder's five other runs beside it, and seawall-sweep.yaml's sweeps
+ * against their force loops' work; test_plan holds the model to them. */
 #define WL_PLAN_GPU_SHARE_COST 0.064
 #define WL_PLAN_GPU_SHARED_EFFICIENCY 0.37
 
