@@ -385,20 +385,23 @@ __global__ void k_scatter(const unsigned int *__restrict__ key, const int *__res
 /* Range of key k of perm into ascending order: up to CELLSORT_REG entries
  * (a 2D cell holds ~8) by an unrolled odd-even transposition sort in
  * registers (an array indexed at run time lives in local memory, whose
- * round trips made this the step's slowest sort kernel), up to
- * CELLSORT_LOCAL (3D cells, ~30) by insertion in a local array, in place
- * beyond. In a step the block sums go to 0 for the step's update to count
- * anew (k_update; the scatter left count at 0); a rebuild outside a step
- * (wall_load: the next step sorts the same state) gives count back. */
-enum { CELLSORT_REG = 16, CELLSORT_LOCAL = 48 };
+ * round trips made this the step's slowest sort kernel); longer ranges
+ * (3D cells hold ~30-40) are left to k_cellsort_warp when `by_warp`, else
+ * (2D, where they are rare) sorted here, by insertion in a local array up
+ * to CELLSORT_LOCAL and in place beyond. In a step the block sums go to 0
+ * for the step's update to count anew (k_update; the scatter left count at
+ * 0); a rebuild outside a step (wall_load: the next step sorts the same
+ * state) gives count back. */
+enum { CELLSORT_REG = 16, CELLSORT_LOCAL = 48, CELLSORT_WARP = 64 };
 __global__ void k_cellsort(const int *__restrict__ begin, unsigned int *perm, int n_keys,
-                           int *count, int *bsum, int step, const struct dstats *st) {
+                           int *count, int *bsum, int step, int by_warp,
+                           const struct dstats *st) {
   const int k = tid();
   if (k >= n_keys || st->plan.stop) return;
   const int b = begin[k], m = begin[k + 1] - b;
   if (!step) count[k] = m;
   else if (k % SCAN_THREADS == 0) bsum[k / SCAN_THREADS] = 0;
-  if (m < 2) return;
+  if (m < 2 || (by_warp && m > CELLSORT_REG)) return;
   unsigned int *p = perm + b;
   if (m <= CELLSORT_REG) {
     unsigned v[CELLSORT_REG];
@@ -426,6 +429,41 @@ __global__ void k_cellsort(const int *__restrict__ begin, unsigned int *perm, in
     }
     for (int a = 0; a < m; a++) p[a] = v[a];
   } else {
+    for (int a = 1; a < m; a++) {
+      const unsigned x = p[a];
+      int c = a;
+      for (; c > 0 && p[c - 1] > x; c--) p[c] = p[c - 1];
+      p[c] = x;
+    }
+  }
+}
+
+/* The ranges longer than CELLSORT_REG, one warp each: every lane holds up
+ * to two of the range's (distinct) indices and counts how many of the
+ * range's are smaller, its index's place in ascending order; one thread
+ * inserts beyond CELLSORT_WARP. The same order as k_cellsort's, in a
+ * fraction of the time where most cells are long (one thread a 3D cell,
+ * its insertion through local memory, was a tenth of the 3D step). */
+__global__ void k_cellsort_warp(const int *__restrict__ begin, unsigned int *perm, int n_keys,
+                                const struct dstats *st) {
+  const int k = (int)((blockIdx.x * blockDim.x + threadIdx.x) >> 5), lane = threadIdx.x & 31;
+  if (k >= n_keys || st->plan.stop) return; /* the whole warp */
+  const int b = begin[k], m = begin[k + 1] - b;
+  if (m <= CELLSORT_REG) return;
+  unsigned int *p = perm + b;
+  if (m <= CELLSORT_WARP) {
+    const unsigned v0 = lane < m ? p[lane] : 0xffffffffu; /* pads: larger than any index */
+    const unsigned v1 = lane + 32 < m ? p[lane + 32] : 0xffffffffu;
+    int r0 = 0, r1 = 0;
+    for (int j = 0; j < 32; j++) {
+      const unsigned a = __shfl_sync(0xffffffffu, v0, j), c = __shfl_sync(0xffffffffu, v1, j);
+      r0 += (a < v0) + (c < v0);
+      r1 += (a < v1) + (c < v1);
+    }
+    __syncwarp();
+    if (lane < m) p[r0] = v0;
+    if (lane + 32 < m) p[r1] = v1;
+  } else if (lane == 0) {
     for (int a = 1; a < m; a++) {
       const unsigned x = p[a];
       int c = a;
@@ -1453,9 +1491,16 @@ static enum wl_status rebuild(struct gpu *c, int how, struct wl_error *err) {
   CKL("scan");
   k_scatter<<<blocks(n), THREADS, 0, c->stream>>>(c->key, c->begin, c->count, perm, n, c->stats);
   CKL("scatter");
+  /* 3D cells are long: their ranges go one warp each */
   k_cellsort<<<blocks(n_keys), THREADS, 0, c->stream>>>(c->begin, perm, n_keys, c->count, c->bsum,
-                                                        (how & REBUILD_STEP) != 0, c->stats);
+                                                        (how & REBUILD_STEP) != 0, dim == 3,
+                                                        c->stats);
   CKL("cell sort");
+  if (dim == 3) {
+    k_cellsort_warp<<<(int)(((long)n_keys * 32 + THREADS - 1) / THREADS), THREADS, 0,
+                      c->stream>>>(c->begin, perm, n_keys, c->stats);
+    CKL("cell sort, long ranges");
+  }
   struct permute_args a;
   memset(&a, 0, sizeof a);
   a.perm = perm;
