@@ -40,6 +40,13 @@ struct wl_isph_opts {
    * 1 (default, -1 to turn off) puts it at the fluid's edge dp/2 outside,
    * p_s = rho0 max(0, -g.n) dp/2 (docs/isph.md, "free surface") */
   int surface_offset;
+  /* The density-invariant source (Shao & Lo 2003; Hu & Adams 2007; as the
+   * relaxed form of Asai et al. 2012): the PPE's right-hand side carries
+   * alpha (rho_i - rho_ref)/(rho_ref dt^2) rho0 for every interior particle
+   * compressed beyond the rest lattice, rho_i its summation density; alpha
+   * is this relaxation per step (0: 0.05; negative: off). docs/isph.md,
+   * "density-invariant correction". */
+  double density_relax;
   /* Debug: write the PPE (Matrix Market, rows scaled, and its right-hand
    * side) of step dump_step to dump_path(.mtx, .rhs); NULL: never. */
   const char *dump_path;

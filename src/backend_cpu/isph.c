@@ -56,6 +56,8 @@ struct isph {
   int row_max;
   /* per particle */
   double *ustar[WL_SPH_DIM_MAX], *minv, *pfix, *press, *divu, *rhs, *fmax2;
+  double *derr; /* relative compression beyond the rest lattice (>= 0), per particle */
+  double wsum_ref; /* wl_isph_lattice_sum */
   unsigned char *fixed, *dry;
   double *gprev; /* lagged grad p (x, y, z) per particle */
   /* the PPE: rows of row_max slots (assembly), then CSR */
@@ -421,9 +423,11 @@ static enum wl_status project(struct isph *c, const struct wl_sph_step_in *in, d
       c->fixed[i] = 0;
       c->pfix[i] = 0;
       c->fmax2[i] = 0;
+      c->derr[i] = 0;
       continue;
     }
     if (p->body[i] == WL_SPH_BODY_EXCLUDED) {
+      c->derr[i] = 0;
       for (int a = 0; a < dim; a++) c->ustar[a][i] = 0;
       c->fixed[i] = 1;
       c->pfix[i] = 0;
@@ -435,6 +439,10 @@ static enum wl_status project(struct isph *c, const struct wl_sph_step_in *in, d
     wl_isph_geometry(dim, k, g, &v, nu4, i, &geo);
     memcpy(&c->minv[6 * (size_t)i], geo.minv, sizeof geo.minv);
     const int surf = geo.div_r < c->tfs;
+    /* the density-invariant source: compression only (a particle near the
+     * free surface has a cut support and a low sum, which is no expansion) */
+    const double e = geo.wsum / c->wsum_ref - 1.0;
+    c->derr[i] = !surf && e > 0 ? e : 0.0;
     c->fixed[i] = (unsigned char)surf;
     n_surface += surf;
     /* p_s: the hydrostatic pressure dp/2 under the fluid's edge along -n */
@@ -450,6 +458,10 @@ static enum wl_status project(struct isph *c, const struct wl_sph_step_in *in, d
     c->fmax2[i] = f2;
   }
   c->stats.n_surface = n_surface;
+  /* the density-invariant source enters as a divergence: lap p = rho0/dt
+   * (div u* - alpha (rho_i/rho_ref - 1)/dt) asks u^{n+1} to expand the
+   * particle's neighbourhood by alpha of its compression in this step */
+  const double relax = c->o.density_relax > 0 ? c->o.density_relax : 0.0;
   /* 2. div u* (once), then rounds of: the rows, the solve, the walls'
    * active set (a wall particle pulls on no fluid: one whose pressure
    * comes out negative is held at p = 0, and released when the fluid's
@@ -457,7 +469,8 @@ static enum wl_status project(struct isph *c, const struct wl_sph_step_in *in, d
    * first round starts from last step's set and pressure. */
 #pragma omp parallel for schedule(dynamic, 256) num_threads(threads(c))
   for (int i = nb; i < n; i++)
-    c->divu[i] = !c->fixed[i] ? wl_isph_div_ustar(dim, k, g, &v, i) : 0.0;
+    c->divu[i] = !c->fixed[i] ? wl_isph_div_ustar(dim, k, g, &v, i) - relax * c->derr[i] / dt
+                              : 0.0;
   for (int i = 0; i < nb; i++) c->fixed[i] = c->dry[i];
   /* the lagged gradient of the consistent Laplacian (wl_isph_ppe_row) */
 #pragma omp parallel for schedule(dynamic, 256) num_threads(threads(c))
@@ -565,6 +578,7 @@ static void isph_free(void *ctx) {
   free(c->divu);
   free(c->rhs);
   free(c->fmax2);
+  free(c->derr);
   free(c->fixed);
   free(c->dry);
   free(c->gprev);
@@ -632,6 +646,8 @@ static enum wl_status isph_init(void **ctx, const struct wl_sph_config *cfg,
   if (!(c->o.tol > 0)) c->o.tol = 1e-9;
   if (c->o.max_iter <= 0) c->o.max_iter = 2000;
   if (c->o.surface_offset == 0) c->o.surface_offset = 1;
+  if (c->o.density_relax == 0) c->o.density_relax = 0.05;
+  c->wsum_ref = wl_isph_lattice_sum(dim, k);
   c->tfs = c->o.surface_tfs > 0 ? c->o.surface_tfs : dim == 2 ? 1.5 : 2.4;
   c->n_threads = cfg->n_threads > 0 ? cfg->n_threads : 1;
   c->row_max = dim == 2 ? WL_ISPH_ROW_MAX_2D : WL_ISPH_ROW_MAX_3D;
@@ -651,6 +667,7 @@ static enum wl_status isph_init(void **ctx, const struct wl_sph_config *cfg,
   if (st == WL_OK) st = grab((void **)&c->divu, n, sizeof(double), "div u*", err);
   if (st == WL_OK) st = grab((void **)&c->rhs, n, sizeof(double), "the PPE right-hand side", err);
   if (st == WL_OK) st = grab((void **)&c->fmax2, n, sizeof(double), "|f|^2", err);
+  if (st == WL_OK) st = grab((void **)&c->derr, n, sizeof(double), "compressions", err);
   if (st == WL_OK) st = grab((void **)&c->fixed, n, 1, "surface flags", err);
   if (st == WL_OK) st = grab((void **)&c->dry, n, 1, "dry walls", err);
   if (st == WL_OK) st = grab((void **)&c->gprev, 3 * n, sizeof(double), "lagged grad p", err);

@@ -109,7 +109,26 @@ struct wl_isph_geom {
   double n[3];      /* outward unit normal -grad C/|grad C| (0 if grad C = 0), (x, y, z) */
   double minv[6];   /* M^-1 (xx, yy, zz, xy, xz, yz), or the identity where M is singular */
   double visc[3];   /* nu lap u [m/s^2] (Lo & Shao), (x, y, z) */
+  double wsum;      /* sum_j V_j W_ij over i itself and its neighbours [-]: the summation
+                       density over rho0 (a full lattice at dp gives wl_isph_lattice_sum) */
 };
+
+/* sum_j V W(r_j) over a full lattice of spacing dp around a particle (j
+ * itself included): what wl_isph_geom.wsum reads for fluid at rest density.
+ * Not 1: the discrete sum of the kernel on a lattice differs from its
+ * integral (about 1e-3 for Wendland C2 at h = sqrt(dim) dp). */
+static inline double wl_isph_lattice_sum(const int dim, const struct wl_sph_const *k) {
+  const double dp = k->dp, vol = (double)k->mass / (double)k->rho0;
+  const int m = (int)ceil(sqrt((double)k->support2) / dp) + 1;
+  double s = 0;
+  for (int a = -m; a <= m; a++)
+    for (int b = -m; b <= m; b++)
+      for (int c = (dim == 3 ? -m : 0); c <= (dim == 3 ? m : 0); c++) {
+        const double r2 = dp * dp * (double)(a * a + b * b + c * c);
+        if (r2 < (double)k->support2) s += vol * (double)wl_sph_kernel_w(k, (wl_real)r2);
+      }
+  return s;
+}
 
 /* The smallest det M (relative to a full support's 1) for which the
  * gradient is renormalised: below it (a particle with a handful of
@@ -130,6 +149,7 @@ WL_HD static inline void wl_isph_geometry(const int dim, const struct wl_sph_con
   const double vol = (double)k->mass / (double)k->rho0, h2e = (double)k->eta2;
   const double sup2 = (double)k->support2;
   double divr = 0, gc[3] = {0, 0, 0}, M[6] = {0, 0, 0, 0, 0, 0}, vs[3] = {0, 0, 0};
+  double ws = vol * (double)wl_sph_kernel_w(k, (wl_real)0);
   const double ui[3] = {(double)v->vel[0][i], dim == 3 ? (double)v->vel[1][i] : 0.0,
                         (double)v->vel[dim - 1][i]};
   for (int grp = 0; grp < 2; grp++)
@@ -140,6 +160,7 @@ WL_HD static inline void wl_isph_geometry(const int dim, const struct wl_sph_con
         const double r2 = wl_isph_rij(dim, v, i, j, x);
         if (r2 >= sup2 || j == i || wl_isph_skip(v, j)) continue;
         const double F = wl_isph_f(k, r2), vf = vol * F;
+        ws += vol * (double)wl_sph_kernel_w(k, (wl_real)r2);
         divr -= vf * r2;
         for (int a = 0; a < 3; a++) gc[a] += vf * x[a];
         M[0] -= vf * x[0] * x[0];
@@ -156,6 +177,7 @@ WL_HD static inline void wl_isph_geometry(const int dim, const struct wl_sph_con
       }
     }
   o->div_r = divr;
+  o->wsum = ws;
   const double gn = sqrt(gc[0] * gc[0] + gc[1] * gc[1] + gc[2] * gc[2]);
   for (int a = 0; a < 3; a++) {
     o->n[a] = gn > 0 ? -gc[a] / gn : 0.0;
