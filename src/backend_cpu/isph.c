@@ -539,7 +539,7 @@ static enum wl_status project(struct isph *c, const struct wl_sph_step_in *in, d
       } else if (c->fixed[i]) {
         double ga[3];
         wall_ga(c, in, i, ga);
-        if (wl_isph_wall_value(dim, k, g, &v, c->press, c->fixed, dt, ga, i) > 0) {
+        if (wl_isph_wall_value(dim, k, g, &v, c->press, dt, ga, i) > 0) {
           c->fixed[i] = 0;
           changed++;
         }

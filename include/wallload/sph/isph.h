@@ -266,10 +266,12 @@ WL_HD static inline void wl_isph_wall_normal(const int dim, const struct wl_sph_
  * intermediate speed into the wall, of which u_x = u_n - max(0, d - dp)/dt
  * would take it nearer than dp in this step: rho0 u_x d/dt (u_x > 0), the
  * pressure difference over d that takes u_x away (it never pushes a
- * particle that does not approach). Only for a
- * fluid particle whose pressure is a Dirichlet value (free surface: a jet's
- * tip, a thin sheet), which the PPE cannot raise itself; an interior
- * particle running at a wall raises its own pressure through div u*.
+ * particle that does not approach). This is the wall's Neumann condition
+ * dp/dn = rho0 (g - a_w).n + rho0/dt (u* - u*_w).n for the fluid that
+ * runs at it: the extrapolation carries the first part, this the second.
+ * For every fluid neighbour: a surface particle's pressure is a Dirichlet
+ * value the PPE cannot raise, and an interior particle's raised pressure
+ * is extrapolated onto the wall too, so neither is stopped otherwise.
  * Sliding along the wall adds nothing. docs/isph.md, "walls". */
 WL_HD static inline double wl_isph_wall_impact(const int dim, const struct wl_isph_view *v,
                                                const double *nw, double rho0, double dp, double dt, int w,
@@ -333,7 +335,7 @@ WL_HD static inline int wl_isph_ppe_row(const int dim, const struct wl_sph_const
         if (wall) {
           c = (double)wl_sph_kernel_w(k, (wl_real)r2);
           b += c * rho0 * (ga[0] * x[0] + ga[1] * x[1] + ga[2] * x[2]);
-          if (fixed[j] && v->wall_n) b += c * wl_isph_wall_impact(dim, v, &v->wall_n[3 * (size_t)i], rho0, (double)k->dp, dt, i, j, x);
+          if (v->wall_n) b += c * wl_isph_wall_impact(dim, v, &v->wall_n[3 * (size_t)i], rho0, (double)k->dp, dt, i, j, x);
         } else {
           c = -2.0 * vol * wl_isph_f(k, r2) * r2 / (r2 + h2e);
           /* the consistent Laplacian's first-order term with the lagged
@@ -364,13 +366,14 @@ WL_HD static inline int wl_isph_ppe_row(const int dim, const struct wl_sph_const
 
 /* The wall condition's value for wall particle i from the pressures p of
  * its fluid neighbours (sph/wall.h, Adami eq. 27, without the clamp):
- * sum_f W_if (p_f + rho0 ga.r_if) / sum_f W_if, 0 with no fluid around it.
+ * sum_f W_if (p_f + rho0 ga.r_if + impact) / sum_f W_if (wl_isph_wall_impact),
+ * 0 with no fluid around it.
  * The backend's active set (docs/isph.md, "walls") reads it to release a
  * wall particle held at p = 0 once the fluid would push on it. */
 WL_HD static inline double wl_isph_wall_value(const int dim, const struct wl_sph_const *k,
                                               const struct wl_sph_grid *g,
                                               const struct wl_isph_view *v, const double *p,
-                                              const unsigned char *fixed, double dt,
+                                              double dt,
                                               const double *ga, int i) {
   int f0[9], f1[9], b0[9], b1[9];
   const int nr = wl_isph_ranges(dim, g, v, i, f0, f1, b0, b1);
@@ -384,7 +387,7 @@ WL_HD static inline double wl_isph_wall_value(const int dim, const struct wl_sph
       const double w = (double)wl_sph_kernel_w(k, (wl_real)r2);
       sw += w;
       spw += w * (p[j] + rho0 * (ga[0] * x[0] + ga[1] * x[1] + ga[2] * x[2]) +
-                  (fixed[j] && v->wall_n ? wl_isph_wall_impact(dim, v, &v->wall_n[3 * (size_t)i], rho0, (double)k->dp, dt, i, j, x) : 0.0));
+                  (v->wall_n ? wl_isph_wall_impact(dim, v, &v->wall_n[3 * (size_t)i], rho0, (double)k->dp, dt, i, j, x) : 0.0));
     }
   return sw > 0 ? spw / sw : 0.0;
 }
