@@ -40,6 +40,22 @@ struct wl_isph_opts {
    * 1 (default, -1 to turn off) puts it at the fluid's edge dp/2 outside,
    * p_s = rho0 max(0, -g.n) dp/2 (docs/isph.md, "free surface") */
   int surface_offset;
+  /* The density-invariant source (Shao & Lo 2003; Hu & Adams 2007; relaxed
+   * as Asai et al. 2012): the PPE's divergence of every interior particle
+   * compressed beyond the rest lattice carries -(rho_i/rho_ref - 1)/tau,
+   * rho_i its summation density, so a compression relaxes over the time
+   * tau [s] whatever the step (0: 4 sqrt(h/g); negative: off).
+   * docs/isph.md, "density-invariant correction". */
+  double density_tau;
+  /* A wall particle with p <= 0 is dry (air to the fluid) unless a fluid
+   * particle within its support approaches it faster than this [m/s]
+   * (0: 0.1 sqrt(g h); negative: never, stage 1's rule). docs/isph.md. */
+  double wet_speed;
+  /* Particle shifting (Lind et al. 2012, with the velocity scaling of
+   * Skillen et al. 2013, as sph/shift.h): delta r = -A h |u| dt grad C,
+   * none at the free surface, ramped in below it; A is this (0 or
+   * negative: off, the default: no measured gain yet). docs/isph.md. */
+  double shift_coef;
   /* Debug: write the PPE (Matrix Market, rows scaled, and its right-hand
    * side) of step dump_step to dump_path(.mtx, .rhs); NULL: never. */
   const char *dump_path;

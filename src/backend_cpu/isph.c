@@ -56,8 +56,14 @@ struct isph {
   int row_max;
   /* per particle */
   double *ustar[WL_SPH_DIM_MAX], *minv, *pfix, *press, *divu, *rhs, *fmax2;
+  double *derr; /* relative compression beyond the rest lattice (>= 0), per particle */
+  double wsum_ref; /* wl_isph_lattice_sum */
+  double shift_a;  /* shifting coefficient A (0: off) */
+  double u_wet;    /* approach speed that wets a dry wall [m/s] (wl_isph_wall_wetted) */
   unsigned char *fixed, *dry;
   double *gprev; /* lagged grad p (x, y, z) per particle */
+  double *wall_n; /* outward unit normals of the wall particles (x, y, z) */
+  double *gradc;  /* grad C (x, y, z) and the shift ramp (4 per particle) */
   /* the PPE: rows of row_max slots (assembly), then CSR */
   int *row_len, *slot_col, *rowptr, *col;
   double *slot_val, *val;
@@ -275,6 +281,7 @@ static struct wl_isph_view view(const struct isph *c) {
   v.begin = c->begin;
   v.n_bound = c->p.n_bound;
   v.dry = c->dry;
+  v.wall_n = c->wall_n;
   return v;
 }
 
@@ -341,6 +348,11 @@ static void next_dt(const struct isph *c, double v2max, double f2max, struct wl_
   out->dt_next = c->k.cfl * dt;
 }
 
+/* The lagged gradient of the consistent Laplacian is capped at this many
+ * rho0 |g| (project). */
+#define LAG_CAP 1.2
+/* Restarts of BiCGSTAB after a breakdown, per solve. */
+#define BICGSTAB_RESTARTS 4
 /* Rounds of the walls' active set per step (project). */
 #define ACTIVE_SET_ROUNDS 4
 
@@ -399,12 +411,19 @@ static enum wl_status project(struct isph *c, const struct wl_sph_step_in *in, d
   /* the walls the fluid sees this step, and the pressure to start from
    * (last step's, carried as the Tait density) */
 #pragma omp parallel for schedule(static) num_threads(threads(c))
-  for (int i = 0; i < n; i++) {
-    c->press[i] = (double)wl_sph_eos_p(k, p->rho[i]);
-    if (i < nb) c->dry[i] = c->press[i] <= 0;
-  }
+  for (int i = 0; i < n; i++) c->press[i] = (double)wl_sph_eos_p(k, p->rho[i]);
   const struct wl_isph_view v = view(c);
   const struct wl_sph_grid *g = &c->grid;
+  /* the walls' normals (moving bodies turn nothing: recomputed for the
+   * sorted order each step) */
+#pragma omp parallel for schedule(dynamic, 256) num_threads(threads(c))
+  for (int i = 0; i < nb; i++) wl_isph_wall_normal(dim, k, g, &v, i, &c->wall_n[3 * (size_t)i]);
+  /* dry walls: not positive pressure and no fluid approaching within reach
+   * (wl_isph_wall_wetted) */
+#pragma omp parallel for schedule(dynamic, 256) num_threads(threads(c))
+  for (int i = 0; i < nb; i++)
+    c->dry[i] = c->press[i] <= 0 &&
+                (isinf(c->u_wet) || !wl_isph_wall_wetted(dim, k, g, &v, c->u_wet, i));
   const double nu4 = k->visc == WL_SPH_VISC_LAMINAR ? 4.0 * c->cfg.prm.nu : 0.0;
   const double rho0 = (double)k->rho0, half_dp = 0.5 * k->dp;
   const int offset = c->o.surface_offset > 0;
@@ -421,9 +440,11 @@ static enum wl_status project(struct isph *c, const struct wl_sph_step_in *in, d
       c->fixed[i] = 0;
       c->pfix[i] = 0;
       c->fmax2[i] = 0;
+      c->derr[i] = 0;
       continue;
     }
     if (p->body[i] == WL_SPH_BODY_EXCLUDED) {
+      c->derr[i] = 0;
       for (int a = 0; a < dim; a++) c->ustar[a][i] = 0;
       c->fixed[i] = 1;
       c->pfix[i] = 0;
@@ -435,6 +456,15 @@ static enum wl_status project(struct isph *c, const struct wl_sph_step_in *in, d
     wl_isph_geometry(dim, k, g, &v, nu4, i, &geo);
     memcpy(&c->minv[6 * (size_t)i], geo.minv, sizeof geo.minv);
     const int surf = geo.div_r < c->tfs;
+    /* the density-invariant source: compression only (a particle near the
+     * free surface has a cut support and a low sum, which is no expansion) */
+    const double e = geo.wsum / c->wsum_ref - 1.0;
+    /* shifting: none on the surface, ramped in over tfs < div r < dim */
+    double *gcv = &c->gradc[4 * (size_t)i];
+    for (int a = 0; a < 3; a++) gcv[a] = geo.gradc[a];
+    const double ramp = (geo.div_r - c->tfs) / ((double)dim - c->tfs);
+    gcv[3] = surf ? 0.0 : ramp < 0 ? 0.0 : ramp > 1 ? 1.0 : ramp;
+    c->derr[i] = !surf && e > 0 ? e : 0.0;
     c->fixed[i] = (unsigned char)surf;
     n_surface += surf;
     /* p_s: the hydrostatic pressure dp/2 under the fluid's edge along -n */
@@ -450,6 +480,11 @@ static enum wl_status project(struct isph *c, const struct wl_sph_step_in *in, d
     c->fmax2[i] = f2;
   }
   c->stats.n_surface = n_surface;
+  /* the density-invariant source enters as a divergence: lap p = rho0/dt
+   * (div u* - (rho_i/rho_ref - 1)/tau) asks u^{n+1} to expand the
+   * particle's neighbourhood at the rate that relaxes its compression over
+   * tau; never more than half of it in one step */
+  const double rate = c->o.density_tau > 0 ? fmin(1.0 / c->o.density_tau, 0.5 / dt) : 0.0;
   /* 2. div u* (once), then rounds of: the rows, the solve, the walls'
    * active set (a wall particle pulls on no fluid: one whose pressure
    * comes out negative is held at p = 0, and released when the fluid's
@@ -457,7 +492,8 @@ static enum wl_status project(struct isph *c, const struct wl_sph_step_in *in, d
    * first round starts from last step's set and pressure. */
 #pragma omp parallel for schedule(dynamic, 256) num_threads(threads(c))
   for (int i = nb; i < n; i++)
-    c->divu[i] = !c->fixed[i] ? wl_isph_div_ustar(dim, k, g, &v, i) : 0.0;
+    c->divu[i] = !c->fixed[i] ? wl_isph_div_ustar(dim, k, g, &v, i) - rate * c->derr[i]
+                              : 0.0;
   for (int i = 0; i < nb; i++) c->fixed[i] = c->dry[i];
   /* the lagged gradient of the consistent Laplacian (wl_isph_ppe_row) */
 #pragma omp parallel for schedule(dynamic, 256) num_threads(threads(c))
@@ -465,6 +501,12 @@ static enum wl_status project(struct isph *c, const struct wl_sph_step_in *in, d
     double *gp = &c->gprev[3 * (size_t)i];
     gp[0] = gp[1] = gp[2] = 0;
     if (i >= nb && !c->fixed[i]) wl_isph_grad_p(dim, k, g, &v, c->press, &c->minv[6 * (size_t)i], i, gp);
+    /* at most LAG_CAP rho0 |g|: the term is exact for a hydrostatic field
+     * (|grad p| = rho0 |g|), and last step's impact pressures fed back
+     * through it unbounded made the dam break unstable (docs/isph.md) */
+    const double gm = sqrt(gp[0] * gp[0] + gp[1] * gp[1] + gp[2] * gp[2]), cap = LAG_CAP * rho0 * c->cfg.prm.g;
+    if (gm > cap)
+      for (int a = 0; a < 3; a++) gp[a] *= cap / gm;
   }
   double res = 0;
   int it = 0;
@@ -473,9 +515,14 @@ static enum wl_status project(struct isph *c, const struct wl_sph_step_in *in, d
     if (st != WL_OK) return st;
     if (in && c->o.dump_path && in->step == c->o.dump_step && round == 0) dump(c, n);
     const double ts = now_s();
-    const int its = c->o.solver == WL_ISPH_SOLVER_GSL_GMRES
-                        ? gsl_gmres(c, n, c->rhs, c->press, c->o.tol, c->o.max_iter, &res)
-                        : bicgstab(c, n, c->rhs, c->press, c->o.tol, c->o.max_iter, &res);
+    int its = c->o.solver == WL_ISPH_SOLVER_GSL_GMRES
+                  ? gsl_gmres(c, n, c->rhs, c->press, c->o.tol, c->o.max_iter, &res)
+                  : bicgstab(c, n, c->rhs, c->press, c->o.tol, c->o.max_iter, &res);
+    /* BiCGSTAB stops at a breakdown (rho or omega 0) short of the
+     * tolerance: restart it from where it stopped, a new shadow residual */
+    for (int rs = 0; rs < BICGSTAB_RESTARTS && c->o.solver != WL_ISPH_SOLVER_GSL_GMRES &&
+                     res > c->o.tol && its < c->o.max_iter; rs++)
+      its += bicgstab(c, n, c->rhs, c->press, c->o.tol, c->o.max_iter - its, &res);
     c->stats.t_solve += now_s() - ts;
     it += its;
     if (!(res <= 1e3 * c->o.tol))
@@ -492,7 +539,7 @@ static enum wl_status project(struct isph *c, const struct wl_sph_step_in *in, d
       } else if (c->fixed[i]) {
         double ga[3];
         wall_ga(c, in, i, ga);
-        if (wl_isph_wall_value(dim, k, g, &v, c->press, ga, i) > 0) {
+        if (wl_isph_wall_value(dim, k, g, &v, c->press, dt, ga, i) > 0) {
           c->fixed[i] = 0;
           changed++;
         }
@@ -504,6 +551,10 @@ static enum wl_status project(struct isph *c, const struct wl_sph_step_in *in, d
   c->stats.residual = res;
   c->stats.iterations_sum += it;
   c->stats.solves++;
+  /* no tension: the fluid's pressure is held at p >= 0 (the walls' active
+   * set already holds theirs; what is left of a wall's negative value after
+   * the last round goes too). docs/isph.md, "free surface" */
+  for (int i = 0; i < n; i++) c->press[i] = c->press[i] > 0 ? c->press[i] : 0.0;
   /* 4. correction (velocities from the step-start positions), then move */
   double v2max = 0, f2max = 0;
 #pragma omp parallel for schedule(dynamic, 256) num_threads(threads(c)) reduction(max : v2max, f2max)
@@ -536,9 +587,15 @@ static enum wl_status project(struct isph *c, const struct wl_sph_step_in *in, d
       continue;
     }
     if (p->body[i] == WL_SPH_BODY_EXCLUDED) continue;
+    double u2 = 0;
+    for (int a = 0; a < dim; a++) u2 += (double)p->vel_h[a][i] * (double)p->vel_h[a][i];
+    const double *gcv = &c->gradc[4 * (size_t)i];
+    const double sh = -c->shift_a * k->h_d * sqrt(u2) * dt * gcv[3], cap = 0.1 * k->dp;
     for (int a = 0; a < dim; a++) {
       p->vel[a][i] = p->vel_h[a][i];
-      p->pos[a][i] += dt * (double)p->vel[a][i];
+      double d = sh * gcv[a == az ? 2 : a];
+      d = d > cap ? cap : d < -cap ? -cap : d;
+      p->pos[a][i] += dt * (double)p->vel[a][i] + d;
     }
   }
   memset(out, 0, sizeof *out);
@@ -565,9 +622,12 @@ static void isph_free(void *ctx) {
   free(c->divu);
   free(c->rhs);
   free(c->fmax2);
+  free(c->derr);
   free(c->fixed);
   free(c->dry);
   free(c->gprev);
+  free(c->wall_n);
+  free(c->gradc);
   free(c->row_len);
   free(c->slot_col);
   free(c->rowptr);
@@ -584,6 +644,39 @@ static void isph_free(void *ctx) {
 static enum wl_status isph_step(void *ctx, const struct wl_sph_step_in *in,
                                 struct wl_sph_step_out *out, struct wl_error *err) {
   return project(ctx, in, in->dt, out, err);
+}
+
+/* backend.h wall_load: the cell lists of the current state, every
+ * particle's pressure from its stored density (the ISPH pressure, see the
+ * top of this file), then each fluid particle's share (sph/isph.h
+ * wl_isph_wall_load) into divu and rhs, which hold nothing between steps,
+ * summed in index order. */
+static enum wl_status isph_wall_load(void *ctx, int body, double z_ref, double *force,
+                                     double *moment, struct wl_error *err) {
+  struct isph *c = ctx;
+  struct wl_particles *p = &c->p;
+  const struct wl_sph_const *k = &c->k;
+  const int n = p->n, nb = p->n_bound, dim = p->dim;
+  (void)err;
+  rebuild(c);
+  const struct wl_isph_view v = view(c);
+  double *fx = c->divu, *my = c->rhs;
+#pragma omp parallel num_threads(threads(c))
+  {
+#pragma omp for schedule(static)
+    for (int i = 0; i < n; i++) c->press[i] = (double)wl_sph_eos_p(k, p->rho[i]);
+#pragma omp for schedule(dynamic, 256)
+    for (int i = nb; i < n; i++)
+      wl_isph_wall_load(dim, k, &c->grid, &v, c->press, p->body, body, z_ref, i, &fx[i], &my[i]);
+  }
+  double sx = 0.0, sm = 0.0;
+  for (int i = nb; i < n; i++) {
+    sx += fx[i];
+    sm += my[i];
+  }
+  *force = sx;
+  *moment = sm;
+  return WL_OK;
 }
 
 static void isph_describe(void *ctx, char *buf, size_t size) {
@@ -632,6 +725,13 @@ static enum wl_status isph_init(void **ctx, const struct wl_sph_config *cfg,
   if (!(c->o.tol > 0)) c->o.tol = 1e-9;
   if (c->o.max_iter <= 0) c->o.max_iter = 2000;
   if (c->o.surface_offset == 0) c->o.surface_offset = 1;
+  if (c->o.density_tau == 0) c->o.density_tau = 4.0 * sqrt(k->h_d / cfg->prm.g);
+  c->wsum_ref = wl_isph_lattice_sum(dim, k);
+  c->shift_a = c->o.shift_coef > 0 ? c->o.shift_coef : 0.0;
+  /* 10 % of sqrt(g h): above the drift of a settling tank (docs/isph.md,
+   * "walls"), below the speed of any flow that runs at a wall */
+  c->u_wet = c->o.wet_speed > 0 ? c->o.wet_speed
+            : c->o.wet_speed < 0 ? INFINITY : 0.1 * sqrt(cfg->prm.g * k->h_d);
   c->tfs = c->o.surface_tfs > 0 ? c->o.surface_tfs : dim == 2 ? 1.5 : 2.4;
   c->n_threads = cfg->n_threads > 0 ? cfg->n_threads : 1;
   c->row_max = dim == 2 ? WL_ISPH_ROW_MAX_2D : WL_ISPH_ROW_MAX_3D;
@@ -651,9 +751,13 @@ static enum wl_status isph_init(void **ctx, const struct wl_sph_config *cfg,
   if (st == WL_OK) st = grab((void **)&c->divu, n, sizeof(double), "div u*", err);
   if (st == WL_OK) st = grab((void **)&c->rhs, n, sizeof(double), "the PPE right-hand side", err);
   if (st == WL_OK) st = grab((void **)&c->fmax2, n, sizeof(double), "|f|^2", err);
+  if (st == WL_OK) st = grab((void **)&c->derr, n, sizeof(double), "compressions", err);
   if (st == WL_OK) st = grab((void **)&c->fixed, n, 1, "surface flags", err);
   if (st == WL_OK) st = grab((void **)&c->dry, n, 1, "dry walls", err);
   if (st == WL_OK) st = grab((void **)&c->gprev, 3 * n, sizeof(double), "lagged grad p", err);
+  if (st == WL_OK) st = grab((void **)&c->gradc, 4 * n, sizeof(double), "grad C", err);
+  if (st == WL_OK)
+    st = grab((void **)&c->wall_n, 3 * (size_t)host->n_bound, sizeof(double), "wall normals", err);
   if (st == WL_OK) st = grab((void **)&c->row_len, n, sizeof(int), "PPE row lengths", err);
   if (st == WL_OK) st = grab((void **)&c->slot_col, n * rm, sizeof(int), "PPE row slots", err);
   if (st == WL_OK) st = grab((void **)&c->slot_val, n * rm, sizeof(double), "PPE row slots", err);
@@ -697,5 +801,5 @@ const struct wl_backend_ops wl_backend_isph_ops = {
     .download = isph_download,
     .describe = isph_describe,
     .free = isph_free,
-    .wall_load = NULL,
+    .wall_load = isph_wall_load,
 };

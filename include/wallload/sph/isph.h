@@ -63,6 +63,9 @@ struct wl_isph_view {
    * pressure was <= 0 at its start: wall above the free surface, air to
    * the fluid; docs/isph.md "walls"); NULL: all seen */
   const unsigned char *dry;
+  /* outward unit normals of the wall particles (3 per particle, x y z;
+   * wl_isph_wall_normal); NULL: no impact term */
+  const double *wall_n;
 };
 
 /* Whether fluid particle i's sums skip neighbour j (a dry wall particle). */
@@ -107,9 +110,29 @@ WL_HD static inline double wl_isph_f(const struct wl_sph_const *k, double r2) {
 struct wl_isph_geom {
   double div_r;     /* div r [-]: dim inside the fluid */
   double n[3];      /* outward unit normal -grad C/|grad C| (0 if grad C = 0), (x, y, z) */
+  double gradc[3];  /* grad C = sum_j V_j grad_i W_ij [1/m] (x, y, z): particle shifting */
   double minv[6];   /* M^-1 (xx, yy, zz, xy, xz, yz), or the identity where M is singular */
   double visc[3];   /* nu lap u [m/s^2] (Lo & Shao), (x, y, z) */
+  double wsum;      /* sum_j V_j W_ij over i itself and its neighbours [-]: the summation
+                       density over rho0 (a full lattice at dp gives wl_isph_lattice_sum) */
 };
+
+/* sum_j V W(r_j) over a full lattice of spacing dp around a particle (j
+ * itself included): what wl_isph_geom.wsum reads for fluid at rest density.
+ * Not 1: the discrete sum of the kernel on a lattice differs from its
+ * integral (about 1e-3 for Wendland C2 at h = sqrt(dim) dp). */
+static inline double wl_isph_lattice_sum(const int dim, const struct wl_sph_const *k) {
+  const double dp = k->dp, vol = (double)k->mass / (double)k->rho0;
+  const int m = (int)ceil(sqrt((double)k->support2) / dp) + 1;
+  double s = 0;
+  for (int a = -m; a <= m; a++)
+    for (int b = -m; b <= m; b++)
+      for (int c = (dim == 3 ? -m : 0); c <= (dim == 3 ? m : 0); c++) {
+        const double r2 = dp * dp * (double)(a * a + b * b + c * c);
+        if (r2 < (double)k->support2) s += vol * (double)wl_sph_kernel_w(k, (wl_real)r2);
+      }
+  return s;
+}
 
 /* The smallest det M (relative to a full support's 1) for which the
  * gradient is renormalised: below it (a particle with a handful of
@@ -130,6 +153,7 @@ WL_HD static inline void wl_isph_geometry(const int dim, const struct wl_sph_con
   const double vol = (double)k->mass / (double)k->rho0, h2e = (double)k->eta2;
   const double sup2 = (double)k->support2;
   double divr = 0, gc[3] = {0, 0, 0}, M[6] = {0, 0, 0, 0, 0, 0}, vs[3] = {0, 0, 0};
+  double ws = vol * (double)wl_sph_kernel_w(k, (wl_real)0);
   const double ui[3] = {(double)v->vel[0][i], dim == 3 ? (double)v->vel[1][i] : 0.0,
                         (double)v->vel[dim - 1][i]};
   for (int grp = 0; grp < 2; grp++)
@@ -140,6 +164,7 @@ WL_HD static inline void wl_isph_geometry(const int dim, const struct wl_sph_con
         const double r2 = wl_isph_rij(dim, v, i, j, x);
         if (r2 >= sup2 || j == i || wl_isph_skip(v, j)) continue;
         const double F = wl_isph_f(k, r2), vf = vol * F;
+        ws += vol * (double)wl_sph_kernel_w(k, (wl_real)r2);
         divr -= vf * r2;
         for (int a = 0; a < 3; a++) gc[a] += vf * x[a];
         M[0] -= vf * x[0] * x[0];
@@ -156,9 +181,11 @@ WL_HD static inline void wl_isph_geometry(const int dim, const struct wl_sph_con
       }
     }
   o->div_r = divr;
+  o->wsum = ws;
   const double gn = sqrt(gc[0] * gc[0] + gc[1] * gc[1] + gc[2] * gc[2]);
   for (int a = 0; a < 3; a++) {
     o->n[a] = gn > 0 ? -gc[a] / gn : 0.0;
+    o->gradc[a] = gc[a];
     o->visc[a] = vs[a];
   }
   /* M^-1: 2D uses xx, zz, xz (y row and column the identity) */
@@ -210,6 +237,55 @@ WL_HD static inline double wl_isph_div_ustar(const int dim, const struct wl_sph_
   return div;
 }
 
+/* The outward unit normal of wall particle w (x, y, z slots), from the
+ * other boundary particles around it: -grad C_b / |grad C_b|, C_b their
+ * kernel sum (at the first layer, out of the wall towards the fluid; at a
+ * corner, along its bisector). Zeros when w has no boundary neighbours. */
+WL_HD static inline void wl_isph_wall_normal(const int dim, const struct wl_sph_const *k,
+                                             const struct wl_sph_grid *g,
+                                             const struct wl_isph_view *v, int w, double n[3]) {
+  int f0[9], f1[9], b0[9], b1[9];
+  const int nr = wl_isph_ranges(dim, g, v, w, f0, f1, b0, b1);
+  const double sup2 = (double)k->support2;
+  double gc[3] = {0, 0, 0};
+  for (int r = 0; r < nr; r++)
+    for (int j = b0[r]; j < b1[r]; j++) {
+      double x[3];
+      const double r2 = wl_isph_rij(dim, v, w, j, x);
+      if (r2 >= sup2 || j == w) continue;
+      const double F = wl_isph_f(k, r2);
+      for (int a = 0; a < 3; a++) gc[a] += F * x[a];
+    }
+  const double gn = sqrt(gc[0] * gc[0] + gc[1] * gc[1] + gc[2] * gc[2]);
+  for (int a = 0; a < 3; a++) n[a] = gn > 0 ? -gc[a] / gn : 0.0;
+}
+
+/* The impact term of wall particle w's row for fluid neighbour f (x =
+ * r_w - r_f, nw the wall's outward normal): with d = -x.nw > 0 the fluid
+ * particle's height over the wall particle and u_n = (u*_w - u*_f).nw its
+ * intermediate speed into the wall, of which u_x = u_n - max(0, d - dp)/dt
+ * would take it nearer than dp in this step: rho0 u_x d/dt (u_x > 0), the
+ * pressure difference over d that takes u_x away (it never pushes a
+ * particle that does not approach). This is the wall's Neumann condition
+ * dp/dn = rho0 (g - a_w).n + rho0/dt (u* - u*_w).n for the fluid that
+ * runs at it: the extrapolation carries the first part, this the second.
+ * For every fluid neighbour: a surface particle's pressure is a Dirichlet
+ * value the PPE cannot raise, and an interior particle's raised pressure
+ * is extrapolated onto the wall too, so neither is stopped otherwise.
+ * Sliding along the wall adds nothing. docs/isph.md, "walls". */
+WL_HD static inline double wl_isph_wall_impact(const int dim, const struct wl_isph_view *v,
+                                               const double *nw, double rho0, double dp, double dt, int w,
+                                               int f, const double x[3]) {
+  const int az = dim - 1;
+  double un = (v->ustar[0][w] - v->ustar[0][f]) * nw[0] + (v->ustar[az][w] - v->ustar[az][f]) * nw[2];
+  if (dim == 3) un += (v->ustar[1][w] - v->ustar[1][f]) * nw[1];
+  const double d = -(x[0] * nw[0] + x[1] * nw[1] + x[2] * nw[2]);
+  /* only the speed that would take f nearer than dp (a fluid particle's
+   * distance from the first wall layer at rest) within this step */
+  const double gap = d > dp ? (d - dp) / dt : 0.0, ux = un - gap;
+  return ux > 0 && d > 0 && dt > 0 ? rho0 / dt * ux * d : 0.0;
+}
+
 /* The PPE row of particle i, scaled to a unit diagonal: the column
  * indices col[0..m) and values val[0..m) (col[0] = i, val[0] = 1), its
  * right-hand side *rhs; returns m, or -1 when the row would exceed
@@ -259,6 +335,7 @@ WL_HD static inline int wl_isph_ppe_row(const int dim, const struct wl_sph_const
         if (wall) {
           c = (double)wl_sph_kernel_w(k, (wl_real)r2);
           b += c * rho0 * (ga[0] * x[0] + ga[1] * x[1] + ga[2] * x[2]);
+          if (v->wall_n) b += c * wl_isph_wall_impact(dim, v, &v->wall_n[3 * (size_t)i], rho0, (double)k->dp, dt, i, j, x);
         } else {
           c = -2.0 * vol * wl_isph_f(k, r2) * r2 / (r2 + h2e);
           /* the consistent Laplacian's first-order term with the lagged
@@ -289,12 +366,14 @@ WL_HD static inline int wl_isph_ppe_row(const int dim, const struct wl_sph_const
 
 /* The wall condition's value for wall particle i from the pressures p of
  * its fluid neighbours (sph/wall.h, Adami eq. 27, without the clamp):
- * sum_f W_if (p_f + rho0 ga.r_if) / sum_f W_if, 0 with no fluid around it.
+ * sum_f W_if (p_f + rho0 ga.r_if + impact) / sum_f W_if (wl_isph_wall_impact),
+ * 0 with no fluid around it.
  * The backend's active set (docs/isph.md, "walls") reads it to release a
  * wall particle held at p = 0 once the fluid would push on it. */
 WL_HD static inline double wl_isph_wall_value(const int dim, const struct wl_sph_const *k,
                                               const struct wl_sph_grid *g,
                                               const struct wl_isph_view *v, const double *p,
+                                              double dt,
                                               const double *ga, int i) {
   int f0[9], f1[9], b0[9], b1[9];
   const int nr = wl_isph_ranges(dim, g, v, i, f0, f1, b0, b1);
@@ -307,9 +386,74 @@ WL_HD static inline double wl_isph_wall_value(const int dim, const struct wl_sph
       if (r2 >= sup2) continue;
       const double w = (double)wl_sph_kernel_w(k, (wl_real)r2);
       sw += w;
-      spw += w * (p[j] + rho0 * (ga[0] * x[0] + ga[1] * x[1] + ga[2] * x[2]));
+      spw += w * (p[j] + rho0 * (ga[0] * x[0] + ga[1] * x[1] + ga[2] * x[2]) +
+                  (v->wall_n ? wl_isph_wall_impact(dim, v, &v->wall_n[3 * (size_t)i], rho0, (double)k->dp, dt, i, j, x) : 0.0));
     }
   return sw > 0 ? spw / sw : 0.0;
+}
+
+/* Whether fluid wets wall particle i this step although its pressure is
+ * not positive (docs/isph.md, "walls"): a fluid neighbour within the
+ * support that approaches it, (u_f - u_w).(r_w - r_f)/|r_w - r_f| > u_min
+ * [m/s]. A jet running at a dry wall must see it before its extrapolated
+ * pressure can turn positive. */
+WL_HD static inline int wl_isph_wall_wetted(const int dim, const struct wl_sph_const *k,
+                                            const struct wl_sph_grid *g,
+                                            const struct wl_isph_view *v, double u_min, int i) {
+  int f0[9], f1[9], b0[9], b1[9];
+  const int nr = wl_isph_ranges(dim, g, v, i, f0, f1, b0, b1);
+  const double sup2 = (double)k->support2;
+  const int az = dim - 1;
+  for (int r = 0; r < nr; r++)
+    for (int j = f0[r]; j < f1[r]; j++) {
+      double x[3]; /* r_w - r_f */
+      const double r2 = wl_isph_rij(dim, v, i, j, x);
+      if (r2 >= sup2 || !(r2 > 0)) continue;
+      double ur = ((double)v->vel[0][j] - (double)v->vel[0][i]) * x[0] +
+                  ((double)v->vel[az][j] - (double)v->vel[az][i]) * x[2];
+      if (dim == 3) ur += ((double)v->vel[1][j] - (double)v->vel[1][i]) * x[1];
+      if (ur > u_min * sqrt(r2)) return 1;
+    }
+  return 0;
+}
+
+/* The wall load on fluid particle i (backend.h wall_load; as sph/gather.h
+ * wl_sph_gather_wall_load for WCSPH): the horizontal pressure force of i on
+ * the boundary particles w of body `body` (body_of[w] == body) within its
+ * support, in the symmetric pair form V_i V_w (p_i + p_w) F r_iw. The
+ * momentum equation's renormalised difference form (wl_isph_grad_p) is not
+ * antisymmetric, so its fluid-fluid pairs do not cancel and its
+ * fluid-wall pairs are not the force on the wall (a uniform pressure gives
+ * them none); in the symmetric form the fluid-fluid pairs cancel, and the
+ * fluid-wall pairs are the wall's share of the pressure force (a
+ * hydrostatic tank: rho0 g h^2/2 on an end wall, test_isph). Viscous
+ * stresses are left out (laminar nu, negligible at the wall's scale). *fx
+ * [N/m in 2D, N in 3D]; *my its moment about z_ref [m], each pair's force
+ * at the mean height of the two particles, no lever arm below z_ref.
+ * p: every particle's pressure [Pa]. */
+WL_HD static inline void wl_isph_wall_load(const int dim, const struct wl_sph_const *k,
+                                           const struct wl_sph_grid *g,
+                                           const struct wl_isph_view *v, const double *p,
+                                           const unsigned char *body_of, int body, double z_ref,
+                                           int i, double *fx, double *my) {
+  int f0[9], f1[9], b0[9], b1[9];
+  const int nr = wl_isph_ranges(dim, g, v, i, f0, f1, b0, b1);
+  const double vol = (double)k->mass / (double)k->rho0, sup2 = (double)k->support2;
+  const int az = dim - 1;
+  double sx = 0, sm = 0;
+  for (int r = 0; r < nr; r++)
+    for (int j = b0[r]; j < b1[r]; j++) {
+      if (body_of[j] != body) continue;
+      double x[3];
+      const double r2 = wl_isph_rij(dim, v, i, j, x);
+      if (r2 >= sup2) continue;
+      const double f = vol * vol * (p[i] + p[j]) * wl_isph_f(k, r2) * x[0];
+      const double arm = 0.5 * (v->pos[az][i] + v->pos[az][j]) - z_ref;
+      sx += f;
+      sm += f * (arm > 0 ? arm : 0.0);
+    }
+  *fx = sx;
+  *my = sm;
 }
 
 /* grad p_i [Pa/m] of fluid particle i in (x, y, z) slots: M^-1 sum_j V_j
