@@ -20,6 +20,7 @@
 #include "wallload/sph/guard.h"
 #include "wallload/sph/integrate.h"
 #include "wallload/sph/wall.h"
+#include "sort.h"
 
 struct cpu;
 struct eval_stats;
@@ -58,86 +59,22 @@ static int threads(const struct cpu *c) {
 
 /* ---- cell rebuild ------------------------------------------------------------ */
 
-/* d[i] = s[perm[i]] for elements of es bytes; called inside a parallel
- * region (orphaned worksharing loop, no barrier at its end). */
-static void permute(void *d, const void *s, size_t es, const unsigned *perm, int n) {
-  if (es == 8) {
-    const double *src = s;
-    double *dst = d;
-#pragma omp for schedule(static) nowait
-    for (int i = 0; i < n; i++) dst[i] = src[perm[i]];
-  } else if (es == 4) {
-    const unsigned int *src = s;
-    unsigned int *dst = d;
-#pragma omp for schedule(static) nowait
-    for (int i = 0; i < n; i++) dst[i] = src[perm[i]];
-  } else {
-    const unsigned char *src = s;
-    unsigned char *dst = d;
-#pragma omp for schedule(static) nowait
-    for (int i = 0; i < n; i++) dst[i] = src[perm[i]];
-  }
-}
-
-/* Counting sort of all particles by key = group * n_cells + cell (boundary
- * group 0 first, so boundary particles stay in [0, n_bound)). The sort is
- * stable, so the order within a cell is the previous order: deterministic.
- * One parallel region (a step's barriers are what costs when the machine is
- * shared). */
+/* The cell rebuild (sort.h); Verlet's previous velocities and density
+ * travel with the particles. */
 static void rebuild(struct cpu *c) {
   struct wl_particles *p = &c->p;
-  const int n = p->n, nc = c->grid.n_cells, dim = p->dim;
-  const struct wl_sph_grid *g = &c->grid;
-  int nf;
-  const struct wl_field_desc *fd = wl_particles_fields(&nf);
-  const unsigned *perm = p->perm;
-#pragma omp parallel num_threads(threads(c))
-  {
-#pragma omp for schedule(static)
-    for (int i = 0; i < n; i++) {
-      const unsigned group = p->kind[i] == WL_KIND_FLUID ? 1u : 0u;
-      p->key[i] = group * (unsigned)nc + (unsigned)wl_sph_cell_of(dim, g, p->pos, i);
-    }
-#pragma omp single
-    wl_sph_cells_sort(g, p->key, n, c->begin, c->cursor, p->perm);
-    /* every state field (field table) into alt, the keys into key_tmp */
-    for (int f = 0; f < nf; f++) {
-      if (!(fd[f].flags & WL_FIELD_SORT)) continue;
-      for (int comp = 0; comp < wl_field_components(&fd[f], dim); comp++)
-        permute(*((void **)((char *)&c->alt + fd[f].offset) + comp),
-                *((void **)((char *)p + fd[f].offset) + comp), wl_field_type_size(fd[f].type),
-                perm, n);
-    }
-    permute(c->key_tmp, p->key, sizeof(unsigned int), perm, n);
-    if (c->k.integrator == WL_SPH_VERLET) { /* the previous step's v and rho travel too */
-      for (int a = 0; a < dim; a++) permute(c->prev_vel_tmp[a], p->vel_h[a], sizeof(wl_real), perm, n);
-      permute(c->prev_rho_tmp, p->rho_h, sizeof(wl_real), perm, n);
-    }
-  }
+  struct wl_cpu_sort_extra extra = {0};
   if (c->k.integrator == WL_SPH_VERLET) {
-    for (int a = 0; a < dim; a++) {
-      wl_real *t = p->vel_h[a];
-      p->vel_h[a] = c->prev_vel_tmp[a];
-      c->prev_vel_tmp[a] = t;
+    for (int a = 0; a < p->dim; a++) {
+      extra.src[extra.n] = (void **)&p->vel_h[a];
+      extra.tmp[extra.n] = (void **)&c->prev_vel_tmp[a];
+      extra.size[extra.n++] = sizeof(wl_real);
     }
-    wl_real *t = p->rho_h;
-    p->rho_h = c->prev_rho_tmp;
-    c->prev_rho_tmp = t;
+    extra.src[extra.n] = (void **)&p->rho_h;
+    extra.tmp[extra.n] = (void **)&c->prev_rho_tmp;
+    extra.size[extra.n++] = sizeof(wl_real);
   }
-  /* swap the arrays: the sorted copies become the state */
-  for (int f = 0; f < nf; f++) {
-    if (!(fd[f].flags & WL_FIELD_SORT)) continue;
-    for (int comp = 0; comp < wl_field_components(&fd[f], dim); comp++) {
-      void **src = (void **)((char *)p + fd[f].offset) + comp;
-      void **dst = (void **)((char *)&c->alt + fd[f].offset) + comp;
-      void *tmp = *src;
-      *src = *dst;
-      *dst = tmp;
-    }
-  }
-  unsigned int *tmp = p->key;
-  p->key = c->key_tmp;
-  c->key_tmp = tmp;
+  wl_cpu_rebuild(p, &c->alt, &c->key_tmp, &c->grid, c->begin, c->cursor, &extra, threads(c));
 }
 
 /* ---- force evaluation ------------------------------------------------------ */

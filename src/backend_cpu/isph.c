@@ -38,6 +38,7 @@
 #include "wallload/sph/guard.h"
 #include "wallload/sph/isph.h"
 #include "wallload/sph/wall.h"
+#include "sort.h"
 
 /* Dot products are summed over chunks of this many entries, each chunk in
  * index order, then the chunks in order: the same bits on any thread count. */
@@ -89,62 +90,8 @@ static double now_s(void) {
 
 /* ---- cell rebuild (as cpu.c rebuild: state fields by the field table) --- */
 
-static void permute_bytes(void *d, const void *s, size_t es, const unsigned *perm, int n) {
-  if (es == 8) {
-    const double *src = s;
-    double *dst = d;
-#pragma omp for schedule(static) nowait
-    for (int i = 0; i < n; i++) dst[i] = src[perm[i]];
-  } else if (es == 4) {
-    const unsigned int *src = s;
-    unsigned int *dst = d;
-#pragma omp for schedule(static) nowait
-    for (int i = 0; i < n; i++) dst[i] = src[perm[i]];
-  } else {
-    const unsigned char *src = s;
-    unsigned char *dst = d;
-#pragma omp for schedule(static) nowait
-    for (int i = 0; i < n; i++) dst[i] = src[perm[i]];
-  }
-}
-
 static void rebuild(struct isph *c) {
-  struct wl_particles *p = &c->p;
-  const int n = p->n, nc = c->grid.n_cells, dim = p->dim;
-  const struct wl_sph_grid *g = &c->grid;
-  int nf;
-  const struct wl_field_desc *fd = wl_particles_fields(&nf);
-#pragma omp parallel num_threads(threads(c))
-  {
-#pragma omp for schedule(static)
-    for (int i = 0; i < n; i++) {
-      const unsigned group = p->kind[i] == WL_KIND_FLUID ? 1u : 0u;
-      p->key[i] = group * (unsigned)nc + (unsigned)wl_sph_cell_of(dim, g, p->pos, i);
-    }
-#pragma omp single
-    wl_sph_cells_sort(g, p->key, n, c->begin, c->cursor, p->perm);
-    for (int f = 0; f < nf; f++) {
-      if (!(fd[f].flags & WL_FIELD_SORT)) continue;
-      for (int comp = 0; comp < wl_field_components(&fd[f], dim); comp++)
-        permute_bytes(*((void **)((char *)&c->alt + fd[f].offset) + comp),
-                      *((void **)((char *)p + fd[f].offset) + comp),
-                      wl_field_type_size(fd[f].type), p->perm, n);
-    }
-    permute_bytes(c->key_tmp, p->key, sizeof(unsigned int), p->perm, n);
-  }
-  for (int f = 0; f < nf; f++) {
-    if (!(fd[f].flags & WL_FIELD_SORT)) continue;
-    for (int comp = 0; comp < wl_field_components(&fd[f], dim); comp++) {
-      void **src = (void **)((char *)p + fd[f].offset) + comp;
-      void **dst = (void **)((char *)&c->alt + fd[f].offset) + comp;
-      void *tmp = *src;
-      *src = *dst;
-      *dst = tmp;
-    }
-  }
-  unsigned int *tmp = p->key;
-  p->key = c->key_tmp;
-  c->key_tmp = tmp;
+  wl_cpu_rebuild(&c->p, &c->alt, &c->key_tmp, &c->grid, c->begin, c->cursor, NULL, threads(c));
 }
 
 /* ---- linear algebra on the CSR (rows scaled to a unit diagonal) -------- */

@@ -1,0 +1,72 @@
+/* sort.c: the CPU backends' cell rebuild (sort.h). */
+#include "sort.h"
+
+#include <omp.h>
+
+/* d[i] = s[perm[i]] for elements of es bytes; called inside a parallel
+ * region (orphaned worksharing loop, no barrier at its end). */
+static void permute(void *d, const void *s, size_t es, const unsigned *perm, int n) {
+  if (es == 8) {
+    const double *src = s;
+    double *dst = d;
+#pragma omp for schedule(static) nowait
+    for (int i = 0; i < n; i++) dst[i] = src[perm[i]];
+  } else if (es == 4) {
+    const unsigned int *src = s;
+    unsigned int *dst = d;
+#pragma omp for schedule(static) nowait
+    for (int i = 0; i < n; i++) dst[i] = src[perm[i]];
+  } else {
+    const unsigned char *src = s;
+    unsigned char *dst = d;
+#pragma omp for schedule(static) nowait
+    for (int i = 0; i < n; i++) dst[i] = src[perm[i]];
+  }
+}
+
+static void swap_ptr(void **a, void **b) {
+  void *t = *a;
+  *a = *b;
+  *b = t;
+}
+
+void wl_cpu_rebuild(struct wl_particles *p, struct wl_particles *alt, unsigned int **key_tmp,
+                    const struct wl_sph_grid *g, int *begin, int *cursor,
+                    const struct wl_cpu_sort_extra *extra, int threads) {
+  const int n = p->n, nc = g->n_cells, dim = p->dim;
+  int nf;
+  const struct wl_field_desc *fd = wl_particles_fields(&nf);
+  const unsigned *perm = p->perm;
+#pragma omp parallel num_threads(threads)
+  {
+#pragma omp for schedule(static)
+    for (int i = 0; i < n; i++) {
+      const unsigned group = p->kind[i] == WL_KIND_FLUID ? 1u : 0u;
+      p->key[i] = group * (unsigned)nc + (unsigned)wl_sph_cell_of(dim, g, p->pos, i);
+    }
+#pragma omp single
+    wl_sph_cells_sort(g, p->key, n, begin, cursor, p->perm);
+    /* every state field (field table) into alt, the keys into key_tmp */
+    for (int f = 0; f < nf; f++) {
+      if (!(fd[f].flags & WL_FIELD_SORT)) continue;
+      for (int comp = 0; comp < wl_field_components(&fd[f], dim); comp++)
+        permute(*((void **)((char *)alt + fd[f].offset) + comp),
+                *((void **)((char *)p + fd[f].offset) + comp), wl_field_type_size(fd[f].type),
+                perm, n);
+    }
+    permute(*key_tmp, p->key, sizeof(unsigned int), perm, n);
+    for (int e = 0; extra && e < extra->n; e++)
+      permute(*extra->tmp[e], *extra->src[e], extra->size[e], perm, n);
+  }
+  for (int e = 0; extra && e < extra->n; e++) swap_ptr(extra->src[e], extra->tmp[e]);
+  /* the sorted copies become the state */
+  for (int f = 0; f < nf; f++) {
+    if (!(fd[f].flags & WL_FIELD_SORT)) continue;
+    for (int comp = 0; comp < wl_field_components(&fd[f], dim); comp++)
+      swap_ptr((void **)((char *)p + fd[f].offset) + comp,
+               (void **)((char *)alt + fd[f].offset) + comp);
+  }
+  unsigned int *tmp = p->key;
+  p->key = *key_tmp;
+  *key_tmp = tmp;
+}

@@ -1,0 +1,32 @@
+/* sort.h: the CPU backends' cell rebuild (cpu.c, isph.c), written once.
+ * Private to src/backend_cpu. */
+#ifndef WL_BACKEND_CPU_SORT_H
+#define WL_BACKEND_CPU_SORT_H
+
+#include <stddef.h>
+
+#include "wallload/sph.h"
+#include "wallload/sph/cells.h"
+
+/* Arrays beyond the state's field table that travel with the particles
+ * (Verlet's previous velocities and density): each *src is permuted into
+ * *tmp, then the two swap. */
+enum { WL_CPU_SORT_EXTRA_MAX = WL_SPH_DIM_MAX + 1 };
+struct wl_cpu_sort_extra {
+  int n;
+  void **src[WL_CPU_SORT_EXTRA_MAX], **tmp[WL_CPU_SORT_EXTRA_MAX];
+  size_t size[WL_CPU_SORT_EXTRA_MAX];
+};
+
+/* Counting sort of all particles by key = group * n_cells + cell (boundary
+ * group 0 first, so boundary particles stay in [0, n_bound)). The sort is
+ * stable, so the order within a cell is the previous order: deterministic.
+ * Every sorted field of p (the field table) goes into alt's arrays and the
+ * two swap; the keys likewise with *key_tmp; begin and cursor are the
+ * sort's scratch (wl_sph_cells_sort). One parallel region of `threads`
+ * (a step's barriers are what costs when the machine is shared). */
+void wl_cpu_rebuild(struct wl_particles *p, struct wl_particles *alt, unsigned int **key_tmp,
+                    const struct wl_sph_grid *g, int *begin, int *cursor,
+                    const struct wl_cpu_sort_extra *extra, int threads);
+
+#endif
