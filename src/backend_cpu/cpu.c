@@ -20,7 +20,7 @@
 #include "wallload/sph/guard.h"
 #include "wallload/sph/integrate.h"
 #include "wallload/sph/wall.h"
-#include "sort.h"
+#include "cpu_shared.h"
 
 struct cpu;
 struct eval_stats;
@@ -59,7 +59,7 @@ static int threads(const struct cpu *c) {
 
 /* ---- cell rebuild ------------------------------------------------------------ */
 
-/* The cell rebuild (sort.h); Verlet's previous velocities and density
+/* The cell rebuild (cpu_shared.h); Verlet's previous velocities and density
  * travel with the particles. */
 static void rebuild(struct cpu *c) {
   struct wl_particles *p = &c->p;
@@ -329,22 +329,7 @@ static void guard(struct cpu *c, const struct wl_sph_step_in *in, struct wl_sph_
         i < first)
       first = i;
   }
-  out->fault = WL_SPH_FAULT_NONE;
-  out->n_limited = limited;
-  out->n_excluded = excluded;
-  if (first == n) return;
-  int w = -1;
-  out->fault = wl_sph_guard(dim, &c->k, p, c->cfg.lo, c->cfg.hi, c->cfg.walls, c->cfg.n_walls,
-                            first, &w);
-  out->fault_index = first;
-  out->fault_id = p->id[first];
-  out->fault_kind = p->kind[first];
-  out->fault_wall = w;
-  for (int a = 0; a < WL_SPH_DIM_MAX; a++) {
-    out->fault_pos[a] = a < dim ? p->pos[a][first] : 0;
-    out->fault_vel[a] = a < dim ? p->vel[a][first] : 0;
-  }
-  out->fault_rho = p->rho[first];
+  wl_cpu_guard_report(&c->k, p, &c->cfg, first, limited, excluded, out);
 }
 
 /* ---- the wall load ------------------------------------------------------------ */

@@ -38,7 +38,7 @@
 #include "wallload/sph/guard.h"
 #include "wallload/sph/isph.h"
 #include "wallload/sph/wall.h"
-#include "sort.h"
+#include "cpu_shared.h"
 
 /* Dot products are summed over chunks of this many entries, each chunk in
  * index order, then the chunks in order: the same bits on any thread count. */
@@ -260,22 +260,7 @@ static void guard(struct isph *c, int moved, struct wl_sph_step_out *out) {
         i < first)
       first = i;
   }
-  out->fault = WL_SPH_FAULT_NONE;
-  out->n_limited = limited;
-  out->n_excluded = excluded;
-  if (first == n) return;
-  int w = -1;
-  out->fault = wl_sph_guard(dim, &c->k, p, c->cfg.lo, c->cfg.hi, c->cfg.walls, c->cfg.n_walls,
-                            first, &w);
-  out->fault_index = first;
-  out->fault_id = p->id[first];
-  out->fault_kind = p->kind[first];
-  out->fault_wall = w;
-  for (int a = 0; a < WL_SPH_DIM_MAX; a++) {
-    out->fault_pos[a] = a < dim ? p->pos[a][first] : 0;
-    out->fault_vel[a] = a < dim ? p->vel[a][first] : 0;
-  }
-  out->fault_rho = p->rho[first];
+  wl_cpu_guard_report(&c->k, p, &c->cfg, first, limited, excluded, out);
 }
 
 /* The next step (Shao & Lo 2003; seed 003 eq. 20): cfl times the least of

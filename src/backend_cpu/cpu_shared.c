@@ -1,7 +1,9 @@
-/* sort.c: the CPU backends' cell rebuild (sort.h). */
-#include "sort.h"
+/* cpu_shared.c: what the CPU backends share (cpu_shared.h). */
+#include "cpu_shared.h"
 
 #include <omp.h>
+
+#include "wallload/sph/guard.h"
 
 /* d[i] = s[perm[i]] for elements of es bytes; called inside a parallel
  * region (orphaned worksharing loop, no barrier at its end). */
@@ -69,4 +71,25 @@ void wl_cpu_rebuild(struct wl_particles *p, struct wl_particles *alt, unsigned i
   unsigned int *tmp = p->key;
   p->key = *key_tmp;
   *key_tmp = tmp;
+}
+
+void wl_cpu_guard_report(const struct wl_sph_const *k, const struct wl_particles *p,
+                         const struct wl_sph_config *cfg, int first, long limited, long excluded,
+                         struct wl_sph_step_out *out) {
+  const int dim = p->dim;
+  out->fault = WL_SPH_FAULT_NONE;
+  out->n_limited = limited;
+  out->n_excluded = excluded;
+  if (first == p->n) return;
+  int w = -1;
+  out->fault = wl_sph_guard(dim, k, p, cfg->lo, cfg->hi, cfg->walls, cfg->n_walls, first, &w);
+  out->fault_index = first;
+  out->fault_id = p->id[first];
+  out->fault_kind = p->kind[first];
+  out->fault_wall = w;
+  for (int a = 0; a < WL_SPH_DIM_MAX; a++) {
+    out->fault_pos[a] = a < dim ? p->pos[a][first] : 0;
+    out->fault_vel[a] = a < dim ? p->vel[a][first] : 0;
+  }
+  out->fault_rho = p->rho[first];
 }

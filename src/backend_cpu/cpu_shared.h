@@ -1,10 +1,11 @@
-/* sort.h: the CPU backends' cell rebuild (cpu.c, isph.c), written once.
- * Private to src/backend_cpu. */
-#ifndef WL_BACKEND_CPU_SORT_H
-#define WL_BACKEND_CPU_SORT_H
+/* cpu_shared.h: what the CPU backends (cpu.c, isph.c) share: the cell rebuild
+ * and the guard's report. Private to src/backend_cpu. */
+#ifndef WL_BACKEND_CPU_SHARED_H
+#define WL_BACKEND_CPU_SHARED_H
 
 #include <stddef.h>
 
+#include "wallload/backend.h"
 #include "wallload/sph.h"
 #include "wallload/sph/cells.h"
 
@@ -28,5 +29,12 @@ struct wl_cpu_sort_extra {
 void wl_cpu_rebuild(struct wl_particles *p, struct wl_particles *alt, unsigned int **key_tmp,
                     const struct wl_sph_grid *g, int *begin, int *cursor,
                     const struct wl_cpu_sort_extra *extra, int threads);
+
+/* The guard's report of a step into out: the wall limiter's and the domain
+ * exits' counts, and the first particle (lowest index; n: none) that
+ * failed the guard, with its state. */
+void wl_cpu_guard_report(const struct wl_sph_const *k, const struct wl_particles *p,
+                         const struct wl_sph_config *cfg, int first, long limited, long excluded,
+                         struct wl_sph_step_out *out);
 
 #endif
