@@ -116,7 +116,9 @@ static void still(int quick, int dims, const char *symmetry) {
   struct wl_error err;
   wl_error_clear(&err);
   struct wl_assess_opts opts = {0};
-  opts.end_time = quick ? 0.4 : 0.8;
+  /* the sanitizer build's quick run drives the 3D code for memory errors
+   * only (0.15 s, not settled): the Release build checks the forces */
+  opts.end_time = quick ? 0.15 : 0.8;
   struct wl_case_result c;
   enum wl_status st = wl_assess_case(&s, &plan, WL_CASE_STILL, &opts, NULL, &c, &err);
   CHECK_TRUE(st == WL_OK, "3D still water runs to the end without a fault");
@@ -133,8 +135,12 @@ static void still(int quick, int dims, const char *symmetry) {
          "%.2f N/m, %.2f N m/m; modelled width %.3f m\n",
          dims, symmetry, c.n_particles, c.t_reached, c.runtime_s, F, Fb, M, Mb, F0, M0,
          c.flume.width);
-  CHECK_REL(F, F0, 0.01, "3D probe force per metre = rho g d^2/2 (REFERENCES 1.1)");
-  CHECK_REL(Fb, F0, 0.01, "3D boundary-particle force per metre = rho g d^2/2 (REFERENCES 1.1)");
+  if (!quick) {
+    CHECK_REL(F, F0, 0.01, "3D probe force per metre = rho g d^2/2 (REFERENCES 1.1)");
+    CHECK_REL(Fb, F0, 0.01, "3D boundary-particle force per metre = rho g d^2/2 (REFERENCES 1.1)");
+  } else {
+    CHECK_TRUE(isfinite(F) && isfinite(Fb) && c.rec.n > 3, "3D forces finite (quick run)");
+  }
   /* the moments are printed, not checked: at this coarse spacing (10
    * particles over the depth) the probe moment is 4 % high, the probes'
    * profile ending at the wall gauge's surface; the 2D wall test checks
@@ -266,7 +272,7 @@ static void symmetry(int quick) {
       return;
     }
     struct wl_assess_opts opts = {0};
-    opts.end_time = quick ? 0.15 : 0.7;
+    opts.end_time = quick ? 0.15 : 0.55; /* the wave meets the wall from 0.41 s */
     enum wl_status st = wl_assess_case(&s[m], &plan[m], WL_CASE_EXPLOSION, &opts, NULL, &c[m], &err);
     CHECK_TRUE(st == WL_OK, m ? "half flume (symmetry plane) runs" : "whole flume runs");
     if (st) printf("  %s\n", err.msg);
