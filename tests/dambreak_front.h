@@ -12,6 +12,8 @@
 #include <string.h>
 
 #include "testutil.h"
+#include "wallload/scene.h"
+#include "wallload/sph.h"
 
 #define TOL_Z 0.05      /* brief: 5 % in Z (data scatter ~3 %, REFERENCES 2.3) */
 #define TOL_SPEED 0.05  /* front speed dZ/dT */
@@ -49,6 +51,29 @@ static int read_pairs(const char *rel, const char *stop, double *x, double *y, i
   }
   fclose(f);
   return n;
+}
+
+/* The tank both dam-break tests run: walls of `layers` boundary layers
+ * along x = 0, the floor and x = L (5 H high), the column a wide and H high
+ * against x = 0; cfg's domain set around it. */
+static enum wl_status dambreak_tank(struct wl_sph_config *cfg, const struct wl_sph_const *k,
+                                    double a, double H, double L, double dp, int layers,
+                                    struct wl_particles *init, struct wl_error *err) {
+  const double margin = (layers + 2) * dp;
+  cfg->lo[0] = -margin;
+  cfg->hi[0] = L + margin;
+  cfg->lo[1] = -margin;
+  cfg->hi[1] = 6 * H;
+  struct wl_scene sc;
+  wl_scene_init(&sc, k, 0, 0);
+  const double tank_x[4] = {0, 0, L, L}, tank_z[4] = {5 * H, 0, 0, 5 * H};
+  const double lo[2] = {0, 0}, hi[2] = {a, H};
+  enum wl_status st = wl_scene_boundary_polyline(&sc, tank_x, tank_z, 4, layers, WL_KIND_FIXED, 0,
+                                                 cfg, err);
+  if (!st) st = wl_scene_fluid_block(&sc, lo, hi, H, err);
+  if (!st) st = wl_scene_build(&sc, init, err);
+  wl_scene_clear(&sc);
+  return st;
 }
 
 /* The surge front Z = x/a against T = t sqrt(2g/a) (t_scale), a column of

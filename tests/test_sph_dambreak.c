@@ -111,23 +111,11 @@ int main(int argc, char **argv) {
     printf("FAIL const: %s\n", err.msg);
     return 1;
   }
-  const double margin = (layers + 2) * dp;
-  cfg.lo[0] = -margin;
-  cfg.hi[0] = L + margin;
-  cfg.lo[1] = -margin;
-  cfg.hi[1] = 6 * H;
-
-  struct wl_scene sc;
-  wl_scene_init(&sc, &k, 0, 0);
-  const double tank_x[4] = {0, 0, L, L}, tank_z[4] = {5 * H, 0, 0, 5 * H};
-  const double lo[2] = {0, 0}, hi[2] = {A, H};
   struct wl_particles init = {0};
-  if (wl_scene_boundary_polyline(&sc, tank_x, tank_z, 4, layers, WL_KIND_FIXED, 0, &cfg, &err) ||
-      wl_scene_fluid_block(&sc, lo, hi, H, &err) || wl_scene_build(&sc, &init, &err)) {
+  if (dambreak_tank(&cfg, &k, A, H, L, dp, layers, &init, &err)) {
     printf("FAIL scene: %s\n", err.msg);
     return 1;
   }
-  wl_scene_clear(&sc);
   printf("dam break: %d particles (%d boundary), dp = %g m, h = %g m, c0 = %g m/s\n", init.n,
          init.n_bound, dp, k.h_d, k.c0_d);
 
