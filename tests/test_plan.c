@@ -127,6 +127,51 @@ int main(void) {
                 "CPU runtime estimate of seawall.yaml at 0.012 m vs its 2-core run (BENCHMARKS.md)");
     wl_scenario_clear(&sw);
   }
+  /* resolution.particles_per_height: auto, planned to the machine
+   * (wl_plan_choose): on the 2-core machine the coarsest candidate, on an
+   * H100 the finest; each choice's estimated ladder against the whole
+   * `assess` measured on that machine (BENCHMARKS.md "The main job on this
+   * machine": 849.6 s on 2 cores for dp = 0.02, 0.015, 0.012 m; 59.7 s on
+   * the H100, 2026-11-26, for dp = 0.0086, 0.006, 0.0043 m), within 25 %. */
+  {
+    struct wl_scenario sw;
+    struct wl_plan pw;
+    struct wl_error err;
+    wl_error_clear(&err);
+    struct wl_plan_machine cpu = {0}, gpu = {0};
+    cpu.threads = 2;
+    gpu.device_bytes = WL_PLAN_GPU_BYTES;
+    snprintf(gpu.device_name, sizeof gpu.device_name, "H100");
+    const struct wl_plan_machine *machines[2] = {&cpu, &gpu};
+    const double want_pph[2] = {2.0, 5.66}, measured_s[2] = {849.6, 59.7};
+    for (int k = 0; k < 2; k++) {
+      if (!plan_seawall(0, &sw, &pw)) continue;
+      struct wl_plan_choice c;
+      struct wl_plan_cost cost;
+      CHECK_TRUE(sw.resolution.particles_per_height.is_auto &&
+                     wl_plan_choose(&sw, machines[k], &c, &err) == WL_OK && c.is_auto,
+                 "seawall.yaml's particles_per_height auto resolves");
+      CHECK_REL(c.ppH, want_pph[k], 1e-12, k ? "auto on an H100: 5.66" : "auto on 2 cores: 2");
+      CHECK_TRUE(wl_plan_make(&sw, &pw, &err) == WL_OK &&
+                     wl_plan_ladder_cost(&sw, &pw, 1, NULL, &cost, &err) == WL_OK,
+                 "the chosen ladder plans");
+      CHECK_REL(wl_plan_machine_seconds(&cost, machines[k]), measured_s[k], 0.25,
+                k ? "auto's ladder estimate vs its H100 run" : "auto's ladder estimate vs its 2-core run");
+      CHECK_TRUE(c.seconds <= WL_PLAN_AUTO_SECONDS && (k == 1 || c.next_seconds > WL_PLAN_AUTO_SECONDS),
+                 "auto takes the finest candidate within its budget");
+      wl_scenario_clear(&sw);
+    }
+    /* a written value is the user's */
+    if (plan_seawall(0, &sw, &pw)) {
+      struct wl_plan_choice c;
+      sw.resolution.particles_per_height.is_auto = 0;
+      sw.resolution.particles_per_height.q.si = 3.0;
+      CHECK_TRUE(wl_plan_choose(&sw, &gpu, &c, &err) == WL_OK && !c.is_auto &&
+                     sw.resolution.particles_per_height.q.si == 3.0,
+                 "a written particles_per_height is left alone");
+    }
+    wl_scenario_clear(&sw);
+  }
   /* The plan owns h, c0 and the time step's estimate; each case's flume
    * hands the solver the plan's coefficients and depths, so the solver's
    * constants are the plan's to the last bit (issue 20: check printed a

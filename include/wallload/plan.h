@@ -322,6 +322,47 @@ struct wl_plan_machine {
 enum wl_status wl_plan_fits(const struct wl_scenario *s, const struct wl_plan_cost *cost,
                             const struct wl_plan_machine *m, struct wl_error *err);
 
+/* The runtime [s] `cost` would take on machine `m`: the GPU's side-by-side
+ * time when the run goes to a GPU, else the CPU time scaled from
+ * WL_PLAN_CPU_THREADS to m->threads. */
+double wl_plan_machine_seconds(const struct wl_plan_cost *cost, const struct wl_plan_machine *m);
+
+/* resolution.particles_per_height: auto, planned to the machine. The
+ * candidates are a sqrt(2) series; auto takes the finest whose whole plan
+ * (its convergence ladder, as wl_plan_ladder_cost prices it) the machine
+ * runs within WL_PLAN_AUTO_SECONDS and holds in memory, and the coarsest
+ * when none does (wl_plan_fits then says why the run cannot go). The
+ * finest candidate is where the main job's ladder converged on the H100
+ * (seawall.yaml at dp = 0.0086, 0.006, 0.0043 m: the two finest levels'
+ * peak forces within 0.6 % (solitary) and 0.1 % (explosion), probes and
+ * boundary particles within 0.4 %; BENCHMARKS.md, "Speed against
+ * error"): finer costs without a measured gain. The budget is what
+ * the main job's coarsest ladder takes on 2 CPU cores, so a small machine
+ * runs what it ran before and a GPU the converged ladder. A plan made
+ * without wl_plan_choose (a sweep's cases) takes the coarsest. */
+#define WL_PLAN_AUTO_PPH_N 4
+#define WL_PLAN_AUTO_SECONDS (20.0 * 60.0)
+extern const double wl_plan_auto_pph[WL_PLAN_AUTO_PPH_N];
+
+/* What wl_plan_choose chose, for check and assess to print. */
+struct wl_plan_choice {
+  int is_auto;         /* 1: particles_per_height was auto and is now resolved */
+  double ppH;          /* the particles per height chosen */
+  double seconds;      /* its estimated runtime on the machine [s] */
+  double next_seconds; /* the next finer candidate's [s]; 0: none (the finest chosen) */
+};
+
+/* Resolves resolution.particles_per_height: auto in s for machine m (the
+ * value goes to s->resolution.particles_per_height.q.si; is_auto stays, so
+ * the listing still says auto). Leaves a written value alone (c->is_auto
+ * 0). WL_OK, or the status of a plan that cannot be made. */
+enum wl_status wl_plan_choose(struct wl_scenario *s, const struct wl_plan_machine *m,
+                              struct wl_plan_choice *c, struct wl_error *err);
+
+/* One line saying what auto chose and why ("" when nothing was auto). */
+void wl_plan_choice_describe(const struct wl_plan_choice *c, const struct wl_plan_machine *m,
+                             char *buf, size_t size);
+
 /* WL_OK when the plan's solitary case can run; WL_EINPUT, naming
  * loads.solitary and the wall, when its automatic initial crest falls at
  * or behind the wall (a flume shorter than the wave). */

@@ -16,12 +16,22 @@
 
 /* Load a scenario and find and parse its report template (so that a
  * missing or malformed one is refused now, not after the run); `plan`
- * (may be NULL: a sweep plans its cases) is made too. On failure
+ * (may be NULL: a sweep plans its cases) is made too, for the machine
+ * `opts` run on (resolution.particles_per_height: auto; what it chose to
+ * *choice, may be NULL). On failure
  * everything is freed. */
-static enum wl_status load_scenario(const char *path, struct wl_scenario *s, struct wl_plan *plan,
-                                    struct wl_error *err) {
+static enum wl_status load_scenario(const char *path, const struct wl_assess_opts *opts,
+                                    struct wl_scenario *s, struct wl_plan *plan,
+                                    struct wl_plan_choice *choice, struct wl_error *err) {
   wl_scenario_init(s);
   enum wl_status st = wl_scenario_load(path, s, err);
+  if (st == WL_OK && plan) {
+    struct wl_plan_machine m;
+    wl_assess_machine(s, opts, &m);
+    struct wl_plan_choice c;
+    st = wl_plan_choose(s, &m, &c, err);
+    if (choice) *choice = c;
+  }
   if (st == WL_OK && plan) st = wl_plan_make(s, plan, err);
   if (st == WL_OK) {
     struct wl_report_template t;
@@ -36,8 +46,9 @@ static enum wl_status load_scenario(const char *path, struct wl_scenario *s, str
 }
 
 /* A scenario for `assess`: one without a sweep section, planned. */
-static enum wl_status load_and_plan(const char *path, struct wl_scenario *s, struct wl_plan *plan,
-                                    struct wl_error *err) {
+static enum wl_status load_and_plan(const char *path, const struct wl_assess_opts *opts,
+                                    struct wl_scenario *s, struct wl_plan *plan,
+                                    struct wl_plan_choice *choice, struct wl_error *err) {
   wl_scenario_init(s);
   enum wl_status st = wl_scenario_load(path, s, err);
   if (st == WL_OK && s->sweep.present)
@@ -48,13 +59,13 @@ static enum wl_status load_and_plan(const char *path, struct wl_scenario *s, str
                       path, s->sweep.line, s->sweep.col, s->sweep.n_cases, path);
   wl_scenario_clear(s);
   if (st) return st;
-  return load_scenario(path, s, plan, err);
+  return load_scenario(path, opts, s, plan, choice, err);
 }
 
 enum wl_status wl_cli_load_sweep(const char *path, struct wl_scenario *s, struct wl_sweep *sw,
                                  struct wl_error *err) {
   wl_sweep_init(sw);
-  enum wl_status st = load_scenario(path, s, NULL, err);
+  enum wl_status st = load_scenario(path, NULL, s, NULL, NULL, err);
   if (st) return st;
   if ((st = wl_sweep_make(s, sw, err))) {
     wl_sweep_clear(sw);
@@ -256,12 +267,20 @@ enum wl_status wl_cli_check(int argc, char **argv, struct wl_error *err) {
   wl_scenario_clear(&s);
   if (st) return st;
   if (sweep) return check_sweep(path, &opts, budget_s, force_large, err);
-  st = load_scenario(path, &s, &plan, err);
+  struct wl_plan_choice choice;
+  st = load_scenario(path, &opts, &s, &plan, &choice, err);
   if (st) return st;
   printf("Scenario %s (%s): valid\n\nResolved scenario (SI; the value as written beside it)\n",
          s.name.text, s.path);
   wl_scenario_write_resolved(&s, stdout);
   wl_plan_write(&plan, stdout);
+  if (choice.is_auto) {
+    struct wl_plan_machine m;
+    wl_assess_machine(&s, &opts, &m);
+    char line[400];
+    wl_plan_choice_describe(&choice, &m, line, sizeof line);
+    printf("\n%s\n", line);
+  }
   struct wl_plan_cost cost;
   struct wl_error ladder_err; /* printed with the ladder; the plan's own cost then */
   wl_error_clear(&ladder_err);
@@ -467,7 +486,8 @@ static enum wl_status assess_stoppable(void *user, volatile sig_atomic_t *stop,
   const int force_large = a->force_large;
   struct wl_scenario s;
   struct wl_plan plan;
-  enum wl_status st = load_and_plan(path, &s, &plan, err);
+  struct wl_plan_choice choice;
+  enum wl_status st = load_and_plan(path, &opts, &s, &plan, &choice, err);
   if (st) return st;
   struct wl_plan_cost cost;
   struct wl_error ladder_err; /* a level that cannot be planned: the plan's own cost */
@@ -489,6 +509,13 @@ static enum wl_status assess_stoppable(void *user, volatile sig_atomic_t *stop,
     opts.user = &ps;
     fprintf(stderr, "wallload: %s: dp = %g m, about %ld particles, est. %.0f s on the CPU\n",
             path, plan.dp, plan.n_fluid + plan.n_boundary, plan.cpu_seconds);
+    if (choice.is_auto) {
+      struct wl_plan_machine m;
+      wl_assess_machine(&s, &opts, &m);
+      char line[400];
+      wl_plan_choice_describe(&choice, &m, line, sizeof line);
+      fprintf(stderr, "wallload: %s\n", line);
+    }
     if (s.resolution.n_levels) {
       fprintf(stderr, "wallload: convergence ladder of %d levels, dp x", s.resolution.n_levels);
       for (int k = 0; k < s.resolution.n_levels; k++)

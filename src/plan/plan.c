@@ -587,7 +587,9 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
   double smallest = INFINITY;
   if (p->solitary.present) smallest = fmin(smallest, p->solitary.wave.H);
   if (p->explosion.present) smallest = fmin(smallest, p->explosion.eta0);
-  double ppH = s->resolution.particles_per_height.q.si;
+  /* auto not resolved for a machine (wl_plan_choose): the coarsest */
+  const struct wl_scenario_value *ppv = &s->resolution.particles_per_height;
+  const double ppH = ppv->is_auto && !(ppv->q.si > 0) ? wl_plan_auto_pph[0] : ppv->q.si;
   p->dp_target = s->resolution.dp.is_auto ? smallest / ppH : s->resolution.dp.q.si;
   double depth_err = 0.0;
   p->dp = s->resolution.dp.is_auto ? wl_plan_whole_rows_dp(s, p->dp_target, &depth_err)
@@ -1008,6 +1010,79 @@ static void fmt_duration(double s, char *buf, size_t size) {
     snprintf(buf, size, "%.0f days", s / 86400);
 }
 
+double wl_plan_machine_seconds(const struct wl_plan_cost *cost, const struct wl_plan_machine *m) {
+  return m->device_bytes > 0
+             ? cost->gpu_seconds
+             : cost->cpu_seconds * WL_PLAN_CPU_THREADS / (m->threads > 0 ? m->threads : 1);
+}
+
+const double wl_plan_auto_pph[WL_PLAN_AUTO_PPH_N] = {2.0, 2.83, 4.0, 5.66};
+
+/* Whether `cost` fits machine m's memory (as wl_plan_fits judges it). */
+static int fits_memory(const struct wl_plan_cost *cost, const struct wl_plan_machine *m) {
+  if (m->host_bytes > 0 && cost->host_bytes > WL_PLAN_MEMORY_FRACTION * m->host_bytes) return 0;
+  return !(m->device_bytes > 0 && cost->device_bytes > m->device_bytes);
+}
+
+enum wl_status wl_plan_choose(struct wl_scenario *s, const struct wl_plan_machine *m,
+                              struct wl_plan_choice *c, struct wl_error *err) {
+  memset(c, 0, sizeof *c);
+  struct wl_scenario_value *v = &s->resolution.particles_per_height;
+  if (!v->is_auto || !s->resolution.dp.is_auto) return WL_OK;
+  c->is_auto = 1;
+  struct wl_plan *p = malloc(sizeof *p);
+  if (!p) return wl_error_set(err, WL_ENOMEM, "planning particles_per_height: auto: out of memory");
+  enum wl_status st = WL_OK;
+  int chosen = 0;
+  for (int k = 0; k < WL_PLAN_AUTO_PPH_N; k++) {
+    v->q.si = wl_plan_auto_pph[k];
+    struct wl_plan_cost cost;
+    struct wl_error e;
+    wl_error_clear(&e);
+    if ((st = wl_plan_make(s, p, err))) break;
+    if (wl_plan_ladder_cost(s, p, 1, NULL, &cost, &e) != WL_OK) break; /* a level unplannable */
+    const double secs = wl_plan_machine_seconds(&cost, m);
+    if (k == 0) c->seconds = secs;
+    if (k > 0 && (secs > WL_PLAN_AUTO_SECONDS || !fits_memory(&cost, m))) {
+      c->next_seconds = secs;
+      break;
+    }
+    chosen = k;
+    c->seconds = secs;
+  }
+  free(p);
+  v->q.si = c->ppH = wl_plan_auto_pph[chosen];
+  return st;
+}
+
+void wl_plan_choice_describe(const struct wl_plan_choice *c, const struct wl_plan_machine *m,
+                             char *buf, size_t size) {
+  if (!c->is_auto) {
+    if (size) buf[0] = '\0';
+    return;
+  }
+  char where_run[160], took[32], next[32], budget[32];
+  if (m->device_bytes > 0)
+    snprintf(where_run, sizeof where_run, "%s", m->device_name);
+  else
+    snprintf(where_run, sizeof where_run, "%d CPU thread%s", m->threads > 0 ? m->threads : 1,
+             m->threads > 1 ? "s" : "");
+  fmt_duration(c->seconds, took, sizeof took);
+  fmt_duration(WL_PLAN_AUTO_SECONDS, budget, sizeof budget);
+  if (c->next_seconds > 0) {
+    fmt_duration(c->next_seconds, next, sizeof next);
+    snprintf(buf, size,
+             "particles_per_height auto: %.3g on %s (est. %s; the next finer, x 1.41, would take "
+             "%s, beyond auto's %s)",
+             c->ppH, where_run, took, next, budget);
+  } else {
+    snprintf(buf, size,
+             "particles_per_height auto: %.3g on %s (est. %s; the finest auto plans: the main "
+             "job's ladder converged there)",
+             c->ppH, where_run, took);
+  }
+}
+
 enum wl_status wl_plan_fits(const struct wl_scenario *s, const struct wl_plan_cost *cost,
                             const struct wl_plan_machine *m, struct wl_error *err) {
   const int gpu = m->device_bytes > 0;
@@ -1031,8 +1106,7 @@ enum wl_status wl_plan_fits(const struct wl_scenario *s, const struct wl_plan_co
                         "(--backend cpu, %.3g GiB of host memory)",
                         s->path, at, key, cost->device_bytes / 1073741824.0,
                         m->device_bytes / 1073741824.0, m->device_name, cost->host_bytes / 1073741824.0);
-  const double seconds = gpu ? cost->gpu_seconds : cost->cpu_seconds * WL_PLAN_CPU_THREADS /
-                                                       (m->threads > 0 ? m->threads : 1);
+  const double seconds = wl_plan_machine_seconds(cost, m);
   if (m->budget_seconds > 0 && seconds > m->budget_seconds && !m->force_large) {
     char need[32], budget[32], where_run[160];
     if (gpu)

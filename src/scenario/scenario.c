@@ -949,7 +949,9 @@ enum wl_status wl_scenario_load(const char *path, struct wl_scenario *s, struct 
 static void write_value(FILE *out, const char *path, const struct wl_key *k,
                         const struct wl_scenario_value *v) {
   char left[160];
-  if (v->is_auto)
+  if (v->is_auto && v->q.si > 0) /* resolved for the machine (wl_plan_choose) */
+    snprintf(left, sizeof left, "%s: %.3g", v->text, v->q.si);
+  else if (v->is_auto)
     snprintf(left, sizeof left, "%s", v->text);
   else if (k->type == KT_STR || k->type == KT_ENUM)
     snprintf(left, sizeof left, "%s", v->text);

@@ -125,8 +125,10 @@ static const struct wl_key loads_keys[] = {
 static const struct wl_key resolution_keys[] = {
     {"dp", KT_QTY_OR_AUTO, WL_DIM_LENGTH, OFF(resolution.dp), NULL, 0, NONE, 1, 0, "auto", NULL,
      NO_FLAG, 0, "particle spacing, or auto (from particles_per_height)"},
-    {"particles_per_height", KT_QTY, WL_DIM_NONE, OFF(resolution.particles_per_height), NULL, 2,
-     1000, 0, 0, "10", NULL, NO_FLAG, 0, "particles over the smallest wave height when dp is auto"},
+    {"particles_per_height", KT_QTY_OR_AUTO, WL_DIM_NONE, OFF(resolution.particles_per_height),
+     NULL, 2, 1000, 0, 0, "10", NULL, NO_FLAG, 0,
+     "particles over the smallest wave height when dp is auto, or auto (planned to the machine: "
+     "the finest of 2, 2.83, 4, 5.66 whose ladder runs within 20 min)"},
     {"target_error", KT_QTY, WL_DIM_RATIO, OFF(resolution.target_error), NULL, 0, 1, 1, 0, "5 %",
      NULL, NO_FLAG, 0, "relative error at which a convergence ladder stops"},
     {"convergence", KT_LEVELS, WL_DIM_NONE, 0, NULL, 0, 1, 1, 0, NULL, NULL, NO_FLAG, 0,
