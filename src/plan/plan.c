@@ -1039,7 +1039,12 @@ enum wl_status wl_plan_choose(struct wl_scenario *s, const struct wl_plan_machin
     struct wl_plan_cost cost;
     struct wl_error e;
     wl_error_clear(&e);
-    if ((st = wl_plan_make(s, p, err))) break;
+    /* the coarsest must plan (its error is the scenario's); a finer one
+     * that cannot (a limit on particles) ends the search */
+    if (wl_plan_make(s, p, k == 0 ? err : &e) != WL_OK) {
+      if (k == 0) st = err->status;
+      break;
+    }
     if (wl_plan_ladder_cost(s, p, 1, NULL, &cost, &e) != WL_OK) break; /* a level unplannable */
     const double secs = wl_plan_machine_seconds(&cost, m);
     if (k == 0) c->seconds = secs;
