@@ -350,6 +350,7 @@ struct wl_plan_choice {
   double ppH;          /* the particles per height chosen */
   double seconds;      /* its estimated runtime on the machine [s] */
   double next_seconds; /* the next finer candidate's [s]; 0: none (the finest chosen) */
+  int next_too_large;  /* 1: the next finer did not fit the machine's memory */
 };
 
 /* Resolves resolution.particles_per_height: auto in s for machine m (the
@@ -358,6 +359,9 @@ struct wl_plan_choice {
  * 0). WL_OK, or the status of a plan that cannot be made. */
 enum wl_status wl_plan_choose(struct wl_scenario *s, const struct wl_plan_machine *m,
                               struct wl_plan_choice *c, struct wl_error *err);
+
+/* The machine's name for messages: the GPU's, or "N CPU threads". */
+void wl_plan_machine_name(const struct wl_plan_machine *m, char *buf, size_t size);
 
 /* One line saying what auto chose and why ("" when nothing was auto). */
 void wl_plan_choice_describe(const struct wl_plan_choice *c, const struct wl_plan_machine *m,

@@ -512,12 +512,8 @@ static enum wl_status assess_stoppable(void *user, volatile sig_atomic_t *stop,
     wl_assess_machine(&s, &opts, &m);
     const struct wl_plan_cost own = wl_plan_cost_of(&plan);
     char where_run[160];
-    if (m.device_bytes > 0)
-      snprintf(where_run, sizeof where_run, "on %s", m.device_name);
-    else
-      snprintf(where_run, sizeof where_run, "on %d CPU thread%s", m.threads > 0 ? m.threads : 1,
-               m.threads > 1 ? "s" : "");
-    fprintf(stderr, "wallload: %s: dp = %g m, about %ld particles, est. %.0f s %s\n", path,
+    wl_plan_machine_name(&m, where_run, sizeof where_run);
+    fprintf(stderr, "wallload: %s: dp = %g m, about %ld particles, est. %.0f s on %s\n", path,
             plan.dp, plan.n_fluid + plan.n_boundary, wl_plan_machine_seconds(&own, &m), where_run);
     if (choice.is_auto) {
       char line[400];
@@ -528,7 +524,7 @@ static enum wl_status assess_stoppable(void *user, volatile sig_atomic_t *stop,
       fprintf(stderr, "wallload: convergence ladder of %d levels, dp x", s.resolution.n_levels);
       for (int k = 0; k < s.resolution.n_levels; k++)
         fprintf(stderr, "%s %s", k ? "," : "", s.resolution.levels[k].text);
-      fprintf(stderr, "; est. %.0f s %s in all", wl_plan_machine_seconds(&cost, &m), where_run);
+      fprintf(stderr, "; est. %.0f s on %s in all", wl_plan_machine_seconds(&cost, &m), where_run);
       if (s.resolution.target_error.given)
         fprintf(stderr, "; stops once the estimated error is below %s",
                 s.resolution.target_error.text);

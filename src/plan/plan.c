@@ -1050,6 +1050,7 @@ enum wl_status wl_plan_choose(struct wl_scenario *s, const struct wl_plan_machin
     if (k == 0) c->seconds = secs;
     if (k > 0 && (secs > WL_PLAN_AUTO_SECONDS || !fits_memory(&cost, m))) {
       c->next_seconds = secs;
+      c->next_too_large = !fits_memory(&cost, m);
       break;
     }
     chosen = k;
@@ -1060,6 +1061,14 @@ enum wl_status wl_plan_choose(struct wl_scenario *s, const struct wl_plan_machin
   return st;
 }
 
+void wl_plan_machine_name(const struct wl_plan_machine *m, char *buf, size_t size) {
+  if (m->device_bytes > 0)
+    snprintf(buf, size, "%s", m->device_name);
+  else
+    snprintf(buf, size, "%d CPU thread%s", m->threads > 0 ? m->threads : 1,
+             m->threads > 1 ? "s" : "");
+}
+
 void wl_plan_choice_describe(const struct wl_plan_choice *c, const struct wl_plan_machine *m,
                              char *buf, size_t size) {
   if (!c->is_auto) {
@@ -1067,14 +1076,15 @@ void wl_plan_choice_describe(const struct wl_plan_choice *c, const struct wl_pla
     return;
   }
   char where_run[160], took[32], next[32], budget[32];
-  if (m->device_bytes > 0)
-    snprintf(where_run, sizeof where_run, "%s", m->device_name);
-  else
-    snprintf(where_run, sizeof where_run, "%d CPU thread%s", m->threads > 0 ? m->threads : 1,
-             m->threads > 1 ? "s" : "");
+  wl_plan_machine_name(m, where_run, sizeof where_run);
   fmt_duration(c->seconds, took, sizeof took);
   fmt_duration(WL_PLAN_AUTO_SECONDS, budget, sizeof budget);
-  if (c->next_seconds > 0) {
+  if (c->next_too_large) {
+    snprintf(buf, size,
+             "particles_per_height auto: %.3g on %s (est. %s; the next finer, x 1.41, would not "
+             "fit its memory)",
+             c->ppH, where_run, took);
+  } else if (c->next_seconds > 0) {
     fmt_duration(c->next_seconds, next, sizeof next);
     snprintf(buf, size,
              "particles_per_height auto: %.3g on %s (est. %s; the next finer, x 1.41, would take "
@@ -1114,11 +1124,7 @@ enum wl_status wl_plan_fits(const struct wl_scenario *s, const struct wl_plan_co
   const double seconds = wl_plan_machine_seconds(cost, m);
   if (m->budget_seconds > 0 && seconds > m->budget_seconds && !m->force_large) {
     char need[32], budget[32], where_run[160];
-    if (gpu)
-      snprintf(where_run, sizeof where_run, "%s", m->device_name);
-    else
-      snprintf(where_run, sizeof where_run, "%d CPU thread%s", m->threads > 0 ? m->threads : 1,
-               m->threads > 1 ? "s" : "");
+    wl_plan_machine_name(m, where_run, sizeof where_run);
     fmt_duration(seconds, need, sizeof need);
     fmt_duration(m->budget_seconds, budget, sizeof budget);
     return wl_error_set(err, WL_EINPUT,
