@@ -161,6 +161,16 @@ int main(void) {
                  "auto takes the finest candidate within its budget");
       wl_scenario_clear(&sw);
     }
+    /* --budget below auto's 20 min bounds what auto plans */
+    if (plan_seawall(0, &sw, &pw)) {
+      struct wl_plan_choice c;
+      struct wl_plan_machine tight = gpu;
+      tight.budget_seconds = 20.0;
+      CHECK_TRUE(wl_plan_choose(&sw, &tight, &c, &err) == WL_OK && c.limit == 20.0 &&
+                     c.ppH < 5.66 && (c.seconds <= 20.0 || c.ppH == 2.0) && c.next_seconds > 20.0,
+                 "a 20 s budget on an H100: auto plans a coarser ladder within it");
+    }
+    wl_scenario_clear(&sw);
     /* a written value is the user's */
     if (plan_seawall(0, &sw, &pw)) {
       struct wl_plan_choice c;

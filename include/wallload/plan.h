@@ -330,7 +330,8 @@ double wl_plan_machine_seconds(const struct wl_plan_cost *cost, const struct wl_
 /* resolution.particles_per_height: auto, planned to the machine. The
  * candidates are a sqrt(2) series; auto takes the finest whose whole plan
  * (its convergence ladder, as wl_plan_ladder_cost prices it) the machine
- * runs within WL_PLAN_AUTO_SECONDS and holds in memory, and the coarsest
+ * runs within WL_PLAN_AUTO_SECONDS (or the machine's budget, --budget,
+ * where that is less) and holds in memory, and the coarsest
  * when none does (wl_plan_fits then says why the run cannot go). The
  * finest candidate is where the main job's ladder converged on the H100
  * (seawall.yaml at dp = 0.0086, 0.006, 0.0043 m: the two finest levels'
@@ -351,6 +352,8 @@ struct wl_plan_choice {
   double seconds;      /* its estimated runtime on the machine [s] */
   double next_seconds; /* the next finer candidate's [s]; 0: none (the finest chosen) */
   int next_too_large;  /* 1: the next finer did not fit the machine's memory */
+  double limit;        /* the runtime auto planned within [s]: WL_PLAN_AUTO_SECONDS, or
+                          the machine's budget (--budget) where that is less */
 };
 
 /* Resolves resolution.particles_per_height: auto in s for machine m (the

@@ -17,17 +17,19 @@
 /* Load a scenario and find and parse its report template (so that a
  * missing or malformed one is refused now, not after the run); `plan`
  * (may be NULL: a sweep plans its cases) is made too, for the machine
- * `opts` run on (resolution.particles_per_height: auto; what it chose to
- * *choice, may be NULL). On failure
+ * `opts` run on within `budget_s` (--budget; <= 0: the default)
+ * (resolution.particles_per_height: auto; what it chose to *choice, may be
+ * NULL). On failure
  * everything is freed. */
 static enum wl_status load_scenario(const char *path, const struct wl_assess_opts *opts,
-                                    struct wl_scenario *s, struct wl_plan *plan,
+                                    double budget_s, struct wl_scenario *s, struct wl_plan *plan,
                                     struct wl_plan_choice *choice, struct wl_error *err) {
   wl_scenario_init(s);
   enum wl_status st = wl_scenario_load(path, s, err);
   if (st == WL_OK && plan) {
     struct wl_plan_machine m;
     wl_assess_machine(s, opts, &m);
+    if (budget_s > 0) m.budget_seconds = budget_s;
     struct wl_plan_choice c;
     st = wl_plan_choose(s, &m, &c, err);
     if (choice) *choice = c;
@@ -47,7 +49,7 @@ static enum wl_status load_scenario(const char *path, const struct wl_assess_opt
 
 /* A scenario for `assess`: one without a sweep section, planned. */
 static enum wl_status load_and_plan(const char *path, const struct wl_assess_opts *opts,
-                                    struct wl_scenario *s, struct wl_plan *plan,
+                                    double budget_s, struct wl_scenario *s, struct wl_plan *plan,
                                     struct wl_plan_choice *choice, struct wl_error *err) {
   wl_scenario_init(s);
   enum wl_status st = wl_scenario_load(path, s, err);
@@ -59,13 +61,13 @@ static enum wl_status load_and_plan(const char *path, const struct wl_assess_opt
                       path, s->sweep.line, s->sweep.col, s->sweep.n_cases, path);
   wl_scenario_clear(s);
   if (st) return st;
-  return load_scenario(path, opts, s, plan, choice, err);
+  return load_scenario(path, opts, budget_s, s, plan, choice, err);
 }
 
 enum wl_status wl_cli_load_sweep(const char *path, struct wl_scenario *s, struct wl_sweep *sw,
                                  struct wl_error *err) {
   wl_sweep_init(sw);
-  enum wl_status st = load_scenario(path, NULL, s, NULL, NULL, err);
+  enum wl_status st = load_scenario(path, NULL, 0, s, NULL, NULL, err);
   if (st) return st;
   if ((st = wl_sweep_make(s, sw, err))) {
     wl_sweep_clear(sw);
@@ -268,7 +270,7 @@ enum wl_status wl_cli_check(int argc, char **argv, struct wl_error *err) {
   if (st) return st;
   if (sweep) return check_sweep(path, &opts, budget_s, force_large, err);
   struct wl_plan_choice choice;
-  st = load_scenario(path, &opts, &s, &plan, &choice, err);
+  st = load_scenario(path, &opts, budget_s, &s, &plan, &choice, err);
   if (st) return st;
   printf("Scenario %s (%s): valid\n\nResolved scenario (SI; the value as written beside it)\n",
          s.name.text, s.path);
@@ -487,7 +489,7 @@ static enum wl_status assess_stoppable(void *user, volatile sig_atomic_t *stop,
   struct wl_scenario s;
   struct wl_plan plan;
   struct wl_plan_choice choice;
-  enum wl_status st = load_and_plan(path, &opts, &s, &plan, &choice, err);
+  enum wl_status st = load_and_plan(path, &opts, budget_s, &s, &plan, &choice, err);
   if (st) return st;
   struct wl_plan_cost cost;
   struct wl_error ladder_err; /* a level that cannot be planned: the plan's own cost */

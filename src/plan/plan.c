@@ -1030,6 +1030,8 @@ enum wl_status wl_plan_choose(struct wl_scenario *s, const struct wl_plan_machin
   struct wl_scenario_value *v = &s->resolution.particles_per_height;
   if (!v->is_auto || !s->resolution.dp.is_auto) return WL_OK;
   c->is_auto = 1;
+  c->limit = m->budget_seconds > 0 ? fmin(WL_PLAN_AUTO_SECONDS, m->budget_seconds)
+                                   : WL_PLAN_AUTO_SECONDS;
   struct wl_plan *p = malloc(sizeof *p);
   if (!p) return wl_error_set(err, WL_ENOMEM, "planning particles_per_height: auto: out of memory");
   enum wl_status st = WL_OK;
@@ -1048,7 +1050,7 @@ enum wl_status wl_plan_choose(struct wl_scenario *s, const struct wl_plan_machin
     if (wl_plan_ladder_cost(s, p, 1, NULL, &cost, &e) != WL_OK) break; /* a level unplannable */
     const double secs = wl_plan_machine_seconds(&cost, m);
     if (k == 0) c->seconds = secs;
-    if (k > 0 && (secs > WL_PLAN_AUTO_SECONDS || !fits_memory(&cost, m))) {
+    if (k > 0 && (secs > c->limit || !fits_memory(&cost, m))) {
       c->next_seconds = secs;
       c->next_too_large = !fits_memory(&cost, m);
       break;
@@ -1078,7 +1080,7 @@ void wl_plan_choice_describe(const struct wl_plan_choice *c, const struct wl_pla
   char where_run[160], took[32], next[32], budget[32];
   wl_plan_machine_name(m, where_run, sizeof where_run);
   fmt_duration(c->seconds, took, sizeof took);
-  fmt_duration(WL_PLAN_AUTO_SECONDS, budget, sizeof budget);
+  fmt_duration(c->limit, budget, sizeof budget);
   if (c->next_too_large) {
     snprintf(buf, size,
              "particles_per_height auto: %.3g on %s (est. %s; the next finer, x 1.41, would not "
