@@ -354,6 +354,7 @@ struct wl_plan_choice {
   int next_too_large;  /* 1: the next finer did not fit the machine's memory */
   double limit;        /* the runtime auto planned within [s]: WL_PLAN_AUTO_SECONDS, or
                           the machine's budget (--budget) where that is less */
+  struct wl_plan_machine machine; /* the machine it was planned for (also when not auto) */
 };
 
 /* Resolves resolution.particles_per_height: auto in s for machine m (the
@@ -367,8 +368,7 @@ enum wl_status wl_plan_choose(struct wl_scenario *s, const struct wl_plan_machin
 void wl_plan_machine_name(const struct wl_plan_machine *m, char *buf, size_t size);
 
 /* One line saying what auto chose and why ("" when nothing was auto). */
-void wl_plan_choice_describe(const struct wl_plan_choice *c, const struct wl_plan_machine *m,
-                             char *buf, size_t size);
+void wl_plan_choice_describe(const struct wl_plan_choice *c, char *buf, size_t size);
 
 /* WL_OK when the plan's solitary case can run; WL_EINPUT, naming
  * loads.solitary and the wall, when its automatic initial crest falls at

@@ -18,8 +18,8 @@
  * missing or malformed one is refused now, not after the run); `plan`
  * (may be NULL: a sweep plans its cases) is made too, for the machine
  * `opts` run on within `budget_s` (--budget; <= 0: the default)
- * (resolution.particles_per_height: auto; what it chose to *choice, may be
- * NULL). On failure
+ * (resolution.particles_per_height: auto; what it chose, and the machine,
+ * to *choice, may be NULL). On failure
  * everything is freed. */
 static enum wl_status load_scenario(const char *path, const struct wl_assess_opts *opts,
                                     double budget_s, struct wl_scenario *s, struct wl_plan *plan,
@@ -277,10 +277,8 @@ enum wl_status wl_cli_check(int argc, char **argv, struct wl_error *err) {
   wl_scenario_write_resolved(&s, stdout);
   wl_plan_write(&plan, stdout);
   if (choice.is_auto) {
-    struct wl_plan_machine m;
-    wl_assess_machine(&s, &opts, &m);
     char line[400];
-    wl_plan_choice_describe(&choice, &m, line, sizeof line);
+    wl_plan_choice_describe(&choice, line, sizeof line);
     printf("\n%s\n", line);
   }
   struct wl_plan_cost cost;
@@ -510,8 +508,7 @@ static enum wl_status assess_stoppable(void *user, volatile sig_atomic_t *stop,
     opts.progress = wl_cli_show_progress;
     opts.user = &ps;
     /* estimates for the machine the run goes to */
-    struct wl_plan_machine m;
-    wl_assess_machine(&s, &opts, &m);
+    const struct wl_plan_machine m = choice.machine;
     const struct wl_plan_cost own = wl_plan_cost_of(&plan);
     char where_run[160];
     wl_plan_machine_name(&m, where_run, sizeof where_run);
@@ -519,7 +516,7 @@ static enum wl_status assess_stoppable(void *user, volatile sig_atomic_t *stop,
             plan.dp, plan.n_fluid + plan.n_boundary, wl_plan_machine_seconds(&own, &m), where_run);
     if (choice.is_auto) {
       char line[400];
-      wl_plan_choice_describe(&choice, &m, line, sizeof line);
+      wl_plan_choice_describe(&choice, line, sizeof line);
       fprintf(stderr, "wallload: %s\n", line);
     }
     if (s.resolution.n_levels) {

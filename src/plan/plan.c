@@ -1027,6 +1027,7 @@ static int fits_memory(const struct wl_plan_cost *cost, const struct wl_plan_mac
 enum wl_status wl_plan_choose(struct wl_scenario *s, const struct wl_plan_machine *m,
                               struct wl_plan_choice *c, struct wl_error *err) {
   memset(c, 0, sizeof *c);
+  c->machine = *m;
   struct wl_scenario_value *v = &s->resolution.particles_per_height;
   if (!v->is_auto || !s->resolution.dp.is_auto) return WL_OK;
   c->is_auto = 1;
@@ -1071,14 +1072,13 @@ void wl_plan_machine_name(const struct wl_plan_machine *m, char *buf, size_t siz
              m->threads > 1 ? "s" : "");
 }
 
-void wl_plan_choice_describe(const struct wl_plan_choice *c, const struct wl_plan_machine *m,
-                             char *buf, size_t size) {
+void wl_plan_choice_describe(const struct wl_plan_choice *c, char *buf, size_t size) {
   if (!c->is_auto) {
     if (size) buf[0] = '\0';
     return;
   }
   char where_run[160], took[32], next[32], budget[32];
-  wl_plan_machine_name(m, where_run, sizeof where_run);
+  wl_plan_machine_name(&c->machine, where_run, sizeof where_run);
   fmt_duration(c->seconds, took, sizeof took);
   fmt_duration(c->limit, budget, sizeof budget);
   if (c->next_too_large) {
