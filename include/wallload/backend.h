@@ -296,6 +296,12 @@ struct wl_backend_ops {
                                   double *moment, struct wl_error *err);
   enum wl_status (*run_start)(void *ctx, const struct wl_sph_block_in *in, struct wl_error *err);
   enum wl_status (*run_finish)(void *ctx, struct wl_sph_block_out *out, struct wl_error *err);
+  /* Optional (NULL: the backend's state cannot be edited from the host):
+   * overwrite the state fields (WL_FIELD_SORT) with host's, particles in
+   * the order the last download gave them, with no step between the two.
+   * For a driver that edits particles between steps (vres.h: the buffers'
+   * interpolated values, particles parked and revived). */
+  enum wl_status (*upload)(void *ctx, const struct wl_particles *host, struct wl_error *err);
 };
 
 /* Most wall loads one snapshot computes (backend.h snapshot). */

@@ -212,6 +212,13 @@ enum wl_status wl_sph_sim_run(struct wl_sph_sim *sim, const struct wl_sph_run_op
  * particle. NULL on failure (err set). */
 const struct wl_particles *wl_sph_sim_particles(struct wl_sph_sim *sim, struct wl_error *err);
 
+/* The host copy of the state for editing between steps (src/sph/vres.c:
+ * buffer values, particles parked and revived), as wl_sph_sim_particles;
+ * wl_sph_sim_commit writes it back before the next step. Only for a backend
+ * with upload (backend.h; WL_EUNSUPPORTED otherwise) and outside a run. */
+struct wl_particles *wl_sph_sim_edit(struct wl_sph_sim *sim, struct wl_error *err);
+enum wl_status wl_sph_sim_commit(struct wl_sph_sim *sim, struct wl_error *err);
+
 /* The load of the fluid on the boundary particles tagged `body` (1 ..
  * WL_SPH_BODY_TAG_MAX; the flume tags its seawall WL_FLUME_BODY_WALL) in
  * the current state, computed by the backend with the solver's own pair

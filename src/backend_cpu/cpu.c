@@ -422,6 +422,14 @@ static enum wl_status cpu_download(void *ctx, struct wl_particles *host, struct 
   return wl_particles_copy_state(host, &c->p, err);
 }
 
+static enum wl_status cpu_upload(void *ctx, const struct wl_particles *host, struct wl_error *err) {
+  struct cpu *c = ctx;
+  if (host->n != c->p.n || host->n_bound != c->p.n_bound)
+    return wl_error_set(err, WL_EINPUT, "cpu backend: upload of %d particles (%d boundary) into "
+                        "%d (%d)", host->n, host->n_bound, c->p.n, c->p.n_bound);
+  return wl_particles_copy_state(&c->p, host, err);
+}
+
 static enum wl_status cpu_init(void **ctx, const struct wl_sph_config *cfg,
                                const struct wl_sph_const *k, const struct wl_particles *host,
                                struct wl_sph_step_out *out, struct wl_error *err) {
@@ -506,4 +514,5 @@ const struct wl_backend_ops wl_backend_cpu_ops = {
     .describe = cpu_describe,
     .free = cpu_free,
     .wall_load = cpu_wall_load,
+    .upload = cpu_upload,
 };

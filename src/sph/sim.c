@@ -469,6 +469,22 @@ const struct wl_particles *wl_sph_sim_particles(struct wl_sph_sim *sim, struct w
   return &sim->host;
 }
 
+struct wl_particles *wl_sph_sim_edit(struct wl_sph_sim *sim, struct wl_error *err) {
+  if (!sim->ops->upload) {
+    wl_error_set(err, WL_EUNSUPPORTED, "%s backend: its particles cannot be edited between steps",
+                 sim->ops->name);
+    return NULL;
+  }
+  finish_pending(sim);
+  sim->snap = 0;
+  return (struct wl_particles *)wl_sph_sim_particles(sim, err);
+}
+
+enum wl_status wl_sph_sim_commit(struct wl_sph_sim *sim, struct wl_error *err) {
+  if (!sim->host_valid) return wl_error_set(err, WL_EINPUT, "sph: commit without an edit");
+  return sim->ops->upload(sim->ctx, &sim->host, err);
+}
+
 enum wl_status wl_sph_sim_wall_load(struct wl_sph_sim *sim, int body, double z_ref,
                                     double *force, double *moment, struct wl_error *err) {
   *force = *moment = 0.0;

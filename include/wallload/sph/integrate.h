@@ -95,6 +95,14 @@ WL_HD static WL_INLINE void wl_sph_predict(const int dim, const struct wl_sph_co
     }
     return;
   }
+  if (kind == WL_KIND_FLUID && p->body[i] == WL_SPH_BODY_BUFFER) { /* particles.h */
+    p->rho_h[i] = p->rho[i];
+    for (int a = 0; a < dim; a++) {
+      p->vel_h[a][i] = p->vel[a][i];
+      p->pos_h[a][i] = p->pos[a][i];
+    }
+    return;
+  }
   if (kind == WL_KIND_FLUID) {
     const wl_real rho = p->rho[i] + hdt * p->ar[i];
     p->rho_h[i] = rho > k->rho_floor ? rho : k->rho_floor; /* params.h tension_max */
@@ -121,6 +129,7 @@ WL_HD static WL_INLINE void wl_sph_correct(const int dim, const struct wl_sph_co
                                            const struct wl_particles *p, double dt,
                                            const double (*body_vel)[WL_SPH_DIM_MAX], int i) {
   if (p->kind[i] == WL_KIND_FLUID && p->body[i] == WL_SPH_BODY_EXCLUDED) return; /* guard.h */
+  if (p->kind[i] == WL_KIND_FLUID && p->body[i] == WL_SPH_BODY_BUFFER) return; /* particles.h */
   const wl_real eps = -(p->ar[i] / p->rho_h[i]) * (wl_real)dt;
   const wl_real rho = p->rho[i] * (WL_R(2.0) - eps) / (WL_R(2.0) + eps);
   if (p->kind[i] == WL_KIND_FLUID) {
@@ -155,6 +164,11 @@ WL_HD static WL_INLINE void wl_sph_verlet(const int dim, const struct wl_sph_con
                                           const double (*body_vel)[WL_SPH_DIM_MAX], int euler,
                                           int i) {
   if (p->kind[i] == WL_KIND_FLUID && p->body[i] == WL_SPH_BODY_EXCLUDED) return; /* guard.h */
+  if (p->kind[i] == WL_KIND_FLUID && p->body[i] == WL_SPH_BODY_BUFFER) { /* particles.h */
+    for (int a = 0; a < dim; a++) p->vel_h[a][i] = p->vel[a][i];
+    p->rho_h[i] = p->rho[i];
+    return;
+  }
   const wl_real span = (wl_real)(euler ? dt : dt_prev + dt);
   const wl_real rho_n = p->rho[i];
   const wl_real rho = (euler ? rho_n : p->rho_h[i]) + span * p->ar[i];

@@ -1,0 +1,450 @@
+/* vres.c: variable resolution by coupled subdomains (vres.h). Every level
+ * is a wl_sph_sim of its own; between steps the driver edits their host
+ * copies (wl_sph_sim_edit / _commit): classification, the buffers' fit from
+ * the other level, removal and creation. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "wallload/sph/kernel.h"
+#include "wallload/sph/vres_fit.h"
+#include "wallload/vres.h"
+
+#define NO_PARTICLE 0xffffffffu
+/* A flux point with no fluid particle of its level nearer than this (in
+ * dp) gets one. */
+#define WL_VRES_HOLE 0.9
+
+/* The donors of one level on a host cell grid of side 2h. */
+struct donor_grid {
+  double x0, z0, cell;
+  int nx, nz;
+  int *start; /* nx nz + 1 */
+  int *idx;   /* particle indices, by cell */
+  int n, cap_cells, cap_idx;
+};
+
+struct level {
+  struct wl_sph_sim *sim;
+  const struct wl_sph_const *k;
+  double lo, hi, w, dp, h, mass;
+  double park_lo[2], park_hi[2];
+  int park_nx, park_nz;
+  long park_next;
+  int n_points;
+  double *pt_x, *pt_z, *pt_n, *acc; /* flux points: position, inward normal (+-1 in x), account */
+  int n_sites;
+  double *site_x, *site_z;
+  unsigned int *site_id; /* the id of the particle at the site, NO_PARTICLE when dry */
+  int *index_of;         /* id -> index in the host copy, rebuilt each coupling */
+  struct donor_grid grid;
+  struct wl_vres_counts cnt;
+};
+
+struct wl_vres {
+  int n, dim;
+  double t, z_bed, z_top;
+  struct level lv[WL_VRES_LEVELS_MAX];
+};
+
+static void grid_free(struct donor_grid *g) {
+  free(g->start);
+  free(g->idx);
+  memset(g, 0, sizeof *g);
+}
+
+void wl_vres_free(struct wl_vres *v) {
+  if (!v) return;
+  for (int l = 0; l < v->n; l++) {
+    struct level *L = &v->lv[l];
+    wl_sph_sim_free(L->sim);
+    free(L->pt_x);
+    free(L->pt_z);
+    free(L->pt_n);
+    free(L->acc);
+    free(L->site_x);
+    free(L->site_z);
+    free(L->site_id);
+    free(L->index_of);
+    grid_free(&L->grid);
+  }
+  free(v);
+}
+
+static int owns(const struct level *L, double x) { return x >= L->lo && x <= L->hi; }
+
+/* Park particle i of level L at rest in its next slot (vres.h). */
+static void park(struct level *L, struct wl_particles *p, int i) {
+  const long s = L->park_next++ % ((long)L->park_nx * L->park_nz);
+  const double sx = (L->park_hi[0] - L->park_lo[0]) / L->park_nx;
+  const double sz = (L->park_hi[1] - L->park_lo[1]) / L->park_nz;
+  p->pos[0][i] = L->park_lo[0] + ((double)(s % L->park_nx) + 0.5) * sx;
+  p->pos[1][i] = L->park_lo[1] + ((double)(s / L->park_nx) + 0.5) * sz;
+  p->vel[0][i] = p->vel[1][i] = 0;
+  p->rho[i] = L->k->rho0;
+  p->body[i] = WL_SPH_BODY_EXCLUDED;
+}
+
+/* Whether particle i of level L is a donor: its fluid in its own range;
+ * and its boundary and buffer particles, which count towards a point's
+ * wetness only (the water beside a wall, and across the level's own
+ * interface). */
+static int donor(const struct level *L, const struct wl_particles *p, int i) {
+  return p->kind[i] != WL_KIND_FLUID || p->body[i] == WL_SPH_BODY_BUFFER ||
+         (p->body[i] == 0 && owns(L, p->pos[0][i]));
+}
+
+static int fit_donor(const struct level *L, const struct wl_particles *p, int j) {
+  return p->kind[j] == WL_KIND_FLUID && p->body[j] == 0 && owns(L, p->pos[0][j]);
+}
+
+/* The donor grid of level L. */
+static enum wl_status grid_build(struct level *L, const struct wl_particles *p, struct wl_error *err) {
+  struct donor_grid *g = &L->grid;
+  double x0 = INFINITY, x1 = -INFINITY, z0 = INFINITY, z1 = -INFINITY;
+  int n = 0;
+  for (int i = 0; i < p->n; i++) {
+    if (!donor(L, p, i)) continue;
+    x0 = fmin(x0, p->pos[0][i]), x1 = fmax(x1, p->pos[0][i]);
+    z0 = fmin(z0, p->pos[1][i]), z1 = fmax(z1, p->pos[1][i]);
+    n++;
+  }
+  g->n = n;
+  if (n == 0) return WL_OK;
+  g->cell = 2.0 * L->h;
+  g->x0 = x0, g->z0 = z0;
+  g->nx = (int)((x1 - x0) / g->cell) + 1;
+  g->nz = (int)((z1 - z0) / g->cell) + 1;
+  const int nc = g->nx * g->nz;
+  if (nc + 1 > g->cap_cells) {
+    free(g->start);
+    g->start = malloc(sizeof(int) * (size_t)(nc + 1));
+    g->cap_cells = g->start ? nc + 1 : 0;
+  }
+  if (n > g->cap_idx) {
+    free(g->idx);
+    g->idx = malloc(sizeof(int) * (size_t)n);
+    g->cap_idx = g->idx ? n : 0;
+  }
+  if (!g->start || !g->idx)
+    return wl_error_set(err, WL_ENOMEM, "vres: out of memory for a donor grid of %d cells", nc);
+  memset(g->start, 0, sizeof(int) * (size_t)(nc + 1));
+  for (int i = 0; i < p->n; i++) {
+    if (!donor(L, p, i)) continue;
+    const int cx = (int)((p->pos[0][i] - x0) / g->cell), cz = (int)((p->pos[1][i] - z0) / g->cell);
+    g->start[cz * g->nx + cx + 1]++;
+  }
+  for (int c = 0; c < nc; c++) g->start[c + 1] += g->start[c];
+  for (int i = 0; i < p->n; i++) { /* fill, then shift back */
+    if (!donor(L, p, i)) continue;
+    const int cx = (int)((p->pos[0][i] - x0) / g->cell), cz = (int)((p->pos[1][i] - z0) / g->cell);
+    g->idx[g->start[cz * g->nx + cx]++] = i;
+  }
+  for (int c = nc; c > 0; c--) g->start[c] = g->start[c - 1];
+  g->start[0] = 0;
+  return WL_OK;
+}
+
+/* The fit at (x, z) from donor level D (its host particles p); *wet: the
+ * Shepard sum of its fluid and boundary particles there (a point under the
+ * water, or under it beside a wall, sums to 0.5 or more). */
+static int fit_at(const struct level *D, const struct wl_particles *p, double x, double z,
+                  double *out, double *wet) {
+  const struct donor_grid *g = &D->grid;
+  struct wl_vres_fit f;
+  wl_vres_fit_init(&f, 2, D->h);
+  double sum = 0;
+  *wet = 0;
+  if (g->n == 0) return -1;
+  const int cx = (int)floor((x - g->x0) / g->cell), cz = (int)floor((z - g->z0) / g->cell);
+  const double s2 = 4.0 * D->h * D->h;
+  for (int jz = cz - 1; jz <= cz + 1; jz++) {
+    if (jz < 0 || jz >= g->nz) continue;
+    for (int jx = cx - 1; jx <= cx + 1; jx++) {
+      if (jx < 0 || jx >= g->nx) continue;
+      const int c = jz * g->nx + jx;
+      for (int q = g->start[c]; q < g->start[c + 1]; q++) {
+        const int j = g->idx[q];
+        const double d[2] = {p->pos[0][j] - x, p->pos[1][j] - z};
+        const double r2 = d[0] * d[0] + d[1] * d[1];
+        if (r2 >= s2) continue;
+        const double w = (double)wl_sph_kernel_w(D->k, (wl_real)r2);
+        const double vol = D->mass / (double)p->rho[j];
+        sum += vol * w;
+        if (!fit_donor(D, p, j)) continue;
+        const double F = (double)wl_sph_kernel_f(D->k, (wl_real)r2);
+        const double val[3] = {p->rho[j], p->vel[0][j], p->vel[1][j]};
+        wl_vres_fit_add(&f, d, w, F, vol, val);
+      }
+    }
+  }
+  *wet = sum;
+  return wl_vres_fit_solve(&f, out);
+}
+
+/* A parked particle of level L (index), or -1. */
+static int take_parked(const struct wl_particles *p, int *cursor) {
+  for (; *cursor < p->n; (*cursor)++)
+    if (p->kind[*cursor] == WL_KIND_FLUID && p->body[*cursor] == WL_SPH_BODY_EXCLUDED) return (*cursor)++;
+  return -1;
+}
+
+/* Level L's fluid that left its own range is removed (vres.h); the id ->
+ * index map of its host copy. */
+static void classify(struct level *L, struct wl_particles *p) {
+  for (int i = 0; i < p->n; i++) L->index_of[p->id[i]] = i;
+  for (int i = p->n_bound; i < p->n; i++)
+    if (p->body[i] == 0 && !owns(L, p->pos[0][i])) {
+      park(L, p, i);
+      L->cnt.removed++;
+    }
+}
+
+/* The sites of level L from donor level D, then the flux points'
+ * creation. */
+static enum wl_status refill(struct level *L, struct wl_particles *p, const struct level *D,
+                             const struct wl_particles *pd, double dt, struct wl_error *err) {
+  double val[3], sh;
+  int cursor = p->n_bound;
+  for (int s = 0; s < L->n_sites; s++) {
+    const int r = fit_at(D, pd, L->site_x[s], L->site_z[s], val, &sh);
+    int i = L->site_id[s] == NO_PARTICLE ? -1 : L->index_of[L->site_id[s]];
+    if (r < 0 || sh < WL_VRES_WET_MIN) { /* dry */
+      if (i >= 0) park(L, p, i);
+      L->site_id[s] = NO_PARTICLE;
+      continue;
+    }
+    if (i < 0) {
+      i = take_parked(p, &cursor);
+      if (i < 0)
+        return wl_error_set(err, WL_ENOMEM, "vres: level of dp %g m has no parked particle left "
+                            "for the site (%g, %g) m", L->dp, L->site_x[s], L->site_z[s]);
+      p->pos[0][i] = L->site_x[s];
+      p->pos[1][i] = L->site_z[s];
+      p->body[i] = WL_SPH_BODY_BUFFER;
+      L->site_id[s] = p->id[i];
+    }
+    p->rho[i] = (wl_real)val[0];
+    p->vel[0][i] = (wl_real)val[1];
+    p->vel[1][i] = (wl_real)val[2];
+    if (r == 1) L->cnt.fitted++;
+    else L->cnt.shepard++;
+  }
+  for (int q = 0; q < L->n_points; q++) {
+    const int r = fit_at(D, pd, L->pt_x[q], L->pt_z[q], val, &sh);
+    if (r < 0 || sh < WL_VRES_WET_MIN) {
+      L->acc[q] = 0;
+      continue;
+    }
+    const double flux = val[0] * val[1] * L->pt_n[q] * L->dp * dt;
+    L->acc[q] = fmax(0.0, L->acc[q] + flux);
+    if (flux > 0) L->cnt.flux_in += flux;
+    const double xn = L->pt_x[q] + 0.5 * L->dp * L->pt_n[q], zn = L->pt_z[q];
+    double d2 = INFINITY; /* the nearest fluid particle of the level */
+    for (int i = p->n_bound; i < p->n; i++) {
+      if (p->body[i] != 0) continue;
+      const double dx = p->pos[0][i] - xn, dz = p->pos[1][i] - zn;
+      d2 = fmin(d2, dx * dx + dz * dz);
+    }
+    /* a whole mass flowed in and its place is free, or a hole (what one
+     * particle's jitter across the interface removed) */
+    const int hole = d2 > WL_VRES_HOLE * WL_VRES_HOLE * L->dp * L->dp;
+    if (!(hole || (L->acc[q] >= L->mass && d2 >= 0.25 * L->dp * L->dp))) continue;
+    const int i = take_parked(p, &cursor);
+    if (i < 0)
+      return wl_error_set(err, WL_ENOMEM, "vres: level of dp %g m has no parked particle left to "
+                          "create at (%g, %g) m (raise its spare)", L->dp, xn, zn);
+    p->pos[0][i] = xn;
+    p->pos[1][i] = zn;
+    p->rho[i] = (wl_real)val[0];
+    p->vel[0][i] = (wl_real)val[1];
+    p->vel[1][i] = (wl_real)val[2];
+    p->body[i] = 0;
+    L->acc[q] = fmax(0.0, L->acc[q] - L->mass);
+    L->cnt.created++;
+  }
+  return WL_OK;
+}
+
+/* The coupling after a step of dt (0: the initial state). */
+static enum wl_status couple(struct wl_vres *v, double dt, struct wl_error *err) {
+  struct wl_particles *p[WL_VRES_LEVELS_MAX];
+  for (int l = 0; l < v->n; l++) {
+    p[l] = wl_sph_sim_edit(v->lv[l].sim, err);
+    if (!p[l]) return err->status;
+    classify(&v->lv[l], p[l]);
+  }
+  for (int l = 0; l < v->n; l++) {
+    const enum wl_status st = grid_build(&v->lv[l], p[l], err);
+    if (st) return st;
+  }
+  for (int l = 0; l < v->n; l++) {
+    const int d = 1 - l;
+    const enum wl_status st = refill(&v->lv[l], p[l], &v->lv[d], p[d], dt, err);
+    if (st) return st;
+  }
+  for (int l = 0; l < v->n; l++) {
+    const enum wl_status st = wl_sph_sim_commit(v->lv[l].sim, err);
+    if (st) return st;
+  }
+  return WL_OK;
+}
+
+/* The initial particles of a level with `spare` parked ones appended. */
+static enum wl_status with_spares(struct level *L, const struct wl_particles *in, int spare,
+                                  struct wl_particles *out, struct wl_error *err) {
+  enum wl_status st = wl_particles_alloc(out, in->dim, in->n + spare, 0, err);
+  if (st) return st;
+  st = wl_particles_copy_state(out, in, err);
+  if (st) return st;
+  for (int s = 0; s < spare; s++) {
+    const int i = in->n + s;
+    out->kind[i] = WL_KIND_FLUID;
+    out->id[i] = (unsigned int)i;
+    park(L, out, i);
+  }
+  out->n = in->n + spare;
+  return WL_OK;
+}
+
+static enum wl_status level_init(struct wl_vres *v, struct level *L, const struct wl_backend_ops *ops,
+                                 const struct wl_vres_level_spec *s, const struct wl_vres_opts *o,
+                                 struct wl_error *err) {
+  const struct wl_sph_params *prm = &s->cfg->prm;
+  if (prm->dim != 2)
+    return wl_error_set(err, WL_EUNSUPPORTED, "vres: %dD; this stage couples 2D levels", prm->dim);
+  if (prm->integrator != WL_SPH_SYMPLECTIC)
+    return wl_error_set(err, WL_EUNSUPPORTED, "vres: the levels step with the symplectic "
+                        "integrator (buffers hold their values through its two halves)");
+  if (!ops->upload)
+    return wl_error_set(err, WL_EUNSUPPORTED, "vres: the %s backend cannot take edited particles "
+                        "back (backend.h upload)", ops->name);
+  if (!(s->own_lo < s->own_hi))
+    return wl_error_set(err, WL_EINPUT, "vres: a level owns x in [%g, %g] m; need lo < hi",
+                        s->own_lo, s->own_hi);
+  if (!(s->park_hi[0] > s->park_lo[0] && s->park_hi[1] > s->park_lo[1]))
+    return wl_error_set(err, WL_EINPUT, "vres: empty parking rectangle");
+  struct wl_sph_const k;
+  enum wl_status st = wl_sph_const_make(prm, &k, err);
+  if (st) return st;
+  L->lo = s->own_lo, L->hi = s->own_hi;
+  L->dp = prm->dp, L->h = (double)k.h, L->mass = (double)k.mass;
+  const double bh = o && o->buffer_h > 0 ? o->buffer_h : 2.0;
+  L->w = ceil(bh * L->h / L->dp - 1e-9) * L->dp; /* whole rows of its lattice */
+  memcpy(L->park_lo, s->park_lo, sizeof L->park_lo);
+  memcpy(L->park_hi, s->park_hi, sizeof L->park_hi);
+  const double slot = 2.2 * L->h; /* slots out of each other's reach */
+  L->park_nx = (int)fmax(1.0, floor((L->park_hi[0] - L->park_lo[0]) / slot));
+  L->park_nz = (int)fmax(1.0, floor((L->park_hi[1] - L->park_lo[1]) / slot));
+  /* the sites: the band's lattice from the bed up to z_top; the flux
+   * points: one a row on each interface */
+  const int rows = (int)floor((v->z_top - v->z_bed) / L->dp + 1e-9);
+  const int cols = (int)lround(L->w / L->dp);
+  const int ends = isfinite(L->lo) + isfinite(L->hi);
+  if (rows < 1)
+    return wl_error_set(err, WL_EINPUT, "vres: z_top %g m is not a row above z_bed %g m", v->z_top,
+                        v->z_bed);
+  L->n_sites = rows * cols * ends;
+  L->n_points = rows * ends;
+  L->site_x = calloc((size_t)L->n_sites, sizeof(double));
+  L->site_z = calloc((size_t)L->n_sites, sizeof(double));
+  L->site_id = calloc((size_t)L->n_sites, sizeof(unsigned int));
+  L->pt_x = calloc((size_t)L->n_points, sizeof(double));
+  L->pt_z = calloc((size_t)L->n_points, sizeof(double));
+  L->pt_n = calloc((size_t)L->n_points, sizeof(double));
+  L->acc = calloc((size_t)L->n_points, sizeof(double));
+  const int n_all = s->initial->n + L->n_sites + (s->spare > 0 ? s->spare : 0);
+  L->index_of = calloc((size_t)n_all, sizeof(int));
+  if (!L->site_x || !L->site_z || !L->site_id || !L->pt_x || !L->pt_z || !L->pt_n || !L->acc ||
+      !L->index_of)
+    return wl_error_set(err, WL_ENOMEM, "vres: out of memory for %d sites", L->n_sites);
+  int q = 0, t = 0;
+  for (int e = 0; e < 2; e++) {
+    const double edge = e == 0 ? L->lo : L->hi;
+    if (!isfinite(edge)) continue;
+    const double n = e == 0 ? 1.0 : -1.0; /* into the level */
+    for (int r = 0; r < rows; r++, q++) {
+      L->pt_n[q] = n;
+      L->pt_x[q] = edge;
+      L->pt_z[q] = v->z_bed + (r + 0.5) * L->dp;
+      for (int c = 0; c < cols; c++, t++) {
+        L->site_x[t] = edge - n * (c + 0.5) * L->dp;
+        L->site_z[t] = L->pt_z[q];
+        L->site_id[t] = NO_PARTICLE;
+      }
+    }
+  }
+  L->k = &k; /* for park() below; replaced by the sim's own */
+  struct wl_particles init = {0};
+  st = with_spares(L, s->initial, n_all - s->initial->n, &init, err);
+  if (!st) st = wl_sph_sim_alloc(&L->sim, ops, s->cfg, &init, err);
+  wl_particles_clear(&init);
+  if (st) return st;
+  L->k = wl_sph_sim_const(L->sim);
+  return WL_OK;
+}
+
+enum wl_status wl_vres_alloc(struct wl_vres **out, const struct wl_backend_ops *ops, int n_levels,
+                             const struct wl_vres_level_spec *levels,
+                             const struct wl_vres_opts *opts, struct wl_error *err) {
+  *out = NULL;
+  if (n_levels != 2)
+    return wl_error_set(err, WL_EUNSUPPORTED, "vres: %d levels; this stage couples 2", n_levels);
+  struct wl_vres *v = calloc(1, sizeof *v);
+  if (!v) return wl_error_set(err, WL_ENOMEM, "vres: out of memory");
+  v->n = n_levels;
+  v->dim = 2;
+  v->z_bed = opts ? opts->z_bed : 0.0;
+  v->z_top = opts ? opts->z_top : 0.0;
+  enum wl_status st = WL_OK;
+  for (int l = 0; l < n_levels && !st; l++) {
+    st = level_init(v, &v->lv[l], ops, &levels[l], opts, err);
+    if (st) wl_error_prefix(err, "vres level %d: ", l);
+  }
+  if (!st && !(levels[0].own_hi <= levels[1].own_lo || levels[1].own_hi <= levels[0].own_lo))
+    st = wl_error_set(err, WL_EINPUT, "vres: the levels' ranges overlap");
+  if (!st) st = couple(v, 0.0, err);
+  if (st) {
+    wl_vres_free(v);
+    return st;
+  }
+  *out = v;
+  return WL_OK;
+}
+
+enum wl_status wl_vres_step(struct wl_vres *v, double dt_max, struct wl_error *err) {
+  double dt = dt_max > 0 ? dt_max : INFINITY;
+  for (int l = 0; l < v->n; l++) dt = fmin(dt, wl_sph_sim_dt(v->lv[l].sim));
+  for (int l = 0; l < v->n; l++) {
+    const enum wl_status st = wl_sph_sim_step(v->lv[l].sim, dt, err);
+    if (st) {
+      wl_error_prefix(err, "vres level %d (dp %g m): ", l, v->lv[l].dp);
+      return st;
+    }
+    v->lv[l].cnt.steps++;
+  }
+  v->t += dt;
+  return couple(v, dt, err);
+}
+
+double wl_vres_time(const struct wl_vres *v) { return v->t; }
+
+struct wl_sph_sim *wl_vres_level(struct wl_vres *v, int level) { return v->lv[level].sim; }
+
+int wl_vres_owns(const struct wl_vres *v, int level, double x) { return owns(&v->lv[level], x); }
+
+double wl_vres_own_mass(struct wl_vres *v, struct wl_error *err) {
+  double m = 0;
+  for (int l = 0; l < v->n; l++) {
+    const struct wl_particles *p = wl_sph_sim_particles(v->lv[l].sim, err);
+    if (!p) return NAN;
+    long c = 0;
+    for (int i = p->n_bound; i < p->n; i++) c += p->body[i] == 0 && owns(&v->lv[l], p->pos[0][i]);
+    m += (double)c * v->lv[l].mass;
+  }
+  return m;
+}
+
+const struct wl_vres_counts *wl_vres_counts(const struct wl_vres *v, int level) {
+  return &v->lv[level].cnt;
+}
