@@ -1,7 +1,7 @@
 /* vres.c: variable resolution by coupled subdomains (vres.h). Every level
  * is a wl_sph_sim of its own; between steps the driver edits their host
  * copies (wl_sph_sim_edit / _commit): classification, the buffers' fit from
- * the other level, removal and creation. */
+ * the other level, their shifting, removal and creation. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -9,11 +9,6 @@
 #include "wallload/sph/kernel.h"
 #include "wallload/sph/vres_fit.h"
 #include "wallload/vres.h"
-
-#define NO_PARTICLE 0xffffffffu
-/* A flux point with no fluid particle of its level nearer than this (in
- * dp) gets one. */
-#define WL_VRES_HOLE 0.9
 
 /* The donors of one level on a host cell grid of side 2h. */
 struct donor_grid {
@@ -33,17 +28,13 @@ struct level {
   long park_next;
   int n_points;
   double *pt_x, *pt_z, *pt_n, *acc; /* flux points: position, inward normal (+-1 in x), account */
-  int n_sites;
-  double *site_x, *site_z;
-  unsigned int *site_id; /* the id of the particle at the site, NO_PARTICLE when dry */
-  int *index_of;         /* id -> index in the host copy, rebuilt each coupling */
   struct donor_grid grid;
   struct wl_vres_counts cnt;
 };
 
 struct wl_vres {
-  int n, dim;
-  double t, z_bed, z_top;
+  int n;
+  double t, z_bed, z_top, shift;
   struct level lv[WL_VRES_LEVELS_MAX];
 };
 
@@ -62,16 +53,16 @@ void wl_vres_free(struct wl_vres *v) {
     free(L->pt_z);
     free(L->pt_n);
     free(L->acc);
-    free(L->site_x);
-    free(L->site_z);
-    free(L->site_id);
-    free(L->index_of);
     grid_free(&L->grid);
   }
   free(v);
 }
 
 static int owns(const struct level *L, double x) { return x >= L->lo && x <= L->hi; }
+
+static int in_band(const struct level *L, double x) {
+  return (x < L->lo && x >= L->lo - L->w) || (x > L->hi && x <= L->hi + L->w);
+}
 
 /* Park particle i of level L at rest in its next slot (vres.h). */
 static void park(struct level *L, struct wl_particles *p, int i) {
@@ -182,6 +173,42 @@ static int fit_at(const struct level *D, const struct wl_particles *p, double x,
   return wl_vres_fit_solve(&f, out);
 }
 
+/* Particle shifting of level L's buffer particles (sph/shift.h's law,
+ * delta r = -A h |v| dt dC/dz, capped at 0.1 dp), from the level's own
+ * particles (its donor grid: fluid, buffer, walls), along the interface
+ * only: its normal component is removed, as DualSPHysics'
+ * BufferShiftingCpu does, so shifting moves no particle into or out of a
+ * band. Not where the concentration is below 0.9 (a free surface). */
+static void shift_buffers(const struct level *L, struct wl_particles *p, double dt, double A) {
+  const struct donor_grid *g = &L->grid;
+  const double s2 = 4.0 * L->h * L->h, cap = 0.1 * L->dp;
+  for (int i = p->n_bound; i < p->n; i++) {
+    if (p->body[i] != WL_SPH_BODY_BUFFER) continue;
+    const double x = p->pos[0][i], z = p->pos[1][i];
+    const int cx = (int)floor((x - g->x0) / g->cell), cz = (int)floor((z - g->z0) / g->cell);
+    double dcdz = 0, conc = 0;
+    for (int jz = cz - 1; jz <= cz + 1; jz++) {
+      if (jz < 0 || jz >= g->nz) continue;
+      for (int jx = cx - 1; jx <= cx + 1; jx++) {
+        if (jx < 0 || jx >= g->nx) continue;
+        const int c = jz * g->nx + jx;
+        for (int q = g->start[c]; q < g->start[c + 1]; q++) {
+          const int j = g->idx[q];
+          const double dx = x - p->pos[0][j], dz = z - p->pos[1][j], r2 = dx * dx + dz * dz;
+          if (r2 >= s2) continue;
+          const double vol = L->mass / (double)p->rho[j];
+          conc += vol * (double)wl_sph_kernel_w(L->k, (wl_real)r2);
+          dcdz += vol * (double)wl_sph_kernel_f(L->k, (wl_real)r2) * dz; /* 0 for j = i */
+        }
+      }
+    }
+    if (conc < 0.9) continue;
+    const double speed = hypot((double)p->vel[0][i], (double)p->vel[1][i]);
+    const double d = -A * L->h * speed * dt * dcdz;
+    p->pos[1][i] += d > cap ? cap : d < -cap ? -cap : d;
+  }
+}
+
 /* A parked particle of level L (index), or -1. */
 static int take_parked(const struct wl_particles *p, int *cursor) {
   for (; *cursor < p->n; (*cursor)++)
@@ -189,40 +216,32 @@ static int take_parked(const struct wl_particles *p, int *cursor) {
   return -1;
 }
 
-/* Level L's fluid that left its own range is removed (vres.h); the id ->
- * index map of its host copy. */
+/* Level L's fluid by position (vres.h): its range, its bands, gone. */
 static void classify(struct level *L, struct wl_particles *p) {
-  for (int i = 0; i < p->n; i++) L->index_of[p->id[i]] = i;
-  for (int i = p->n_bound; i < p->n; i++)
-    if (p->body[i] == 0 && !owns(L, p->pos[0][i])) {
+  for (int i = p->n_bound; i < p->n; i++) {
+    if (p->body[i] == WL_SPH_BODY_EXCLUDED) continue;
+    const double x = p->pos[0][i];
+    if (owns(L, x)) p->body[i] = 0;
+    else if (in_band(L, x)) p->body[i] = WL_SPH_BODY_BUFFER;
+    else {
       park(L, p, i);
       L->cnt.removed++;
     }
+  }
 }
 
-/* The sites of level L from donor level D, then the flux points'
- * creation. */
+/* Level L's buffer particles from donor level D (vres.h), then the flux
+ * points' creation. */
 static enum wl_status refill(struct level *L, struct wl_particles *p, const struct level *D,
                              const struct wl_particles *pd, double dt, struct wl_error *err) {
-  double val[3], sh;
-  int cursor = p->n_bound;
-  for (int s = 0; s < L->n_sites; s++) {
-    const int r = fit_at(D, pd, L->site_x[s], L->site_z[s], val, &sh);
-    int i = L->site_id[s] == NO_PARTICLE ? -1 : L->index_of[L->site_id[s]];
-    if (r < 0 || sh < WL_VRES_WET_MIN) { /* dry */
-      if (i >= 0) park(L, p, i);
-      L->site_id[s] = NO_PARTICLE;
+  double val[3], wet;
+  for (int i = p->n_bound; i < p->n; i++) {
+    if (p->body[i] != WL_SPH_BODY_BUFFER) continue;
+    const int r = fit_at(D, pd, p->pos[0][i], p->pos[1][i], val, &wet);
+    if (r < 0 || wet < WL_VRES_DRY_MAX) {
+      park(L, p, i);
+      L->cnt.removed++;
       continue;
-    }
-    if (i < 0) {
-      i = take_parked(p, &cursor);
-      if (i < 0)
-        return wl_error_set(err, WL_ENOMEM, "vres: level of dp %g m has no parked particle left "
-                            "for the site (%g, %g) m", L->dp, L->site_x[s], L->site_z[s]);
-      p->pos[0][i] = L->site_x[s];
-      p->pos[1][i] = L->site_z[s];
-      p->body[i] = WL_SPH_BODY_BUFFER;
-      L->site_id[s] = p->id[i];
     }
     p->rho[i] = (wl_real)val[0];
     p->vel[0][i] = (wl_real)val[1];
@@ -230,26 +249,25 @@ static enum wl_status refill(struct level *L, struct wl_particles *p, const stru
     if (r == 1) L->cnt.fitted++;
     else L->cnt.shepard++;
   }
+  int cursor = p->n_bound;
   for (int q = 0; q < L->n_points; q++) {
-    const int r = fit_at(D, pd, L->pt_x[q], L->pt_z[q], val, &sh);
-    if (r < 0 || sh < WL_VRES_WET_MIN) {
+    const int r = fit_at(D, pd, L->pt_x[q], L->pt_z[q], val, &wet);
+    if (r < 0 || wet < WL_VRES_WET_MIN) {
       L->acc[q] = 0;
       continue;
     }
     const double flux = val[0] * val[1] * L->pt_n[q] * L->dp * dt;
     L->acc[q] = fmax(0.0, L->acc[q] + flux);
     if (flux > 0) L->cnt.flux_in += flux;
+    if (L->acc[q] < L->mass) continue;
     const double xn = L->pt_x[q] + 0.5 * L->dp * L->pt_n[q], zn = L->pt_z[q];
-    double d2 = INFINITY; /* the nearest fluid particle of the level */
-    for (int i = p->n_bound; i < p->n; i++) {
-      if (p->body[i] != 0) continue;
+    int crowded = 0; /* a particle still there: wait for it to move on */
+    for (int i = p->n_bound; i < p->n && !crowded; i++) {
+      if (p->kind[i] != WL_KIND_FLUID || p->body[i] == WL_SPH_BODY_EXCLUDED) continue;
       const double dx = p->pos[0][i] - xn, dz = p->pos[1][i] - zn;
-      d2 = fmin(d2, dx * dx + dz * dz);
+      crowded = dx * dx + dz * dz < 0.25 * L->dp * L->dp;
     }
-    /* a whole mass flowed in and its place is free, or a hole (what one
-     * particle's jitter across the interface removed) */
-    const int hole = d2 > WL_VRES_HOLE * WL_VRES_HOLE * L->dp * L->dp;
-    if (!(hole || (L->acc[q] >= L->mass && d2 >= 0.25 * L->dp * L->dp))) continue;
+    if (crowded) continue;
     const int i = take_parked(p, &cursor);
     if (i < 0)
       return wl_error_set(err, WL_ENOMEM, "vres: level of dp %g m has no parked particle left to "
@@ -259,8 +277,8 @@ static enum wl_status refill(struct level *L, struct wl_particles *p, const stru
     p->rho[i] = (wl_real)val[0];
     p->vel[0][i] = (wl_real)val[1];
     p->vel[1][i] = (wl_real)val[2];
-    p->body[i] = 0;
-    L->acc[q] = fmax(0.0, L->acc[q] - L->mass);
+    p->body[i] = WL_SPH_BODY_BUFFER;
+    L->acc[q] -= L->mass;
     L->cnt.created++;
   }
   return WL_OK;
@@ -278,9 +296,10 @@ static enum wl_status couple(struct wl_vres *v, double dt, struct wl_error *err)
     const enum wl_status st = grid_build(&v->lv[l], p[l], err);
     if (st) return st;
   }
+  if (dt > 0 && v->shift > 0)
+    for (int l = 0; l < v->n; l++) shift_buffers(&v->lv[l], p[l], dt, v->shift);
   for (int l = 0; l < v->n; l++) {
-    const int d = 1 - l;
-    const enum wl_status st = refill(&v->lv[l], p[l], &v->lv[d], p[d], dt, err);
+    const enum wl_status st = refill(&v->lv[l], p[l], &v->lv[1 - l], p[1 - l], dt, err);
     if (st) return st;
   }
   for (int l = 0; l < v->n; l++) {
@@ -324,6 +343,8 @@ static enum wl_status level_init(struct wl_vres *v, struct level *L, const struc
                         s->own_lo, s->own_hi);
   if (!(s->park_hi[0] > s->park_lo[0] && s->park_hi[1] > s->park_lo[1]))
     return wl_error_set(err, WL_EINPUT, "vres: empty parking rectangle");
+  if (!(v->z_top > v->z_bed))
+    return wl_error_set(err, WL_EINPUT, "vres: z_top %g m not above z_bed %g m", v->z_top, v->z_bed);
   struct wl_sph_const k;
   enum wl_status st = wl_sph_const_make(prm, &k, err);
   if (st) return st;
@@ -336,47 +357,30 @@ static enum wl_status level_init(struct wl_vres *v, struct level *L, const struc
   const double slot = 2.2 * L->h; /* slots out of each other's reach */
   L->park_nx = (int)fmax(1.0, floor((L->park_hi[0] - L->park_lo[0]) / slot));
   L->park_nz = (int)fmax(1.0, floor((L->park_hi[1] - L->park_lo[1]) / slot));
-  /* the sites: the band's lattice from the bed up to z_top; the flux
-   * points: one a row on each interface */
+  /* flux points: one a row on the far edge of each band */
   const int rows = (int)floor((v->z_top - v->z_bed) / L->dp + 1e-9);
-  const int cols = (int)lround(L->w / L->dp);
   const int ends = isfinite(L->lo) + isfinite(L->hi);
-  if (rows < 1)
-    return wl_error_set(err, WL_EINPUT, "vres: z_top %g m is not a row above z_bed %g m", v->z_top,
-                        v->z_bed);
-  L->n_sites = rows * cols * ends;
   L->n_points = rows * ends;
-  L->site_x = calloc((size_t)L->n_sites, sizeof(double));
-  L->site_z = calloc((size_t)L->n_sites, sizeof(double));
-  L->site_id = calloc((size_t)L->n_sites, sizeof(unsigned int));
-  L->pt_x = calloc((size_t)L->n_points, sizeof(double));
-  L->pt_z = calloc((size_t)L->n_points, sizeof(double));
-  L->pt_n = calloc((size_t)L->n_points, sizeof(double));
-  L->acc = calloc((size_t)L->n_points, sizeof(double));
-  const int n_all = s->initial->n + L->n_sites + (s->spare > 0 ? s->spare : 0);
-  L->index_of = calloc((size_t)n_all, sizeof(int));
-  if (!L->site_x || !L->site_z || !L->site_id || !L->pt_x || !L->pt_z || !L->pt_n || !L->acc ||
-      !L->index_of)
-    return wl_error_set(err, WL_ENOMEM, "vres: out of memory for %d sites", L->n_sites);
-  int q = 0, t = 0;
+  L->pt_x = calloc((size_t)L->n_points + 1, sizeof(double));
+  L->pt_z = calloc((size_t)L->n_points + 1, sizeof(double));
+  L->pt_n = calloc((size_t)L->n_points + 1, sizeof(double));
+  L->acc = calloc((size_t)L->n_points + 1, sizeof(double));
+  if (!L->pt_x || !L->pt_z || !L->pt_n || !L->acc)
+    return wl_error_set(err, WL_ENOMEM, "vres: out of memory for %d flux points", L->n_points);
+  int q = 0;
   for (int e = 0; e < 2; e++) {
     const double edge = e == 0 ? L->lo : L->hi;
     if (!isfinite(edge)) continue;
     const double n = e == 0 ? 1.0 : -1.0; /* into the level */
     for (int r = 0; r < rows; r++, q++) {
       L->pt_n[q] = n;
-      L->pt_x[q] = edge;
+      L->pt_x[q] = edge - n * L->w;
       L->pt_z[q] = v->z_bed + (r + 0.5) * L->dp;
-      for (int c = 0; c < cols; c++, t++) {
-        L->site_x[t] = edge - n * (c + 0.5) * L->dp;
-        L->site_z[t] = L->pt_z[q];
-        L->site_id[t] = NO_PARTICLE;
-      }
     }
   }
   L->k = &k; /* for park() below; replaced by the sim's own */
   struct wl_particles init = {0};
-  st = with_spares(L, s->initial, n_all - s->initial->n, &init, err);
+  st = with_spares(L, s->initial, s->spare > 0 ? s->spare : 0, &init, err);
   if (!st) st = wl_sph_sim_alloc(&L->sim, ops, s->cfg, &init, err);
   wl_particles_clear(&init);
   if (st) return st;
@@ -393,9 +397,9 @@ enum wl_status wl_vres_alloc(struct wl_vres **out, const struct wl_backend_ops *
   struct wl_vres *v = calloc(1, sizeof *v);
   if (!v) return wl_error_set(err, WL_ENOMEM, "vres: out of memory");
   v->n = n_levels;
-  v->dim = 2;
   v->z_bed = opts ? opts->z_bed : 0.0;
   v->z_top = opts ? opts->z_top : 0.0;
+  v->shift = opts && opts->shift >= 0 ? opts->shift : 0.0;
   enum wl_status st = WL_OK;
   for (int l = 0; l < n_levels && !st; l++) {
     st = level_init(v, &v->lv[l], ops, &levels[l], opts, err);

@@ -99,7 +99,7 @@ WL_HD static WL_INLINE void wl_sph_predict(const int dim, const struct wl_sph_co
     p->rho_h[i] = p->rho[i];
     for (int a = 0; a < dim; a++) {
       p->vel_h[a][i] = p->vel[a][i];
-      p->pos_h[a][i] = p->pos[a][i];
+      p->pos_h[a][i] = p->pos[a][i] + 0.5 * dt * (double)p->vel[a][i];
     }
     return;
   }
@@ -129,7 +129,10 @@ WL_HD static WL_INLINE void wl_sph_correct(const int dim, const struct wl_sph_co
                                            const struct wl_particles *p, double dt,
                                            const double (*body_vel)[WL_SPH_DIM_MAX], int i) {
   if (p->kind[i] == WL_KIND_FLUID && p->body[i] == WL_SPH_BODY_EXCLUDED) return; /* guard.h */
-  if (p->kind[i] == WL_KIND_FLUID && p->body[i] == WL_SPH_BODY_BUFFER) return; /* particles.h */
+  if (p->kind[i] == WL_KIND_FLUID && p->body[i] == WL_SPH_BODY_BUFFER) { /* particles.h */
+    for (int a = 0; a < dim; a++) p->pos[a][i] = p->pos_h[a][i] + 0.5 * dt * (double)p->vel[a][i];
+    return;
+  }
   const wl_real eps = -(p->ar[i] / p->rho_h[i]) * (wl_real)dt;
   const wl_real rho = p->rho[i] * (WL_R(2.0) - eps) / (WL_R(2.0) + eps);
   if (p->kind[i] == WL_KIND_FLUID) {
@@ -165,7 +168,10 @@ WL_HD static WL_INLINE void wl_sph_verlet(const int dim, const struct wl_sph_con
                                           int i) {
   if (p->kind[i] == WL_KIND_FLUID && p->body[i] == WL_SPH_BODY_EXCLUDED) return; /* guard.h */
   if (p->kind[i] == WL_KIND_FLUID && p->body[i] == WL_SPH_BODY_BUFFER) { /* particles.h */
-    for (int a = 0; a < dim; a++) p->vel_h[a][i] = p->vel[a][i];
+    for (int a = 0; a < dim; a++) {
+      p->vel_h[a][i] = p->vel[a][i];
+      p->pos[a][i] += dt * (double)p->vel[a][i];
+    }
     p->rho_h[i] = p->rho[i];
     return;
   }

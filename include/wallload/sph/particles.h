@@ -25,11 +25,11 @@ enum wl_particle_kind {
  * the integrators and the guard leave it alone. */
 #define WL_SPH_BODY_EXCLUDED 255
 
-/* The body number of a fluid particle at a site of a buffer band of a
- * variable-resolution run (include/wallload/vres.h): a fluid neighbour in
- * every pair, but held at its site, its density and velocity interpolated
- * from the other resolution's fluid after each step, so the integrators
- * leave it alone. */
+/* The body number of a fluid particle in a buffer band of a variable-
+ * resolution run (include/wallload/vres.h): a fluid neighbour in every
+ * pair, but its density and velocity are interpolated from the other
+ * resolution's fluid after each step, so the integrators only move it with
+ * its velocity (DualSPHysics 5.4's VRes buffers). */
 #define WL_SPH_BODY_BUFFER 254
 
 struct wl_particles {
