@@ -136,38 +136,56 @@ static enum wl_status grid_build(struct level *L, const struct wl_particles *p, 
   return WL_OK;
 }
 
-/* The fit at (x, z) from donor level D (its host particles p); *wet: the
- * Shepard sum of its fluid and boundary particles there (a point under the
- * water, or under it beside a wall, sums to 0.5 or more). */
-static int fit_at(const struct level *D, const struct wl_particles *p, double x, double z,
-                  double *out, double *wet) {
-  const struct donor_grid *g = &D->grid;
-  struct wl_vres_fit f;
-  wl_vres_fit_init(&f, 2, D->h);
-  double sum = 0;
-  *wet = 0;
-  if (g->n == 0) return -1;
+/* Most particles of a level within 2h of a point (a lattice holds about 40;
+ * the rest is room for crowding). */
+#define WL_VRES_NEIGHBOURS_MAX 512
+
+/* The particles of level L's grid within 2h of (x, z): indices into idx,
+ * squared distances into r2; their number (at most WL_VRES_NEIGHBOURS_MAX,
+ * the nearest cells first). */
+static int neighbours(const struct level *L, const struct wl_particles *p, double x, double z,
+                      int *idx, double *r2) {
+  const struct donor_grid *g = &L->grid;
+  if (g->n == 0) return 0;
   const int cx = (int)floor((x - g->x0) / g->cell), cz = (int)floor((z - g->z0) / g->cell);
-  const double s2 = 4.0 * D->h * D->h;
+  const double s2 = 4.0 * L->h * L->h;
+  int n = 0;
   for (int jz = cz - 1; jz <= cz + 1; jz++) {
     if (jz < 0 || jz >= g->nz) continue;
     for (int jx = cx - 1; jx <= cx + 1; jx++) {
       if (jx < 0 || jx >= g->nx) continue;
       const int c = jz * g->nx + jx;
-      for (int q = g->start[c]; q < g->start[c + 1]; q++) {
+      for (int q = g->start[c]; q < g->start[c + 1] && n < WL_VRES_NEIGHBOURS_MAX; q++) {
         const int j = g->idx[q];
-        const double d[2] = {p->pos[0][j] - x, p->pos[1][j] - z};
-        const double r2 = d[0] * d[0] + d[1] * d[1];
-        if (r2 >= s2) continue;
-        const double w = (double)wl_sph_kernel_w(D->k, (wl_real)r2);
-        const double vol = D->mass / (double)p->rho[j];
-        sum += vol * w;
-        if (!fit_donor(D, p, j)) continue;
-        const double F = (double)wl_sph_kernel_f(D->k, (wl_real)r2);
-        const double val[3] = {p->rho[j], p->vel[0][j], p->vel[1][j]};
-        wl_vres_fit_add(&f, d, w, F, vol, val);
+        const double dx = p->pos[0][j] - x, dz = p->pos[1][j] - z, d2 = dx * dx + dz * dz;
+        if (d2 >= s2) continue;
+        idx[n] = j;
+        r2[n++] = d2;
       }
     }
+  }
+  return n;
+}
+
+/* The fit at (x, z) from donor level D (its host particles p); *wet: the
+ * Shepard sum of its fluid, buffer and wall particles there (vres.h). */
+static int fit_at(const struct level *D, const struct wl_particles *p, double x, double z,
+                  double *out, double *wet) {
+  int idx[WL_VRES_NEIGHBOURS_MAX];
+  double r2[WL_VRES_NEIGHBOURS_MAX];
+  const int n = neighbours(D, p, x, z, idx, r2);
+  struct wl_vres_fit f;
+  wl_vres_fit_init(&f, 2, D->h);
+  double sum = 0;
+  for (int q = 0; q < n; q++) {
+    const int j = idx[q];
+    const double w = (double)wl_sph_kernel_w(D->k, (wl_real)r2[q]);
+    const double vol = D->mass / (double)p->rho[j];
+    sum += vol * w;
+    if (!fit_donor(D, p, j)) continue;
+    const double d[2] = {p->pos[0][j] - x, p->pos[1][j] - z};
+    const double val[3] = {p->rho[j], p->vel[0][j], p->vel[1][j]};
+    wl_vres_fit_add(&f, d, w, (double)wl_sph_kernel_f(D->k, (wl_real)r2[q]), vol, val);
   }
   *wet = sum;
   return wl_vres_fit_solve(&f, out);
@@ -175,32 +193,24 @@ static int fit_at(const struct level *D, const struct wl_particles *p, double x,
 
 /* Particle shifting of level L's buffer particles (sph/shift.h's law,
  * delta r = -A h |v| dt dC/dz, capped at 0.1 dp), from the level's own
- * particles (its donor grid: fluid, buffer, walls), along the interface
- * only: its normal component is removed, as DualSPHysics'
- * BufferShiftingCpu does, so shifting moves no particle into or out of a
- * band. Not where the concentration is below 0.9 (a free surface). */
+ * particles (its grid: fluid, buffer, walls), along the interface only:
+ * its normal component is removed, as DualSPHysics' BufferShiftingCpu
+ * does, so shifting moves no particle into or out of a band. Not where the
+ * concentration is below 0.9 (a free surface). */
 static void shift_buffers(const struct level *L, struct wl_particles *p, double dt, double A) {
-  const struct donor_grid *g = &L->grid;
-  const double s2 = 4.0 * L->h * L->h, cap = 0.1 * L->dp;
+  const double cap = 0.1 * L->dp;
+  int idx[WL_VRES_NEIGHBOURS_MAX];
+  double r2[WL_VRES_NEIGHBOURS_MAX];
   for (int i = p->n_bound; i < p->n; i++) {
     if (p->body[i] != WL_SPH_BODY_BUFFER) continue;
-    const double x = p->pos[0][i], z = p->pos[1][i];
-    const int cx = (int)floor((x - g->x0) / g->cell), cz = (int)floor((z - g->z0) / g->cell);
+    const double z = p->pos[1][i];
+    const int n = neighbours(L, p, p->pos[0][i], z, idx, r2);
     double dcdz = 0, conc = 0;
-    for (int jz = cz - 1; jz <= cz + 1; jz++) {
-      if (jz < 0 || jz >= g->nz) continue;
-      for (int jx = cx - 1; jx <= cx + 1; jx++) {
-        if (jx < 0 || jx >= g->nx) continue;
-        const int c = jz * g->nx + jx;
-        for (int q = g->start[c]; q < g->start[c + 1]; q++) {
-          const int j = g->idx[q];
-          const double dx = x - p->pos[0][j], dz = z - p->pos[1][j], r2 = dx * dx + dz * dz;
-          if (r2 >= s2) continue;
-          const double vol = L->mass / (double)p->rho[j];
-          conc += vol * (double)wl_sph_kernel_w(L->k, (wl_real)r2);
-          dcdz += vol * (double)wl_sph_kernel_f(L->k, (wl_real)r2) * dz; /* 0 for j = i */
-        }
-      }
+    for (int q = 0; q < n; q++) {
+      const int j = idx[q];
+      const double vol = L->mass / (double)p->rho[j];
+      conc += vol * (double)wl_sph_kernel_w(L->k, (wl_real)r2[q]);
+      dcdz += vol * (double)wl_sph_kernel_f(L->k, (wl_real)r2[q]) * (z - p->pos[1][j]); /* 0: j = i */
     }
     if (conc < 0.9) continue;
     const double speed = hypot((double)p->vel[0][i], (double)p->vel[1][i]);
