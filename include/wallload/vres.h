@@ -54,7 +54,7 @@
 struct wl_vres_level_spec {
   const struct wl_sph_config *cfg;    /* its dp, h, walls and domain box */
   const struct wl_particles *initial; /* boundary, then fluid over its range and buffer bands */
-  double own_lo, own_hi;              /* the x range it owns [m]; +-INFINITY: a closed end */
+  double own_lo, own_hi;              /* the x range it owns [m]; +-INFINITY: no interface there */
   double park_lo[2], park_hi[2];      /* (x, z) rectangle for parked particles [m] */
   int spare;                          /* parked particles for creation */
 };
