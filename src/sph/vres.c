@@ -260,6 +260,8 @@ static enum wl_status refill(struct level *L, struct wl_particles *p, const stru
     else L->cnt.shepard++;
   }
   int cursor = p->n_bound;
+  int near[WL_VRES_NEIGHBOURS_MAX]; /* the level's particles near a new one's place */
+  double near_r2[WL_VRES_NEIGHBOURS_MAX];
   for (int q = 0; q < L->n_points; q++) {
     const int r = fit_at(D, pd, L->pt_x[q], L->pt_z[q], val, &wet);
     if (r < 0 || wet < WL_VRES_WET_MIN) {
@@ -272,11 +274,9 @@ static enum wl_status refill(struct level *L, struct wl_particles *p, const stru
     if (L->acc[q] < L->mass) continue;
     const double xn = L->pt_x[q] + 0.5 * L->dp * L->pt_n[q], zn = L->pt_z[q];
     int crowded = 0; /* a particle still there: wait for it to move on */
-    for (int i = p->n_bound; i < p->n && !crowded; i++) {
-      if (p->kind[i] != WL_KIND_FLUID || p->body[i] == WL_SPH_BODY_EXCLUDED) continue;
-      const double dx = p->pos[0][i] - xn, dz = p->pos[1][i] - zn;
-      crowded = dx * dx + dz * dz < 0.25 * L->dp * L->dp;
-    }
+    const int m = neighbours(L, p, xn, zn, near, near_r2);
+    for (int k = 0; k < m && !crowded; k++)
+      crowded = p->kind[near[k]] == WL_KIND_FLUID && near_r2[k] < 0.25 * L->dp * L->dp;
     if (crowded) continue;
     const int i = take_parked(p, &cursor);
     if (i < 0)
