@@ -66,10 +66,15 @@ fi
 
 # a rank killed mid-case: its case is a failed row, the others finish
 # The cases run to their full 0.3 s here (a case must still be running when
-# its rank is killed); the sanitizer build's quick run stops them at 0.15 s,
-# several seconds a case there.
-lost_end=(); [ -n "${WL_TEST_QUICK:-}" ] && lost_end=(--end-time 0.15)
-"${mpi[@]}" --enable-recovery "$bin" "${ARGS[@]}" "${lost_end[@]}" -o lost >lost.out 2>lost.err &
+# its rank is killed). The sanitizer build's quick run leaves this to the
+# Release build: it is Open MPI's recovery and the failed row that rank 0
+# writes (the same store code as above), and under the sanitizers it took
+# half of this test's 80 s, with both of CI's cores held.
+if [ -n "${WL_TEST_QUICK:-}" ]; then
+  echo "lost rank: left to the Release build (WL_TEST_QUICK)"
+  exit $fail
+fi
+"${mpi[@]}" --enable-recovery "$bin" "${ARGS[@]}" -o lost >lost.out 2>lost.err &
 pid=$!
 victim=""
 for _ in $(seq 1 600); do

@@ -457,7 +457,17 @@ enum wl_status wl_cli_assess(int argc, char **argv, struct wl_error *err) {
   }
   if (!path) return wl_error_set(err, WL_EUSAGE, "usage: wallload assess FILE.yaml [options]");
   struct assess_args a = {path, &opts, quiet, budget_s, force_large};
-  return wl_cli_with_stop_signals(assess_stoppable, &a, err);
+  enum wl_status st = wl_cli_with_stop_signals(assess_stoppable, &a, err);
+  /* A signal that came after the run's last look at the flag (while it
+   * freed its memory, or returned) stopped nothing, but it was sent: say
+   * so and exit 1, as for any stop after the results were written, rather
+   * than swallow it. (Not for `sweep`: under mpirun a rank that has
+   * finished can be sent SIGTERM as the job ends.) */
+  if (st == WL_OK && interrupted)
+    st = wl_error_set(err, WL_EINTERRUPTED,
+                      "interrupted by %s after the results were written (they are complete)",
+                      wl_assess_stop_signal_name(interrupted));
+  return st;
 }
 
 enum wl_status wl_cli_with_stop_signals(wl_cli_stoppable_fn fn, void *user, struct wl_error *err) {
@@ -537,10 +547,7 @@ static enum wl_status assess_stoppable(void *user, volatile sig_atomic_t *stop,
     print_convergence(&res.cases[i], &res.conv[i]);
   }
   if (res.n_cases) printf("\nresults in %s/ (results.h5, summary.json, CSV, particle snapshots)\n", res.out_dir);
-  if (st == WL_OK && *stop)
-    st = wl_error_set(err, WL_EINTERRUPTED,
-                      "interrupted by %s after the results were written (they are complete)",
-                      wl_assess_stop_signal_name(*stop));
+  /* a stop after the results were written: wl_cli_with_stop_signals says so */
   wl_assess_result_clear(&res);
   wl_scenario_clear(&s);
   return st;
