@@ -1348,10 +1348,6 @@ __global__ void __launch_bounds__(THREADS)
     if (update && wl_sph_exclude(DIM, &p, m->lo, m->hi, i)) atomicAdd(&st->excluded, 1ull);
     int w = -1;
     if (wl_sph_guard(DIM, &k, &p, m->lo, m->hi, ws.w, nw, i, &w)) atomicMin(&st->first, i);
-    /* through the arrays themselves: a one-particle view in registers
-     * saves round trips to memory but lets the compiler contract the
-     * Verlet step's products into FMAs otherwise, which changes the
-     * results' last bits */
     const struct wl_sph_grid g = gp;
     const unsigned group = p.kind[i] == WL_KIND_FLUID ? 1u : 0u;
     const unsigned key = group * (unsigned)g.n_cells + (unsigned)wl_sph_cell_of(DIM, &g, p.pos, i);

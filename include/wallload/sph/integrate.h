@@ -56,26 +56,29 @@
 #include "wallload/sph/particles.h"
 #include "wallload/sph/params.h"
 
-/* The end of a fluid particle's update, after its new position and
- * velocity: back across a mirror plane (its previous velocity too, which
- * the Verlet step reads next), then the damping zones. */
+/* The end of a fluid particle's update, on its new position x, velocity v
+ * and previous velocity vh (the Verlet step reads it next), held in the
+ * caller's registers: back across a mirror plane, then the damping zones.
+ * The update functions below read a particle's values, compute, then
+ * store: through the arrays themselves every store could alias the next
+ * load, which kept the GPU's update waiting on memory. */
 WL_HD static WL_INLINE void wl_sph_fluid_finish(const int dim, const struct wl_sph_const *k,
-                                                const struct wl_particles *p, double dt, int i) {
+                                                double dt, double *x, wl_real *v, wl_real *vh) {
   if (dim == 3 && k->mirror) {
-    const double y = p->pos[1][i];
+    const double y = x[1];
     if (((k->mirror & 1) && y < k->mirror_y[0]) || ((k->mirror & 2) && y > k->mirror_y[1])) {
-      p->pos[1][i] = 2.0 * k->mirror_y[y < k->mirror_y[0] ? 0 : 1] - y;
-      p->vel[1][i] = -p->vel[1][i];
-      p->vel_h[1][i] = -p->vel_h[1][i];
+      x[1] = 2.0 * k->mirror_y[y < k->mirror_y[0] ? 0 : 1] - y;
+      v[1] = -v[1];
+      vh[1] = -vh[1];
     }
   }
   for (int z = 0; z < WL_SPH_DAMP_ZONES; z++)
     if (k->damp_rate[z] > 0) {
-      double w = (p->pos[0][i] - k->damp_x0[z]) * k->damp_inv_len[z];
+      double w = (x[0] - k->damp_x0[z]) * k->damp_inv_len[z];
       w = w < 0 ? 0 : w > 1 ? 1 : w;
       double f = 1.0 - dt * k->damp_rate[z] * w * w;
       f = f < 0 ? 0 : f;
-      for (int a = 0; a < dim; a++) p->vel[a][i] = (wl_real)(f * (double)p->vel[a][i]);
+      for (int a = 0; a < dim; a++) v[a] = (wl_real)(f * (double)v[a]);
     }
 }
 
@@ -136,14 +139,21 @@ WL_HD static WL_INLINE void wl_sph_correct(const int dim, const struct wl_sph_co
   const wl_real eps = -(p->ar[i] / p->rho_h[i]) * (wl_real)dt;
   const wl_real rho = p->rho[i] * (WL_R(2.0) - eps) / (WL_R(2.0) + eps);
   if (p->kind[i] == WL_KIND_FLUID) {
+    double x[WL_SPH_DIM_MAX];
+    wl_real v[WL_SPH_DIM_MAX], vh[WL_SPH_DIM_MAX];
+    for (int a = 0; a < dim; a++) {
+      v[a] = p->vel[a][i] + (wl_real)dt * p->ace[a][i];
+      vh[a] = p->vel_h[a][i];
+      x[a] = p->pos_h[a][i] + 0.5 * dt * (double)v[a];
+      if (k->shift_coef > 0) x[a] += (double)p->shift[a][i]; /* sph/shift.h */
+    }
+    wl_sph_fluid_finish(dim, k, dt, x, v, vh);
     p->rho[i] = rho > k->rho_floor ? rho : k->rho_floor;
     for (int a = 0; a < dim; a++) {
-      const wl_real v = p->vel[a][i] + (wl_real)dt * p->ace[a][i];
-      p->vel[a][i] = v;
-      p->pos[a][i] = p->pos_h[a][i] + 0.5 * dt * (double)v;
-      if (k->shift_coef > 0) p->pos[a][i] += (double)p->shift[a][i]; /* sph/shift.h */
+      p->vel[a][i] = v[a];
+      p->vel_h[a][i] = vh[a];
+      p->pos[a][i] = x[a];
     }
-    wl_sph_fluid_finish(dim, k, p, dt, i);
   } else {
     p->rho[i] = rho > k->rho0 ? rho : k->rho0;
     if (p->kind[i] == WL_KIND_MOVING)
@@ -170,18 +180,26 @@ WL_HD static WL_INLINE void wl_sph_verlet(const int dim, const struct wl_sph_con
   const wl_real span = (wl_real)(euler ? dt : dt_prev + dt);
   const wl_real rho_n = p->rho[i];
   const wl_real rho = (euler ? rho_n : p->rho_h[i]) + span * p->ar[i];
-  p->rho_h[i] = rho_n;
   if (p->kind[i] == WL_KIND_FLUID) {
-    p->rho[i] = rho > k->rho_floor ? rho : k->rho_floor;
+    double x[WL_SPH_DIM_MAX];
+    wl_real v[WL_SPH_DIM_MAX], vh[WL_SPH_DIM_MAX];
     for (int a = 0; a < dim; a++) {
       const wl_real v_n = p->vel[a][i], acc = p->ace[a][i];
-      p->vel[a][i] = (euler ? v_n : p->vel_h[a][i]) + span * acc;
-      p->vel_h[a][i] = v_n;
-      p->pos[a][i] += dt * (double)v_n + 0.5 * dt * dt * (double)acc;
-      if (k->shift_coef > 0) p->pos[a][i] += (double)p->shift[a][i]; /* sph/shift.h */
+      v[a] = (euler ? v_n : p->vel_h[a][i]) + span * acc;
+      vh[a] = v_n;
+      x[a] = p->pos[a][i] + (dt * (double)v_n + 0.5 * dt * dt * (double)acc);
+      if (k->shift_coef > 0) x[a] += (double)p->shift[a][i]; /* sph/shift.h */
     }
-    wl_sph_fluid_finish(dim, k, p, dt, i);
+    wl_sph_fluid_finish(dim, k, dt, x, v, vh);
+    p->rho_h[i] = rho_n;
+    p->rho[i] = rho > k->rho_floor ? rho : k->rho_floor;
+    for (int a = 0; a < dim; a++) {
+      p->vel[a][i] = v[a];
+      p->vel_h[a][i] = vh[a];
+      p->pos[a][i] = x[a];
+    }
   } else {
+    p->rho_h[i] = rho_n;
     p->rho[i] = rho > k->rho0 ? rho : k->rho0;
     for (int a = 0; a < dim; a++) {
       const double v = p->kind[i] == WL_KIND_MOVING ? body_vel[p->body[i]][a] : 0.0;
