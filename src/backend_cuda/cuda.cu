@@ -2301,19 +2301,29 @@ static enum wl_status init_mode(void **ctx, const struct wl_sph_config *cfg,
   }
   m.n_walls = cfg->n_walls;
   memcpy(m.walls, cfg->walls, sizeof m.walls);
-  C(cudaMemcpy(c->meta, &m, sizeof m, cudaMemcpyHostToDevice));
+  /* Every copy in the run's own stream. A plain cudaMemcpy goes to the
+   * legacy stream, which a non-blocking stream does not wait for, and
+   * returns before its DMA lands (from pageable memory, or device to
+   * device): with other runs' copies ahead of it on a busy GPU, the first
+   * sort read arrays not yet written (a 64-case sweep gave a case's wall
+   * particles no body, its boundary force 0, on some runs and not others). */
+  cudaStream_t s = c->stream;
+  C(cudaMemcpyAsync(c->meta, &m, sizeof m, cudaMemcpyHostToDevice, s));
   for (int a = 0; a < dim; a++) {
-    C(cudaMemcpy(c->pos[a], host->pos[a], nd, cudaMemcpyHostToDevice));
-    C(cudaMemcpy(c->vel[a], host->vel[a], nr, cudaMemcpyHostToDevice));
+    C(cudaMemcpyAsync(c->pos[a], host->pos[a], nd, cudaMemcpyHostToDevice, s));
+    C(cudaMemcpyAsync(c->vel[a], host->vel[a], nr, cudaMemcpyHostToDevice, s));
   }
-  C(cudaMemcpy(c->rho, host->rho, nr, cudaMemcpyHostToDevice));
-  C(cudaMemcpy(c->id, host->id, nu, cudaMemcpyHostToDevice));
-  C(cudaMemcpy(c->kind, host->kind, n8, cudaMemcpyHostToDevice));
-  C(cudaMemcpy(c->body, host->body, n8, cudaMemcpyHostToDevice));
+  C(cudaMemcpyAsync(c->rho, host->rho, nr, cudaMemcpyHostToDevice, s));
+  C(cudaMemcpyAsync(c->id, host->id, nu, cudaMemcpyHostToDevice, s));
+  C(cudaMemcpyAsync(c->kind, host->kind, n8, cudaMemcpyHostToDevice, s));
+  C(cudaMemcpyAsync(c->body, host->body, n8, cudaMemcpyHostToDevice, s));
   if (verlet) { /* the previous step's v and rho start as the initial state */
-    for (int a = 0; a < dim; a++) C(cudaMemcpy(c->vel_m1[a], c->vel[a], nr, cudaMemcpyDeviceToDevice));
-    C(cudaMemcpy(c->rho_m1, c->rho, nr, cudaMemcpyDeviceToDevice));
+    for (int a = 0; a < dim; a++)
+      C(cudaMemcpyAsync(c->vel_m1[a], c->vel[a], nr, cudaMemcpyDeviceToDevice, s));
+    C(cudaMemcpyAsync(c->rho_m1, c->rho, nr, cudaMemcpyDeviceToDevice, s));
   }
+  /* m lives on this stack: its copy must land before the function returns */
+  C(cudaStreamSynchronize(s));
   /* the plan at rest: no stop, no moving body in motion */
   C(cudaMemsetAsync(c->stats, 0, sizeof *c->stats, c->stream));
 #undef C
