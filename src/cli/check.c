@@ -547,7 +547,7 @@ static enum wl_status assess_stoppable(void *user, volatile sig_atomic_t *stop,
     print_convergence(&res.cases[i], &res.conv[i]);
   }
   if (res.n_cases) printf("\nresults in %s/ (results.h5, summary.json, CSV, particle snapshots)\n", res.out_dir);
-  /* a stop after the results were written: wl_cli_with_stop_signals says so */
+  /* a stop after the results were written: wl_cli_assess says so */
   wl_assess_result_clear(&res);
   wl_scenario_clear(&s);
   return st;

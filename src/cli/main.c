@@ -69,9 +69,9 @@ static void wait_passively(char **argv) {
 /* The GPU runs the streams of cases side by side (a sweep's up to 16, a
  * ladder's levels) on hardware work queues, 8 by default: streams beyond
  * that share a queue and their kernels wait behind each other's. 32 (the
- * most) queues, unless the user chose: a 64-case sweep took 61 s instead of
- * 89 (H200, BENCHMARKS.md "Sweeps"). Read when the CUDA context is made,
- * long after this. */
+ * most) queues, unless the user chose: a 64-case sweep took 63.4 s instead
+ * of 69.8 (H100, BENCHMARKS.md "Sweeps"). Read when the CUDA context is
+ * made, long after this. */
 static void gpu_queues_apart(void) {
   if (!getenv("CUDA_DEVICE_MAX_CONNECTIONS")) setenv("CUDA_DEVICE_MAX_CONNECTIONS", "32", 1);
 }
