@@ -278,16 +278,24 @@ enum wl_status wl_plan_ladder_cost(const struct wl_scenario *s, const struct wl_
 /* A small flume's step is a few latency-bound kernels that leave the GPU
  * mostly idle, so runs share it well: with k runs on it each advances at
  * 1 / (1 + WL_PLAN_GPU_SHARE_COST (k - 1)) of its speed alone (processor
- * sharing), and a waiting run starts as one ends; but many small runs
- * together reach only WL_PLAN_GPU_SHARED_EFFICIENCY of the force loop's
- * rate on one large run (each runs its own sort and small kernels), which
- * bounds the time from below (a large run, at that rate alone, counts its
- * work at the full rate). Both fitted on the H100 (BENCHMARKS.md,
- * "Sweeps"): the cost to the main job's finest explosion level of its
- * ladder's five other runs beside it, and seawall-sweep.yaml's sweeps
- * against their force loops' work; test_plan holds the model to them. */
+ * sharing), and a waiting run starts as one ends. But k small runs together
+ * reach only wl_plan_gpu_shared_efficiency(k) = WL_PLAN_GPU_SHARED_RATE k /
+ * (k + WL_PLAN_GPU_SHARED_HALF) of the force loop's rate on one large run
+ * (each runs its own sort and small kernels, and more of them fill more of
+ * the GPU), which bounds the time from below (a large run, at that rate
+ * alone, counts its work at the full rate). Fitted on the H100
+ * (BENCHMARKS.md, "Sweeps" and "The main job on this machine"): the cost to
+ * the main job's finest explosion level of its ladder's five other runs
+ * beside it; the share that seawall-sweep.yaml's cases reach one alone
+ * (0.105, a whole `assess` each) and 16 side by side (0.53; its 64 cases
+ * 16 at a time, 0.57). test_plan holds the model to these runs. */
 #define WL_PLAN_GPU_SHARE_COST 0.064
-#define WL_PLAN_GPU_SHARED_EFFICIENCY 0.37
+#define WL_PLAN_GPU_SHARED_RATE 0.77
+#define WL_PLAN_GPU_SHARED_HALF 6.3
+
+/* The share of the force loop's rate on one large run that `width`
+ * latency-bound runs side by side reach together (above). */
+double wl_plan_gpu_shared_efficiency(int width);
 
 /* The GPU time of n runs (each costed alone in runs[i]) run at most
  * `width` at a time on one GPU, in order, a new one starting as one ends. */

@@ -797,18 +797,23 @@ enum wl_status wl_plan_ladder_cost(const struct wl_scenario *s, const struct wl_
   return WL_OK;
 }
 
+double wl_plan_gpu_shared_efficiency(int width) {
+  const double k = width < 1 ? 1.0 : (double)width;
+  return WL_PLAN_GPU_SHARED_RATE * k / (k + WL_PLAN_GPU_SHARED_HALF);
+}
+
 double wl_plan_gpu_side_by_side(const struct wl_plan_cost *runs, int n, int width) {
-  /* the throughput bound: a run whose step is latency-bound alone reaches
-   * only the shared efficiency of the force loop's rate beside others; a
-   * large run, at that rate alone, keeps it */
+  /* the throughput bound: runs whose step is latency-bound alone reach
+   * together only a share of the force loop's rate, the larger the more of
+   * them run (plan.h); a large run, at that rate alone, keeps it */
+  if (width > n) width = n;
+  const double shared = wl_plan_gpu_shared_efficiency(width);
   double sum = 0.0, work = 0.0;
   for (int i = 0; i < n; i++) {
     sum += runs[i].gpu_seconds;
-    work += runs[i].gpu_seconds > runs[i].gpu_work_seconds
-                ? runs[i].gpu_work_seconds / WL_PLAN_GPU_SHARED_EFFICIENCY
-                : runs[i].gpu_work_seconds;
+    work += runs[i].gpu_seconds > runs[i].gpu_work_seconds ? runs[i].gpu_work_seconds / shared
+                                                           : runs[i].gpu_work_seconds;
   }
-  if (width > n) width = n;
   double *left = width > 1 ? malloc((size_t)width * sizeof *left) : NULL;
   if (!left) return sum; /* one at a time (or no memory: the dearer answer) */
   /* processor sharing: the k runs on the GPU each advance by 1 / (1 + cost
