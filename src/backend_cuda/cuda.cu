@@ -163,7 +163,7 @@ static constexpr bool loop_built(int mode, int dim) {
 /* The step under way, as its kernels read it (no step input is a kernel
  * argument: a captured step replays with the same arguments). Written by
  * the host before a step (cuda_step) or planned on the device in a block
- * (cuda_run, plan_step). */
+ * (cuda_run, plan_next). */
 struct dplan {
   double dt, dt_prev; /* the step and the previous one [s] */
   int euler;          /* Verlet: the Euler step (integrate.h wl_sph_verlet_euler) */
@@ -1246,10 +1246,14 @@ static __device__ void fault_record(const struct wl_sph_const *k, const struct w
 
 /* The plan of a block's next step on the device, as the host's loop
  * (src/sph/sim.c wl_sph_sim_run and wl_sph_sim_step) would choose it, by
- * the driver's rules of backend.h; or the block's stop. */
-static __device__ void plan_step(const struct wl_sph_const *k, struct dstats *st) {
-  struct dblock *b = &st->blk;
-  struct dplan *pl = &st->plan;
+ * the driver's rules of backend.h; or the block's stop. On the block's
+ * state and the plan's fields in registers (the caller loads and stores
+ * them). */
+struct dnext {
+  double dt, dt_prev;
+  int euler, stop;
+};
+static __device__ void plan_next(const struct wl_sph_const *k, struct dblock *b, struct dnext *pl) {
   const double dt_cfl = b->dt_next, rest = b->t_out - b->t;
   int why = -1;
   if (b->taken >= b->max_steps) why = WL_SPH_BLOCK_COUNT;
@@ -1267,17 +1271,33 @@ static __device__ void plan_step(const struct wl_sph_const *k, struct dstats *st
   b->lands = lands;
 }
 
+/* The plan's fields that plan_next sets, stored. */
+static __device__ void store_next(struct dplan *p, const struct dnext *pl) {
+  p->dt = pl->dt;
+  p->dt_prev = pl->dt_prev;
+  p->euler = pl->euler;
+  p->stop = pl->stop;
+}
+
 /* A block's first plan (one thread). */
 __global__ void k_plan(struct wl_sph_const kp, struct dstats *st) {
   const struct wl_sph_const k = kp;
-  plan_step(&k, st);
+  struct dblock b = st->blk;
+  struct dnext pl = {st->plan.dt, st->plan.dt_prev, st->plan.euler, st->plan.stop};
+  plan_next(&k, &b, &pl);
+  st->blk = b;
+  store_next(&st->plan, &pl);
 }
 
 /* The end of a step (one thread, after every particle's update): the fault
  * record of the first faulty particle; in a block, the step counted as
  * the host's loop counts it (time, step, the next CFL step, the guards in
  * its order) and the next one planned, or the block stopped after it. The
- * counters the update's blocks added to are read atomically (past L1). */
+ * counters the update's blocks added to are read atomically (past L1).
+ * One thread runs this with nothing to hide its latencies behind, so
+ * every value it reads is loaded at once, before any is used, computed on
+ * in registers and stored at the end: read as they are used, each load
+ * waited for the branch before it (BENCHMARKS.md, "the cost of a step"). */
 template <int DIM>
 static __device__ void end_step(const struct wl_sph_const *k, const struct wl_particles *p, int n,
                                 const struct dmeta *m, const struct wl_sph_walls_sh *ws,
@@ -1285,37 +1305,42 @@ static __device__ void end_step(const struct wl_sph_const *k, const struct wl_pa
   const int f = atomicAdd(&st->first, 0);
   const unsigned long long limited = atomicAdd(&st->limited, 0ull);
   const unsigned long long excluded = atomicAdd(&st->excluded, 0ull);
-  if (f < n) fault_record<DIM>(k, p, f, m, ws->w, st);
-  if (!st->plan.block) return;
-  struct dblock *b = &st->blk;
+  const int is_block = st->plan.block;
   const double dt = st->plan.dt;
-  b->t += dt;
-  b->dt_last = dt;
-  b->step++;
-  b->taken++;
+  struct dnext pl = {dt, st->plan.dt_prev, st->plan.euler, st->plan.stop};
+  struct dblock b = st->blk;
+  const unsigned long long bits[3] = {st->ace2, st->vel2, st->visc};
+  if (f < n) fault_record<DIM>(k, p, f, m, ws->w, st);
+  if (!is_block) return;
+  b.t += dt;
+  b.dt_last = dt;
+  b.step++;
+  b.taken++;
   double ace2, vel2, visc;
-  memcpy(&ace2, &st->ace2, sizeof ace2);
-  memcpy(&vel2, &st->vel2, sizeof vel2);
-  memcpy(&visc, &st->visc, sizeof visc);
+  memcpy(&ace2, &bits[0], sizeof ace2);
+  memcpy(&vel2, &bits[1], sizeof vel2);
+  memcpy(&visc, &bits[2], sizeof visc);
   struct wl_sph_step_out o;
   wl_sph_step_dt(k, ace2, vel2, visc, &o);
-  b->dt_next = o.dt_next;
-  b->limited += limited;
-  b->excluded += excluded;
-  b->n_excluded += (long long)excluded;
+  b.dt_next = o.dt_next;
+  b.limited += limited;
+  b.excluded += excluded;
+  b.n_excluded += (long long)excluded;
   int why = -1;
   if (f < n) why = WL_SPH_BLOCK_FAULT;
-  else if (wl_sph_excluded_too_many((long)b->n_excluded, (long)b->n_fluid)) why = WL_SPH_BLOCK_EXCLUDED;
-  else if (b->lands) {
-    b->t = b->t_out; /* exact, against rounding of t + dt */
+  else if (wl_sph_excluded_too_many((long)b.n_excluded, (long)b.n_fluid)) why = WL_SPH_BLOCK_EXCLUDED;
+  else if (b.lands) {
+    b.t = b.t_out; /* exact, against rounding of t + dt */
     why = WL_SPH_BLOCK_LANDED;
   }
   if (why >= 0) {
-    b->why = why;
-    st->plan.stop = 1;
+    b.why = why;
+    pl.stop = 1;
   } else {
-    plan_step(k, st);
+    plan_next(k, &b, &pl);
   }
+  st->blk = b;
+  store_next(&st->plan, &pl);
 }
 
 /* The update (when update != 0: the corrector, or the Verlet step with
