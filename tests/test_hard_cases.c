@@ -125,14 +125,17 @@ struct hard_case {
 };
 
 static const struct hard_case cases[] = {
-    /* H/h = 0.6 on 0.2 m: the crest reaches the wall at about 1.5 s and the
-     * plunging run-up and its fall follow. */
+    /* H/h = 0.6 on 0.2 m, started 1.6 m from the wall: the crest reaches it
+     * at about 0.9 s (sqrt(g (h + H)) = 1.77 m/s), and the plunging run-up
+     * and its fall follow for 1.4 s. (Started 2.5 m off and run to 3 s until
+     * 2026-11-27: the same peak force and run-up within 2 %, at 1.8 times
+     * the cost in CI's 15 minutes.) */
     {"breaking", "near-breaking solitary H/h = 0.6",
      "scenario: breaking\nwater: {depth: 0.2 m}\ndomain: {length: 4.5 m}\n"
      "wall: {x: 4 m, height: 0.6 m}\n"
-     "loads: {solitary: {height: 0.12 m, generation: initial, at: 1.5 m}}\n"
+     "loads: {solitary: {height: 0.12 m, generation: initial, at: 2.4 m}}\n"
      "resolution: {dp: 0.01 m}\nrun: {output_interval: 0.01 s}\n",
-     WL_CASE_SOLITARY, 3.0, 1.8},
+     WL_CASE_SOLITARY, 2.3, 1.2},
     /* Seed 001 section 3.1.1 A at coarse resolution (eta0/dp = 8). */
     {"crater", "Charlesworth crater (seed 001)",
      "scenario: charlesworth\nwater: {depth: 16.5 ft}\ndomain: {length: 45 m}\n"
