@@ -8,7 +8,7 @@
 # are the same bits, and the GPU tests of the second build.
 #
 #   bench/gpu_step.sh pack BASE_BUILD NEW_BUILD DIR   here: the two builds'
-#       wallload, test_cuda_backend and h5_series_equal into DIR/base and
+#       wallload, test_cuda_backend, test_cuda_starts and h5_series_equal into DIR/base and
 #       DIR/new, the shared libraries the device machine lacks (ldd) into
 #       DIR/lib, fonts for the report (as bench/assess_e2e.sh pack)
 #   bench/gpu_step.sh run DIR [ROUNDS]   there (DIR carried): ROUNDS (1)
@@ -29,7 +29,8 @@ pack)
   mkdir -p "$D/base" "$D/new"
   for b in base new; do
     src=$base; [ $b = new ] && src=$new
-    cp "$src/wallload" "$src/tests/test_cuda_backend" "$src/tests/h5_series_equal" "$D/$b/"
+    cp "$src/wallload" "$src/tests/test_cuda_backend" "$src/tests/test_cuda_starts" \
+      "$src/tests/h5_series_equal" "$D/$b/"
     strip "$D/$b/"*
   done
   . "$here/bench/pack_runtime.sh"
@@ -110,6 +111,8 @@ PY
     (cd $R && timeout 300 "$D/new/test_cuda_backend" >$R/test_cuda_backend.log 2>&1; echo "test_cuda_backend rc=$?")
     grep -E '^(FAIL|#.*blocks)' $R/test_cuda_backend.log | head -30
     echo "PASS: $(grep -c '^PASS' $R/test_cuda_backend.log) FAIL: $(grep -c '^FAIL' $R/test_cuda_backend.log)"
+    (cd $R && timeout 300 "$D/new/test_cuda_starts" >$R/test_cuda_starts.log 2>&1; echo "test_cuda_starts rc=$?")
+    grep -E '^(FAIL|# [0-9]+ starts)' $R/test_cuda_starts.log | head
     timeout 300 bash "$here/tests/cli_gpu_assess.sh" "$D/new/wallload" >$R/cli_gpu_assess.log 2>&1
     echo "cli_gpu_assess.sh rc=$?"; grep -E '^(FAIL|SKIP)' $R/cli_gpu_assess.log | head
     (cd $R && WL_H5_SERIES_EQUAL=$D/new/h5_series_equal timeout 300 bash "$here/tests/cli_sweep_run.sh" \

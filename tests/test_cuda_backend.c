@@ -54,7 +54,6 @@
  * particle shifting (same day) GPU against CPU: 2D |dx|max 3.6e-6 dp,
  * kinetic energy 2.1e-6; 3D between free-slip walls 6.6e-7 dp, 8.8e-7. */
 #include <math.h>
-#include <omp.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -446,98 +445,7 @@ static void blocks_vs_steps(const char *name, int verlet, double rho_max_factor,
   wl_sph_sim_free(b);
 }
 
-/* Runs that start beside others (a sweep's cases, a ladder's levels): each
- * backend's first state, read back right after its start, is the state it
- * was given, particle by particle (position, velocity, kind and body by id;
- * the start sorts them and evaluates the forces once, which moves nothing).
- * 8 threads start larger runs, step them and read their state back, one
- * after another (copies both ways, as a sweep's starts and outputs make),
- * while 8 threads start small runs, check them and start the next, ROUNDS
- * each. Not a reproduction of the race faaa09a fixed (a start's copies on
- * CUDA's legacy stream, which a 64-case sweep showed as cases whose wall
- * particles had no body): this check passed with that commit's parent's
- * copies too, three times on an H100 (2026-11-26); what it holds is that
- * starts beside busy runs are exact. */
-static void concurrent_starts(void) {
-  enum { THREADS_BUSY = 8, THREADS_START = 8, ROUNDS = 6 };
-  const struct scene_case c = {2, 0.0025, 0, "2D dam break, runs started beside busy runs", 0, 0,
-                               1, NULL};
-  const struct scene_case cb = {2, 0.0008, 0, "2D dam break, the busy runs", 0, 0, 1, NULL};
-  struct wl_error err;
-  wl_error_clear(&err);
-  struct wl_sph_config cfg, cfg_busy;
-  struct wl_particles init = {0}, init_busy = {0};
-  if (build(&c, &cfg, &init, &err) != WL_OK || build(&cb, &cfg_busy, &init_busy, &err) != WL_OK) {
-    printf("FAIL %s: build: %s\n", c.name, err.msg);
-    wl_test_failures++;
-    wl_particles_clear(&init);
-    return;
-  }
-  printf("# %s: %d particles; %s: %d\n", c.name, init.n, cb.name, init_busy.n);
-  int *where = malloc(sizeof(int) * (size_t)init.n);
-  for (int i = 0; i < init.n; i++) where[i] = -1;
-  for (int i = 0; i < init.n; i++)
-    if (init.id[i] < (unsigned)init.n) where[init.id[i]] = i;
-  long bad = 0, fails = 0, starts = 0, busy_steps = 0;
-  int starters_left = THREADS_START;
-#pragma omp parallel num_threads(THREADS_BUSY + THREADS_START) reduction(+ : bad, fails, starts, busy_steps)
-  {
-    struct wl_error e;
-    wl_error_clear(&e);
-    struct wl_sph_sim *sim = NULL;
-    if (omp_get_thread_num() < THREADS_BUSY) {
-      /* larger runs, one after another until the starters are done: each
-       * starts (copies in), steps and reads its state back (copies out) */
-      int left = 1;
-      while (left > 0) {
-        if (wl_sph_sim_alloc(&sim, &wl_backend_cuda_ops, &cfg_busy, &init_busy, &e) != WL_OK) {
-          fails++;
-          break;
-        }
-        for (int k = 0; k < 4 && wl_sph_sim_step(sim, 1.0, &e) == WL_OK; k++) busy_steps++;
-        if (!wl_sph_sim_particles(sim, &e)) fails++;
-        wl_sph_sim_free(sim);
-        sim = NULL;
-#pragma omp atomic read
-        left = starters_left;
-      }
-    } else {
-      for (int r = 0; r < ROUNDS; r++) {
-        const struct wl_particles *p = NULL;
-        starts++;
-        if (wl_sph_sim_alloc(&sim, &wl_backend_cuda_ops, &cfg, &init, &e) != WL_OK ||
-            !(p = wl_sph_sim_particles(sim, &e)) || p->n != init.n) {
-          fails++;
-        } else {
-          for (int j = 0; j < p->n; j++) {
-            const unsigned id = p->id[j];
-            const int i = id < (unsigned)init.n ? where[id] : -1;
-            int same = i >= 0 && p->kind[j] == init.kind[i] && p->body[j] == init.body[i];
-            for (int a = 0; same && a < p->dim; a++)
-              same = p->pos[a][j] == init.pos[a][i] && p->vel[a][j] == init.vel[a][i];
-            bad += !same;
-          }
-        }
-        wl_sph_sim_free(sim);
-        sim = NULL;
-      }
-#pragma omp atomic
-      starters_left--;
-    }
-  }
-  printf("# %ld starts beside %d threads of busy runs (%ld steps): %ld did not start or read "
-         "back, %ld particles differ from the state given\n",
-         starts, THREADS_BUSY, busy_steps, fails, bad);
-  CHECK_TRUE(starts == THREADS_START * ROUNDS && fails == 0,
-             "runs start and read back beside busy runs");
-  CHECK_TRUE(bad == 0, "every started run holds the state it was given (position, velocity, kind, "
-                       "body by id)");
-  free(where);
-  wl_particles_clear(&init);
-  wl_particles_clear(&init_busy);
-}
-
-int main(int argc, char **argv) {
+int main(void) {
   struct wl_cuda_device dev;
   struct wl_error err;
   wl_error_clear(&err);
@@ -585,8 +493,6 @@ int main(int argc, char **argv) {
   const struct scene_case c2v = {2, 0.01, 600, "2D dam break, Verlet integrator", 0, 0, 1, NULL};
   const struct scene_case c3v = {3, 0.01, 200, "3D dam break with pillar between free-slip walls, "
                                  "Verlet integrator", 1, 0, 1, NULL};
-  concurrent_starts();
-  if (argc > 1 && !strcmp(argv[1], "starts")) return TEST_RESULT(); /* that alone */
   run_case(&c2);
   run_case(&c3);
   run_case(&c3m);
