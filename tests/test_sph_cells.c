@@ -124,6 +124,7 @@ static int run(int dim) {
 
   /* forces: gather (per particle), gather blocks, brute force */
   struct wl_sph_eval e;
+  memset(&e, 0, sizeof e);
   for (int a = 0; a < WL_SPH_DIM_MAX; a++) {
     e.pos[a] = a < dim ? s.pos[a] : NULL;
     e.vel[a] = a < dim ? s.vel[a] : NULL;

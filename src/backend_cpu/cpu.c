@@ -44,6 +44,9 @@ struct cpu {
   shift_fn shift;          /* particle shifting loop (sph/shift.h), the same ISA */
   const char *isa;         /* which build of it */
   int n_threads;
+  /* the fluid's velocity gradients (sph/vgrad.h), when the residual
+   * viscosity is on: recomputed before each force evaluation */
+  wl_real *gv[WL_SPH_DIM_MAX * WL_SPH_DIM_MAX];
 };
 
 /* Maxima of one force evaluation. */
@@ -240,6 +243,7 @@ static void evaluate(struct cpu *c, double *const *pos, wl_real *const *vel, wl_
   e.begin = c->begin;
   e.ar = p->ar;
   e.visc = p->visc;
+  for (int q = 0; q < WL_SPH_DIM_MAX * WL_SPH_DIM_MAX; q++) e.gv[q] = c->gv[q];
   const block_fn block = c->block;
   wl_real *press = p->press;
   const int n_keys = 2 * c->grid.n_cells;
@@ -258,6 +262,14 @@ static void evaluate(struct cpu *c, double *const *pos, wl_real *const *vel, wl_
     }
 #pragma omp for schedule(static)
     for (int i = nb_eos; i < n; i++) press[i] = wl_sph_eos_p(k, rho[i]);
+    if (c->gv[0]) {
+      /* the residual viscosity's velocity gradients (sph/vgrad.h) */
+#pragma omp for schedule(dynamic, 256)
+      for (int i = nb; i < n; i++) {
+        if (dim == 2) wl_sph_vgrad(2, k, &c->grid, e.pos, e.vel, e.rho, e.key, e.begin, i, c->gv);
+        else wl_sph_vgrad(3, k, &c->grid, e.pos, e.vel, e.rho, e.key, e.begin, i, c->gv);
+      }
+    }
     if (wall_bc) {
       /* the wall condition (sph/wall.h) from the fluid's pressures: the
        * boundary particles' density and pressure before the fluid reads them */
@@ -390,6 +402,7 @@ static void cpu_free(void *ctx) {
   free(c->key_tmp);
   for (int a = 0; a < WL_SPH_DIM_MAX; a++) free(c->prev_vel_tmp[a]);
   free(c->prev_rho_tmp);
+  for (int q = 0; q < WL_SPH_DIM_MAX * WL_SPH_DIM_MAX; q++) free(c->gv[q]);
   free(c);
 }
 
@@ -491,6 +504,18 @@ static enum wl_status cpu_init(void **ctx, const struct wl_sph_config *cfg,
                           "(%d particles x %zu B)", n, (size_t)(dim + 1) * sizeof(wl_real));
     }
     memcpy(c->p.rho_h, c->p.rho, sizeof(wl_real) * (size_t)host->n);
+  }
+  if (k->rav > 0) {
+    /* the residual viscosity's velocity gradients (sph/vgrad.h) */
+    const size_t bytes = sizeof(wl_real) * (size_t)(c->p.capacity > 0 ? c->p.capacity : 1);
+    int ok = 1;
+    for (int q = 0; q < dim * dim; q++) ok = ok && (c->gv[q] = malloc(bytes)) != NULL;
+    if (!ok) {
+      const int n = c->p.capacity;
+      cpu_free(c);
+      return wl_error_set(err, WL_ENOMEM, "cpu backend: cannot allocate the velocity gradients "
+                          "(%d particles x %zu B)", n, (size_t)(dim * dim) * sizeof(wl_real));
+    }
   }
   if (!c->begin || !c->cursor || !c->key_tmp) {
     const double mb = (2.0 * g->n_cells + 1) * sizeof(int) / 1048576.0, side = g->cell;

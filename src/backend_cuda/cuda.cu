@@ -129,11 +129,14 @@ static constexpr int default_mode(int dim, int n) {
                   : !WL_REAL_DOUBLE ? MODE_SPLIT : MODE_FAST;
 }
 
-/* Whether this build has loop `mode` for dimension dim. */
+/* Whether this build has loop `mode` for dimension dim. The product has
+ * its default loops and, in both dimensions, fast: the one that runs the
+ * residual viscosity (its pair term and gradients go through the shared
+ * wl_sph_gather_block, which the lanes and split loops do not call). */
 static constexpr bool loop_built(int mode, int dim) {
   return WL_CUDA_TEST_LOOPS ? mode != MODE_SPLIT || !WL_REAL_DOUBLE
          : dim == 2         ? mode == MODE_LANES || mode == MODE_FAST
-                            : mode == default_mode(dim, 0);
+                            : mode == default_mode(dim, 0) || mode == MODE_FAST;
 }
 
 /* Threads per particle of the lanes loop and the 2D wall condition (a
@@ -206,6 +209,11 @@ struct wl_sph_walls_sh {
   struct wl_sph_wall w[WL_SPH_WALLS_MAX];
 };
 
+/* The velocity gradients' arrays, by value into k_vgrad. */
+struct gvptr {
+  wl_real *g[WL_SPH_DIM_MAX * WL_SPH_DIM_MAX];
+};
+
 /* Read-only configuration on the device (guard). */
 struct dmeta {
   double lo[WL_SPH_DIM_MAX], hi[WL_SPH_DIM_MAX];
@@ -235,6 +243,9 @@ struct gpu {
   wl_real *vel[WL_SPH_DIM_MAX], *vel_h[WL_SPH_DIM_MAX], *ace[WL_SPH_DIM_MAX];
   wl_real *rho, *rho_h, *press, *ar, *visc;
   wl_real *shift[WL_SPH_DIM_MAX]; /* particle shifting (NULL when off) */
+  /* the fluid's velocity gradients of the residual viscosity (sph/vgrad.h;
+   * NULL when off): recomputed before each force evaluation, never sorted */
+  wl_real *gv[WL_SPH_DIM_MAX * WL_SPH_DIM_MAX];
   /* Verlet (NULL with the symplectic integrator): the previous step's v and
    * rho (the view's vel_h and rho_h, sph/integrate.h) and their sort targets */
   wl_real *vel_m1[WL_SPH_DIM_MAX], *vel_m1_alt[WL_SPH_DIM_MAX], *rho_m1, *rho_m1_alt;
@@ -661,17 +672,17 @@ __global__ void __launch_bounds__(THREADS)
     if (fluid) {
       for (int r = 0; r < nr; r++) {
         lanes_share<R>(bf[first[r]], bf[last[r] + 1], q, &c0, &c1);
-        wl_sph_gather_range(DIM, LAM, 1, 1, 1, 1, &k, &e, &in, c0, c1, k.av_ff, k.lam_ff, 0, &f);
+        wl_sph_gather_range(DIM, LAM, 1, 1, 1, 1, &k, &e, &in, c0, c1, k.av_ff, k.lam_ff, 0, &f, 0);
       }
       for (int r = 0; r < nr; r++) {
         lanes_share<R>(bb[first[r]], bb[last[r] + 1], q, &c0, &c1);
-        wl_sph_gather_range(DIM, LAM, 1, 0, 1, 1, &k, &e, &in, c0, c1, k.av_fb, k.lam_fb, 0, &b);
+        wl_sph_gather_range(DIM, LAM, 1, 0, 1, 1, &k, &e, &in, c0, c1, k.av_fb, k.lam_fb, 0, &b, 0);
       }
       if (q == 0) wl_sph_gather_mirrors(DIM, LAM, 1, 1, &k, &g, &e, &in, 1, cell, 0, &f, &b);
     } else {
       for (int r = 0; r < nr; r++) {
         lanes_share<R>(bf[first[r]], bf[last[r] + 1], q, &c0, &c1);
-        wl_sph_gather_range(DIM, LAM, 0, 0, 1, 1, &k, &e, &in, c0, c1, k.av_fb, k.lam_fb, 0, &f);
+        wl_sph_gather_range(DIM, LAM, 0, 0, 1, 1, &k, &e, &in, c0, c1, k.av_fb, k.lam_fb, 0, &f, 0);
       }
       if (q == 0) wl_sph_gather_mirrors(DIM, LAM, 1, 1, &k, &g, &e, &in, 0, cell, 0, &f, &f);
     }
@@ -1577,6 +1588,18 @@ static enum wl_status rebuild(struct gpu *c, int how, struct wl_error *err) {
   return WL_OK;
 }
 
+/* The residual viscosity's velocity gradient of each fluid particle
+ * (sph/vgrad.h), before the force loop reads them. */
+template <int DIM>
+__global__ void __launch_bounds__(THREADS)
+    k_vgrad(const struct wl_sph_const kp, const struct wl_sph_grid gp, const struct wl_sph_eval ep,
+            int nb, int n, struct gvptr gv, struct dstats *st) {
+  if (st->plan.stop) return;
+  const int i = nb + tid();
+  if (i >= n) return;
+  wl_sph_vgrad(DIM, &kp, &gp, ep.pos, ep.vel, ep.rho, ep.key, ep.begin, i, gv.g);
+}
+
 /* The force loop of c->mode for particles i0 .. n - 1 (one of those this
  * build has, loop_built). */
 template <int DIM, int LAM>
@@ -1638,6 +1661,14 @@ static enum wl_status evaluate(struct gpu *c, double *const *pos, wl_real *const
   const int n = c->n, nb = c->nb, lam = c->k.visc == WL_SPH_VISC_LAMINAR;
   cudaStream_t s = c->stream;
   const int wall_bc = c->k.boundary == WL_SPH_BOUND_ADAMI, i0 = wall_bc ? nb : 0;
+  if (c->gv[0] && n > nb) {
+    struct gvptr gv;
+    memset(&gv, 0, sizeof gv);
+    for (int q = 0; q < c->dim * c->dim; q++) e.gv[q] = gv.g[q] = c->gv[q];
+    if (c->dim == 3) k_vgrad<3><<<blocks(n - nb), THREADS, 0, s>>>(c->k, c->grid, e, nb, n, gv, c->stats);
+    else k_vgrad<2><<<blocks(n - nb), THREADS, 0, s>>>(c->k, c->grid, e, nb, n, gv, c->stats);
+    CKL("velocity gradient");
+  }
   if (wall_bc && nb > 0) {
     struct wallin w;
     memset(&w, 0, sizeof w);
@@ -2143,13 +2174,14 @@ static enum wl_status dalloc(struct gpu *c, void **p, size_t bytes, const char *
 }
 
 /* Device bytes per particle of the arrays (dim components where vectors). */
-static size_t bytes_per_particle(int dim, int shifting, int verlet) {
+static size_t bytes_per_particle(int dim, int shifting, int verlet, int residual) {
   return (size_t)dim * (2 * sizeof(double) + 3 * sizeof(wl_real)) /* pos, pos_h, vel, vel_h, ace */
          + 5 * sizeof(wl_real)                                      /* rho, rho_h, press, ar, visc */
          + 2 * sizeof(unsigned int)                                 /* key, id */
          + 4                                                        /* kind, body and their alts */
          + (shifting ? (size_t)dim * sizeof(wl_real) : 0)           /* shift (sph/shift.h) */
-         + (verlet ? 2 * (size_t)(dim + 1) * sizeof(wl_real) : 0);  /* vel_m1, rho_m1, alts */
+         + (verlet ? 2 * (size_t)(dim + 1) * sizeof(wl_real) : 0)   /* vel_m1, rho_m1, alts */
+         + (residual ? (size_t)(dim * dim) * sizeof(wl_real) : 0);  /* gv (sph/vgrad.h) */
 }
 
 /* The split loop's kernels of dimension DIM asked for the most shared
@@ -2185,11 +2217,17 @@ static enum wl_status init_mode(void **ctx, const struct wl_sph_config *cfg,
   c->dim = dim;
   c->n = host->n;
   c->nb = host->n_bound;
-  c->mode = mode < 0 ? default_mode(dim, host->n) : mode;
+  const int residual = k->rav > 0;
+  c->mode = mode >= 0 ? mode : residual ? MODE_FAST : default_mode(dim, host->n);
   if (!(dim == 3 ? loop_built(c->mode, 3) : loop_built(c->mode, 2))) {
     cuda_free(c);
     return wl_error_set(err, WL_EINPUT, "cuda backend: force loop %d is not in this build for "
                         "%dD", mode, dim);
+  }
+  if (residual && c->mode != MODE_FAST && c->mode != MODE_REF) {
+    cuda_free(c);
+    return wl_error_set(err, WL_EINPUT, "cuda backend: the residual viscosity runs in the fast "
+                        "or the reference force loop, not in loop %d", c->mode);
   }
   if ((st = wl_sph_grid_make(cfg, k, &c->grid, err))) {
     cuda_free(c);
@@ -2211,7 +2249,7 @@ static enum wl_status init_mode(void **ctx, const struct wl_sph_config *cfg,
   c->bsum_bytes = sizeof(int) * (size_t)scan_blocks(n_keys + 1);
   const int shifting = k->shift_coef > 0;
   const int verlet = k->integrator == WL_SPH_VERLET;
-  const size_t per = bytes_per_particle(dim, shifting, verlet);
+  const size_t per = bytes_per_particle(dim, shifting, verlet, residual);
   const size_t need = per * (size_t)n + 2 * sizeof(int) * (size_t)(n_keys + 1) + c->bsum_bytes +
                       sizeof(struct dmeta) + sizeof(struct dstats);
   size_t free_b = 0, total_b = 0;
@@ -2253,6 +2291,7 @@ static enum wl_status init_mode(void **ctx, const struct wl_sph_config *cfg,
     A(c->vel_h[a], nr, "vel_h");
     A(c->ace[a], nr, "ace");
     if (shifting) A(c->shift[a], nr, "shift");
+    for (int b = 0; residual && b < dim; b++) A(c->gv[a * dim + b], nr, "velocity gradient");
     if (verlet) {
       A(c->vel_m1[a], nr, "previous velocity (Verlet)");
       A(c->vel_m1_alt[a], nr, "previous velocity (Verlet, sort copy)");

@@ -166,6 +166,10 @@ static const struct wl_key numerics_keys[] = {
     {"density_diffusion", KT_QTY, WL_DIM_NONE, OFF(numerics.density_diffusion), NULL, 0,
      WL_SPH_DELTA_MAX, 0, 0,
      "0.1", NULL, NO_FLAG, 0, "delta-SPH coefficient (0 switches it off; wall pressure is noise then)"},
+    {"residual_viscosity", KT_QTY, WL_DIM_NONE, OFF(numerics.residual_viscosity), NULL, 0,
+     WL_SPH_ALPHA_MAX, 0, 0, "0", NULL, NO_FLAG, 0,
+     "alpha of the residual viscosity: artificial viscosity on the velocity's departure from its "
+     "linear field (0: off; docs/numerics.md)"},
     {"shifting", KT_ENUM, WL_DIM_NONE, OFF(numerics.shifting), onoff_choices, NONE, NONE, 0, 0,
      "off", NULL, NO_FLAG, 0, "particle shifting"},
     {"integrator", KT_ENUM, WL_DIM_NONE, OFF(numerics.integrator), integrator_choices, NONE, NONE,

@@ -77,6 +77,10 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
     snprintf(range, sizeof range, "must be in [0, %g]", WL_SPH_DELTA_MAX);
     return bad(err, "delta", prm->delta, range);
   }
+  if (!(prm->residual_alpha >= 0 && prm->residual_alpha <= WL_SPH_ALPHA_MAX)) {
+    snprintf(range, sizeof range, "must be in [0, %g]", WL_SPH_ALPHA_MAX);
+    return bad(err, "residual_alpha", prm->residual_alpha, range);
+  }
   if (!(prm->cfl > WL_SPH_CFL_MIN_OPEN && prm->cfl <= WL_SPH_CFL_MAX)) {
     snprintf(range, sizeof range, "must be in (%g, %g]", WL_SPH_CFL_MIN_OPEN, WL_SPH_CFL_MAX);
     return bad(err, "cfl", prm->cfl, range);
@@ -140,6 +144,7 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
   k->av_fb = (wl_real)(art ? prm->alpha * prm->visc_bound_factor * c0 * h : prm->wall_alpha * c0 * h);
   k->lam_ff = (wl_real)(art ? 0.0 : 4.0 * prm->nu);
   k->lam_fb = (wl_real)(art ? 0.0 : 4.0 * prm->nu * prm->visc_bound_factor);
+  k->rav = (wl_real)(prm->residual_alpha * c0 * h);
   k->ddt_k = (wl_real)(prm->ddt == WL_SPH_DDT_NONE ? 0.0 : prm->delta * 2.0 * h * c0);
   k->ddt_fb = prm->ddt == WL_SPH_DDT_FOURTAKAS_FULL && prm->boundary == WL_SPH_BOUND_ADAMI
                   ? k->ddt_k

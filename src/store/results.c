@@ -302,6 +302,7 @@ const struct wl_results_setting_key wl_store_results_settings[] = {
     {"numerics.viscosity", "viscosity"},
     {"numerics.nu", "laminar viscosity nu"},
     {"numerics.density_diffusion", "density diffusion"},
+    {"numerics.residual_viscosity", "residual viscosity alpha_r"},
     {"numerics.shifting", "shifting"},
     {"numerics.integrator", "time integrator"},
     {"numerics.verlet_steps", "Euler step every (Verlet)"},

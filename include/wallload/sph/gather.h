@@ -40,6 +40,7 @@
 #include "wallload/sph/cells.h"
 #include "wallload/sph/interact.h"
 #include "wallload/sph/particles.h"
+#include "wallload/sph/vgrad.h"
 
 /* Most particles one wl_sph_gather_block call handles. */
 #define WL_SPH_LANES 8
@@ -56,6 +57,10 @@ struct wl_sph_eval {
   wl_real *ace[WL_SPH_DIM_MAX];  /* out: acceleration incl. gravity [m/s^2] */
   wl_real *ar;                   /* out: drho/dt [kg/m^3/s] */
   wl_real *visc;                 /* out: h max_j |v_ij.r_ij|/(r^2+eta^2) [m/s] */
+  /* the fluid's velocity gradients (sph/vgrad.h; dim x dim row-major,
+   * dv_a/dx_b in gv[a dim + b]) when the residual viscosity is on (k->rav
+   * > 0), filled before the loop; else NULL */
+  const wl_real *gv[WL_SPH_DIM_MAX * WL_SPH_DIM_MAX];
 };
 
 /* An evaluation's inputs (outputs NULL): the state at which a neighbour
@@ -86,6 +91,7 @@ struct wl_sph_lanes {
   double x[WL_SPH_DIM_MAX][WL_SPH_LANES];
   wl_real v[WL_SPH_DIM_MAX][WL_SPH_LANES];
   wl_real rho[WL_SPH_LANES], inv_rho[WL_SPH_LANES], p[WL_SPH_LANES];
+  wl_real g[WL_SPH_DIM_MAX * WL_SPH_DIM_MAX][WL_SPH_LANES]; /* velocity gradient (residual) */
 };
 
 /* The pair of lane l (the particle's r_ij = (dx, dy, dz), v_ij = (ux, uy,
@@ -150,7 +156,7 @@ WL_HD static WL_INLINE void wl_sph_gather_range(const int dim, const int laminar
                                                 const struct wl_sph_eval *e,
                                                 const struct wl_sph_lanes *in, int j0, int j1,
                                                 wl_real av, wl_real lam, const int mirror,
-                                                struct wl_sph_acc *acc) {
+                                                struct wl_sph_acc *acc, const int residual) {
   const int az = dim - 1; /* vertical axis */
   const double *const px = e->pos[0], *const pz = e->pos[az];
   const double *const py = e->pos[dim == 3 ? 1 : 0];
@@ -181,6 +187,19 @@ WL_HD static WL_INLINE void wl_sph_gather_range(const int dim, const int laminar
       const wl_real uz = in->v[az][l] - uzj;
       wl_sph_pair_sum(dim, laminar, want_ace, with_ddt, k, dx, dy, dz, ux, uy, uz, in->rho[l],
                       in->inv_rho[l], in->p[l], rho_j, inv_rho_j, vol_j, p_j, av, lam, acc, l);
+      if (residual && want_ace && with_ddt && !mirror) {
+        /* fluid pairs: the residual viscosity (sph/vgrad.h) */
+        wl_real gi[WL_SPH_DIM_MAX * WL_SPH_DIM_MAX], gj[WL_SPH_DIM_MAX * WL_SPH_DIM_MAX];
+        for (int q = 0; q < dim * dim; q++) {
+          gi[q] = in->g[q][l];
+          gj[q] = WL_LDG(e->gv[q] + j);
+        }
+        const wl_real c =
+            wl_sph_pair_residual(dim, k, dx, dy, dz, ux, uy, uz, gi, gj, in->rho[l] + rho_j);
+        acc->a[0][l] += c * dx;
+        if (dim == 3) acc->a[1][l] += c * dy;
+        acc->a[2][l] += c * dz;
+      }
     }
   }
 }
@@ -209,16 +228,16 @@ WL_HD static WL_INLINE void wl_sph_gather_mirrors(const int dim, const int lamin
     for (int r = 0; r < nm[side]; r++) {
       if (fluid)
         wl_sph_gather_range(dim, laminar, 1, 1, lanes, cut, k, e, in, bf[mf[side][r]],
-                            bf[ml[side][r] + 1], k->av_ff, k->lam_ff, side + 1, f);
+                            bf[ml[side][r] + 1], k->av_ff, k->lam_ff, side + 1, f, 0);
       else
         wl_sph_gather_range(dim, laminar, 0, 0, lanes, cut, k, e, in, bf[mf[side][r]],
-                            bf[ml[side][r] + 1], k->av_fb, k->lam_fb, side + 1, f);
+                            bf[ml[side][r] + 1], k->av_fb, k->lam_fb, side + 1, f, 0);
     }
   if (fluid)
     for (int side = 0; side < 2; side++)
       for (int r = 0; r < nm[side]; r++)
         wl_sph_gather_range(dim, laminar, 1, 0, lanes, cut, k, e, in, bb[mf[side][r]],
-                            bb[ml[side][r] + 1], k->av_fb, k->lam_fb, side + 1, b);
+                            bb[ml[side][r] + 1], k->av_fb, k->lam_fb, side + 1, b, 0);
 }
 
 /* The end of particle i's evaluation, from lane l of its sums over fluid
@@ -279,6 +298,8 @@ WL_HD static WL_INLINE void wl_sph_gather_block(const int dim, const int laminar
     in.rho[l] = e->rho[i];
     in.inv_rho[l] = wl_sph_rcp(e->rho[i]);
     in.p[l] = e->press[i];
+    if (e->gv[0])
+      for (int q = 0; q < dim * dim; q++) in.g[q][l] = e->gv[q][i];
   }
   struct wl_sph_acc f; /* fluid neighbours */
   for (int l = 0; l < lanes; l++) {
@@ -287,19 +308,24 @@ WL_HD static WL_INLINE void wl_sph_gather_block(const int dim, const int laminar
   }
   if (fluid) {
     struct wl_sph_acc b = f; /* boundary neighbours */
-    for (int r = 0; r < nr; r++)
-      wl_sph_gather_range(dim, laminar, 1, 1, lanes, cut, k, e, &in, bf[first[r]],
-                          bf[last[r] + 1], k->av_ff, k->lam_ff, 0, &f);
+    if (e->gv[0])
+      for (int r = 0; r < nr; r++)
+        wl_sph_gather_range(dim, laminar, 1, 1, lanes, cut, k, e, &in, bf[first[r]],
+                            bf[last[r] + 1], k->av_ff, k->lam_ff, 0, &f, 1);
+    else
+      for (int r = 0; r < nr; r++)
+        wl_sph_gather_range(dim, laminar, 1, 1, lanes, cut, k, e, &in, bf[first[r]],
+                            bf[last[r] + 1], k->av_ff, k->lam_ff, 0, &f, 0);
     for (int r = 0; r < nr; r++)
       wl_sph_gather_range(dim, laminar, 1, 0, lanes, cut, k, e, &in, bb[first[r]],
-                          bb[last[r] + 1], k->av_fb, k->lam_fb, 0, &b);
+                          bb[last[r] + 1], k->av_fb, k->lam_fb, 0, &b, 0);
     wl_sph_gather_mirrors(dim, laminar, lanes, cut, k, g, e, &in, 1, cell, span, &f, &b);
     for (int l = 0; l < m; l++)
       wl_sph_finish(dim, k, e, i0 + l, 1, in.rho[l], &f, &b, l);
   } else {
     for (int r = 0; r < nr; r++)
       wl_sph_gather_range(dim, laminar, 0, 0, lanes, cut, k, e, &in, bf[first[r]],
-                          bf[last[r] + 1], k->av_fb, k->lam_fb, 0, &f);
+                          bf[last[r] + 1], k->av_fb, k->lam_fb, 0, &f, 0);
     wl_sph_gather_mirrors(dim, laminar, lanes, cut, k, g, e, &in, 0, cell, span, &f, &f);
     for (int l = 0; l < m; l++) wl_sph_finish(dim, k, e, i0 + l, 0, in.rho[l], &f, &f, l);
   }

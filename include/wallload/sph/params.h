@@ -116,6 +116,7 @@ struct wl_sph_params {
   double nu;                /* kinematic viscosity for WL_SPH_VISC_LAMINAR [m^2/s]; 1e-6 */
   enum wl_sph_ddt ddt;      /* default WL_SPH_DDT_FOURTAKAS_FULL */
   double delta;             /* density diffusion coefficient [-]; default 0.1 */
+  double residual_alpha;    /* residual viscosity alpha_r (sph/vgrad.h) [-]; 0: off (default) */
   double cfl;               /* CFL number [-]; default 0.2 */
   enum wl_sph_integrator integrator; /* default WL_SPH_SYMPLECTIC */
   enum wl_sph_boundary boundary;     /* wall condition; default WL_SPH_BOUND_ADAMI */
@@ -198,6 +199,7 @@ struct wl_sph_const {
                          viscosity wall_alpha c0 h */
   wl_real lam_ff;     /* 4 nu (Lo & Shao), fluid-fluid [m^2/s] */
   wl_real lam_fb;     /* 4 nu visc_bound_factor, fluid-boundary [m^2/s] */
+  wl_real rav;        /* residual_alpha c0 h (sph/vgrad.h), fluid-fluid [m^2/s]; 0: off */
   wl_real ddt_k;      /* delta * 2h * c0 (DualSPHysics DDTkh * Cs0) [m^2/s] */
   wl_real ddt_fb;     /* the same for a fluid particle's wall neighbours: ddt_k under the
                          full diffusion with the wall condition, else 0 (sph/interact.h) */
