@@ -21,7 +21,8 @@
 
 #define VALIDATE_USAGE                                                                            \
   "usage: wallload validate [CASE...] [--ladder N] [--quick] [-o DIR] [--threads N] "            \
-  "[--integrator symplectic|verlet] [--backend cpu|cuda|auto] [--reference DIR]"
+  "[--integrator symplectic|verlet] [--residual-viscosity A] [--backend cpu|cuda|auto] "      \
+  "[--reference DIR]"
 
 static void help(void) {
   printf("%s\n\n"
@@ -34,6 +35,8 @@ static void help(void) {
          "  -o DIR           output directory (default validation-results; created)\n"
          "  --threads N      OpenMP threads per run (default: OpenMP's)\n"
          "  --integrator NAME  symplectic (default) or verlet: the time integrator of every run\n"
+         "  --residual-viscosity A  every run with the residual viscosity alpha_r = A (0 to 1;\n"
+         "                   default 0, off; docs/numerics.md)\n"
          "  --backend NAME   cpu (default), cuda, or auto (the GPU when there is one), as assess;\n"
          "                   spheric2's full ladder (0.2 to 1.1 M particles) is a GPU run: on\n"
          "                   2 CPU cores its finest level alone would take more than a day\n"
@@ -132,7 +135,7 @@ enum wl_status wl_cli_validate(int argc, char **argv, struct wl_error *err) {
       opts.quick = 1;
     } else if (!strcmp(a, "-o") || !strcmp(a, "--ladder") || !strcmp(a, "--threads") ||
                !strcmp(a, "--reference") || !strcmp(a, "--integrator") ||
-               !strcmp(a, "--backend")) {
+               !strcmp(a, "--residual-viscosity") || !strcmp(a, "--backend")) {
       if (i + 1 >= argc) {
         st = wl_error_set(err, WL_EUSAGE, "validate: %s needs a value\n%s", a, VALIDATE_USAGE);
         break;
@@ -149,6 +152,13 @@ enum wl_status wl_cli_validate(int argc, char **argv, struct wl_error *err) {
         else
           st = wl_error_set(err, WL_EUSAGE,
                             "validate: --backend: found '%s'; valid: cpu, cuda, auto", v);
+      } else if (!strcmp(a, "--residual-viscosity")) {
+        const double r = strtod(v, &end);
+        if (*end || !(r >= 0 && r <= WL_SPH_ALPHA_MAX))
+          st = wl_error_set(err, WL_EUSAGE,
+                            "validate: --residual-viscosity: found '%s'; expected 0 to %g", v,
+                            WL_SPH_ALPHA_MAX);
+        opts.residual = r;
       } else if (!strcmp(a, "--integrator")) {
         if (!strcmp(v, "verlet") || !strcmp(v, "symplectic"))
           opts.verlet = !strcmp(v, "verlet");
@@ -170,7 +180,8 @@ enum wl_status wl_cli_validate(int argc, char **argv, struct wl_error *err) {
     } else if (a[0] == '-') {
       st = wl_error_set(err, WL_EUSAGE,
                         "validate: unknown option '%s'; valid: --ladder N, --quick, -o DIR, "
-                        "--threads N, --integrator NAME, --backend NAME, --reference DIR, "
+                        "--threads N, --integrator NAME, --residual-viscosity A, --backend NAME, "
+                        "--reference DIR, "
                         "--list\n%s",
                         a, VALIDATE_USAGE);
     } else {

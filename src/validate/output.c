@@ -106,6 +106,7 @@ static enum wl_status write_json(const char *path, const struct wl_validate_resu
     jstr(&b, c->verdict);
     bprintf(&b, ",\n     \"integrator\": ");
     jstr(&b, c->integrator);
+    bprintf(&b, ",\n     \"residual_viscosity\": %g", c->residual);
     bprintf(&b, ", \"backend\": ");
     jstr(&b, c->backend[0] ? c->backend : "cpu");
     bprintf(&b, ", \"ratio\": ");

@@ -47,6 +47,10 @@ static enum wl_status load_scenario(const char *path, double dp, const struct wl
   s->resolution.dp.is_auto = 0;
   s->resolution.dp.given = 1;
   s->resolution.dp.q.si = lv->dp = wl_plan_whole_rows_dp(s, dp, NULL);
+  if (ctx->residual > 0) { /* validate --residual-viscosity */
+    s->numerics.residual_viscosity.q.si = ctx->residual;
+    s->numerics.residual_viscosity.given = 1;
+  }
   if (ctx->verlet) { /* validate --integrator verlet */
     s->numerics.integrator.choice = WL_INTEGRATOR_VERLET;
     s->numerics.integrator.given = 1;
