@@ -8,7 +8,7 @@
  *
  *   u_ij = v_ij - G_ij r_ij,   G_ij = (G_i + G_j) / 2,
  *   mu_ij = h u_ij.r_ij / (r_ij^2 + eta^2),
- *   Pi_ij = -alpha_r c0 mu_ij / rho_ij-bar  for u_ij.r_ij < 0, else 0,
+ *   Pi_ij = -alpha_r c0 mu_ij / rho_ij-bar,
  *   dv_i/dt += -sum_j m_j Pi_ij grad_i W_ij        (fluid pairs only),
  *
  * with G_i particle i's velocity gradient, first-order corrected (Bonet &
@@ -21,7 +21,10 @@
  * by the free surface or a wall. So a smooth flow (a travelling wave, whose
  * velocity is nearly linear over 2h) feels almost nothing, while the
  * particle arrangement's own motion, which no linear field describes, is
- * damped as by Monaghan's term. The pair force stays antisymmetric
+ * damped as by Monaghan's term. Unlike Monaghan's it acts on receding
+ * residuals too (a viscosity of the residual, not a compression-only bulk
+ * viscosity): measured, the wave's celerity then moves less (docs/history/
+ * 2026-11-26-still-tank-drift.md). The pair force stays antisymmetric
  * (momentum is kept). It is the idea of the reconstructed velocity jumps of
  * Riemann-solver SPH (Zhang, Hu & Adams 2017, J. Comput. Phys. 340:439,
  * where a limiter plays this role) in artificial-viscosity form.
@@ -101,8 +104,8 @@ WL_HD static WL_INLINE void wl_sph_vgrad(const int dim, const struct wl_sph_cons
 /* The residual viscosity's acceleration coefficient of a fluid pair: the
  * pair adds c r_ij to particle i's acceleration. r_ij = (dx, dy, dz),
  * v_ij = (ux, uy, uz) (dy, uy 0 in 2D), gi / gj the two gradients (dim x
- * dim, row-major), rho_sum = rho_i + rho_j. 0 for receding residuals and
- * beyond the support. dim: compile-time constant. */
+ * dim, row-major), rho_sum = rho_i + rho_j. 0 beyond the support. dim:
+ * compile-time constant. */
 WL_HD static WL_INLINE wl_real wl_sph_pair_residual(const int dim, const struct wl_sph_const *k,
                                                     wl_real dx, wl_real dy, wl_real dz,
                                                     wl_real ux, wl_real uy, wl_real uz,
@@ -117,8 +120,8 @@ WL_HD static WL_INLINE wl_real wl_sph_pair_residual(const int dim, const struct 
     rv += d[a] * (u[a] - lin);
     r2 += d[a] * d[a];
   }
-  if (!(rv < 0) || !(r2 < k->support2)) return WL_R(0.0);
-  /* -m Pi F with Pi = -2 rav rv / ((r^2 + eta^2) rho_sum), rav = alpha_r c0 h */
+  /* -m Pi F with Pi = -2 rav rv / ((r^2 + eta^2) rho_sum), rav = alpha_r c0 h; F is 0
+   * beyond the support. No branch: the CPU's lanes stay one vector loop */
   return WL_R(2.0) * k->mass * k->rav * rv * wl_sph_kernel_f(k, r2) *
          wl_sph_rcp((r2 + k->eta2) * rho_sum);
 }
