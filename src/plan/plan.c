@@ -618,7 +618,8 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
   if (s->numerics.residual_viscosity.q.si > 0)
     note(p, "numerics.residual_viscosity = %g is experimental (docs/numerics.md): it keeps still "
             "water still, but makes solitary waves about 2.5 %% fast, and scenarios/seawall.yaml's "
-            "explosion load did not converge with it; do not quote its loads in a design",
+            "explosion load did not converge with it under Verlet; do not quote its loads in a "
+            "design",
          s->numerics.residual_viscosity.q.si);
   enum wl_status st = plan_sides(s, p, err);
   if (st) return st;
