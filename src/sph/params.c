@@ -81,6 +81,10 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
     snprintf(range, sizeof range, "must be in [0, %g]", WL_SPH_ALPHA_MAX);
     return bad(err, "residual_alpha", prm->residual_alpha, range);
   }
+  if (prm->residual_alpha > 0 && prm->integrator == WL_SPH_VERLET)
+    return bad(err, "residual_alpha", prm->residual_alpha,
+               "needs the symplectic integrator (the Verlet leapfrog amplifies a velocity-"
+               "dependent damping)");
   if (!(prm->cfl > WL_SPH_CFL_MIN_OPEN && prm->cfl <= WL_SPH_CFL_MAX)) {
     snprintf(range, sizeof range, "must be in (%g, %g]", WL_SPH_CFL_MIN_OPEN, WL_SPH_CFL_MAX);
     return bad(err, "cfl", prm->cfl, range);
