@@ -147,8 +147,11 @@ WL_HD static WL_INLINE void wl_sph_pair_j_of(const int want_ace, const int with_
  * gets the same terms in the same order: the same bits as without cut. The
  * GPU's one-thread-per-particle loop uses it; the CPU's lanes evaluate
  * every candidate (branch-free, vectorised).
- * dim, laminar, want_ace, with_ddt, lanes, cut: compile-time constants.
- * av, lam: see wl_sph_pair_eval. */
+ * residual: add the residual viscosity's term (sph/vgrad.h) to each fluid
+ * pair (want_ace and with_ddt, not a mirror image); e->gv and in->g must
+ * then hold the gradients.
+ * dim, laminar, want_ace, with_ddt, lanes, cut, residual: compile-time
+ * constants. av, lam: see wl_sph_pair_eval. */
 WL_HD static WL_INLINE void wl_sph_gather_range(const int dim, const int laminar,
                                                 const int want_ace, const int with_ddt,
                                                 const int lanes, const int cut,
