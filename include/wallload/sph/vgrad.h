@@ -23,9 +23,10 @@
  * particle arrangement's own motion, which no linear field describes, is
  * damped as by Monaghan's term. Unlike Monaghan's it acts on receding
  * residuals too (a viscosity of the residual, not a compression-only bulk
- * viscosity): measured, the wave's celerity then moves less (docs/history/
- * 2026-11-26-still-tank-drift.md). The pair force stays antisymmetric
- * (momentum is kept). It is the idea of the reconstructed velocity jumps of
+ * viscosity): the pair term then has no branch, so the CPU's lanes stay
+ * one vector loop; on the reference suite the two forms measured alike
+ * (docs/history/2026-11-26-still-tank-drift.md). The pair force stays
+ * antisymmetric (momentum is kept). It is the idea of the reconstructed velocity jumps of
  * Riemann-solver SPH (Zhang, Hu & Adams 2017, J. Comput. Phys. 340:439,
  * where a limiter plays this role) in artificial-viscosity form.
  * Mirror-image pairs (3D symmetry planes) do not take it. */
