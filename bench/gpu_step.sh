@@ -18,7 +18,10 @@
 #       compared bit for bit with the new build's. GPU_STEP_NCU=1: each
 #       kernel's duration over a few steps of both builds (Nsight Compute).
 #       GPU_STEP_PLAN=1: seawall.yaml at dp = 0.0125 m, one level, Verlet
-#       and symplectic (plan.h's step costs), both builds.
+#       and symplectic (plan.h's step costs), both builds. GPU_STEP_SEA=0:
+#       without the whole assess (about a minute a build and round).
+#       A build's wallload may be a script (e.g. one that sets WL_CUDA_PDL=0
+#       and runs the other build's), to compare settings of one build.
 set -u
 here=$(cd "$(dirname "$0")/.." && pwd)
 case ${1:-} in
@@ -73,7 +76,7 @@ PY
       for b in base new; do
         one $b sol$r $R/sol.yaml
         one $b few$r $R/sol_few.yaml
-        one $b sea$r "$here/scenarios/seawall.yaml"
+        [ "${GPU_STEP_SEA:-1}" = 0 ] || one $b sea$r "$here/scenarios/seawall.yaml"
       done
     done
     if [ -n "${GPU_STEP_ALSO:-}" ]; then
@@ -89,8 +92,9 @@ PY
         "$D/new/h5_series_equal" $R/base_$n/results.h5 $R/new_$n/results.h5 \
           /cases/$load/time /cases/$load/wall/force /cases/$load/wall/force_boundary \
           /cases/$load/wall/pressure /cases/$load/wall/moment /cases/$load/gauges/G1/eta \
-          2>&1 | sed "s/^/$n $load: /" | grep -v 'cannot be read' | head -8
+          2>&1 | sed "s/^/$n $load: /" | grep -v 'cannot read it' | head -8
       done
+      [ -f $R/base_$n/summary.json ] || continue
       python3 - $R/base_$n/summary.json $R/new_$n/summary.json "$n" <<'PY'
 import json, sys
 def leaves(x, p=""):

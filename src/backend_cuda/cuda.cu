@@ -70,6 +70,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <utility>
 
 
 extern "C" {
@@ -282,11 +283,61 @@ struct gpu {
   size_t bytes;           /* device bytes allocated */
   cudaStream_t stream;
   struct wl_cuda_device dev;
+  /* programmatic dependent launch (compute capability 9.0 and later, CUDA
+   * 12.3 and later; off with WL_CUDA_PDL=0): each kernel of a step may be
+   * launched while the one before it finishes, and waits for it in
+   * pdl_begin */
+  int pdl;
 };
+
+/* Launch kernel kern (one whose first statement is pdl_begin) in stream s:
+ * under c->pdl with programmatic stream serialisation, so that it may
+ * start while the kernel before it in the stream finishes (pdl_begin waits
+ * for that one); else as <<<grid, block, 0, s>>>. Errors as a launch's:
+ * the caller's CKL reads them. Captured into a step's graph, the attribute
+ * becomes a programmatic edge. */
+template <typename... P, typename... A>
+static void launch(const struct gpu *c, void (*kern)(P...), unsigned grid, unsigned block,
+                   cudaStream_t s, A &&...args) {
+#if CUDART_VERSION >= 12030 /* programmatic edges in captured graphs */
+  if (!c->pdl) {
+    kern<<<grid, block, 0, s>>>(std::forward<A>(args)...);
+    return;
+  }
+  cudaLaunchAttribute attr[1];
+  attr[0].id = cudaLaunchAttributeProgrammaticStreamSerialization;
+  attr[0].val.programmaticStreamSerializationAllowed = 1;
+  cudaLaunchConfig_t cfg;
+  memset(&cfg, 0, sizeof cfg);
+  cfg.gridDim = dim3(grid);
+  cfg.blockDim = dim3(block);
+  cfg.stream = s;
+  cfg.attrs = attr;
+  cfg.numAttrs = 1;
+  (void)cudaLaunchKernelEx(&cfg, kern, std::forward<A>(args)...);
+#else
+  kern<<<grid, block, 0, s>>>(std::forward<A>(args)...);
+#endif
+}
 
 /* ---- kernels ------------------------------------------------------------ */
 
 static __device__ __forceinline__ int tid(void) { return blockIdx.x * blockDim.x + threadIdx.x; }
+
+/* The first statement of every kernel of a step. Under programmatic
+ * dependent launch (launch) a kernel's blocks may start before the kernel
+ * before it in the stream has finished: griddepcontrol.wait holds them
+ * until it has, its writes visible, so nothing of the kernel, not even the
+ * stop flag, is read before. launch_dependents then lets the next kernel's
+ * launch begin, so its launch latency overlaps this kernel's work instead
+ * of following it. Without the launch attribute, or before sm_90, both are
+ * no-ops and the stream orders the kernels as usual. */
+static __device__ __forceinline__ void pdl_begin(void) {
+#if defined(__CUDA_ARCH__) && __CUDA_ARCH__ >= 900
+  asm volatile("griddepcontrol.wait;" ::: "memory");
+  asm volatile("griddepcontrol.launch_dependents;" ::: "memory");
+#endif
+}
 
 /* The sort (rebuild): a counting sort by key whose order inside a key is
  * the previous order, the order a stable sort gives. Each particle's key
@@ -327,6 +378,7 @@ static __device__ __forceinline__ void count_key(unsigned k, int *count, int *bs
 __global__ void __launch_bounds__(SCAN_THREADS)
     k_scan(const int *__restrict__ count, const int *__restrict__ bsum, int *begin, int m,
            const struct dstats *st) {
+  pdl_begin();
   if (st->plan.stop) return;
   __shared__ int wsum[SCAN_THREADS / 32];
   __shared__ int base;
@@ -364,6 +416,7 @@ __global__ void k_keys(struct wl_sph_grid g, const double *__restrict__ x,
                        const double *__restrict__ y, const double *__restrict__ z,
                        const unsigned char *__restrict__ kind, unsigned int *key, int *count,
                        int *bsum, int n, struct dstats *st) {
+  pdl_begin();
   if (st->plan.stop) return;
   const int i = tid();
   if (i >= n) return;
@@ -380,6 +433,7 @@ __global__ void k_keys(struct wl_sph_grid g, const double *__restrict__ x,
  * record. */
 __global__ void k_scatter(const unsigned int *__restrict__ key, const int *__restrict__ begin,
                           int *count, unsigned int *perm, int n, struct dstats *st) {
+  pdl_begin();
   const int i = tid();
   if (i >= n || st->plan.stop) return;
   if (i == 0) {
@@ -407,6 +461,7 @@ enum { CELLSORT_REG = 16, CELLSORT_LOCAL = 48, CELLSORT_WARP = 64 };
 __global__ void k_cellsort(const int *__restrict__ begin, unsigned int *perm, int n_keys,
                            int *count, int *bsum, int step, int by_warp,
                            const struct dstats *st) {
+  pdl_begin();
   const int k = tid();
   if (k >= n_keys || st->plan.stop) return;
   const int b = begin[k], m = begin[k + 1] - b;
@@ -457,6 +512,7 @@ __global__ void k_cellsort(const int *__restrict__ begin, unsigned int *perm, in
  * its insertion through local memory, was a tenth of the 3D step). */
 __global__ void k_cellsort_warp(const int *__restrict__ begin, unsigned int *perm, int n_keys,
                                 const struct dstats *st) {
+  pdl_begin();
   const int k = (int)((blockIdx.x * blockDim.x + threadIdx.x) >> 5), lane = threadIdx.x & 31;
   if (k >= n_keys || st->plan.stop) return; /* the whole warp */
   const int b = begin[k], m = begin[k + 1] - b;
@@ -508,6 +564,7 @@ struct permute_args {
 template <int DIM>
 __global__ void k_permute(struct permute_args a, struct wl_sph_const k, int n,
                           const struct dstats *st) {
+  pdl_begin();
   const int s = tid();
   if (s >= n || st->plan.stop) return;
   const int j = (int)a.perm[s];
@@ -591,6 +648,7 @@ template <int DIM, int LAM, int CUT>
 __global__ void __launch_bounds__(THREADS, DIM == 2 && CUT ? WL_GATHER_MIN_BLOCKS : 1)
     k_gather(const struct wl_sph_const kp, const struct wl_sph_grid gp,
              const struct wl_sph_eval ep, int i0, int n, int nb, struct dstats *st) {
+  pdl_begin();
   if (st->plan.stop) return;
   const struct wl_sph_const k = kp;
   const struct wl_sph_grid g = gp;
@@ -642,6 +700,7 @@ template <int DIM, int LAM, int R>
 __global__ void __launch_bounds__(THREADS)
     k_gather_lanes(const struct wl_sph_const kp, const struct wl_sph_grid gp,
                    const struct wl_sph_eval ep, int i0, int n, int nb, struct dstats *st) {
+  pdl_begin();
   if (st->plan.stop) return;
   const struct wl_sph_const k = kp;
   const struct wl_sph_grid g = gp;
@@ -991,6 +1050,7 @@ __global__ void __launch_bounds__(WL_SPLIT_THREADS, WL_SPLIT_MIN_BLOCKS)
     k_gather_split(const struct wl_sph_const kp, const struct wl_sph_grid gp,
                    const struct wl_sph_eval ep, int i0, int n, int nb, float skip2,
                    struct dstats *st) {
+  pdl_begin();
   __shared__ struct split_warp warps[WL_SPLIT_THREADS / 32];
   if (st->plan.stop) return;
   const struct wl_sph_const k = kp;
@@ -1144,6 +1204,7 @@ template <int DIM>
 __global__ void __launch_bounds__(THREADS)
     k_wall(const struct wl_sph_const kp, const struct wl_sph_grid gp, const struct wl_sph_eval ep,
            int nb, const struct wallin w, const struct dstats *st) {
+  pdl_begin();
   const struct wl_sph_const k = kp;
   const struct wl_sph_grid g = gp;
   const struct wl_sph_eval e = ep;
@@ -1164,6 +1225,7 @@ __global__ void __launch_bounds__(THREADS)
     k_wall_lanes(const struct wl_sph_const kp, const struct wl_sph_grid gp,
                  const struct wl_sph_eval ep, int nb, const struct wallin w,
                  const struct dstats *st) {
+  pdl_begin();
   if (st->plan.stop) return;
   const struct wl_sph_const k = kp;
   const struct wl_sph_grid g = gp;
@@ -1199,6 +1261,7 @@ template <int DIM>
 __global__ void __launch_bounds__(THREADS)
     k_shift(const struct wl_sph_const kp, const struct wl_sph_grid gp, const struct wl_sph_eval ep,
             int n, int nb, struct shiftptr sp, const struct dstats *st) {
+  pdl_begin();
   const struct wl_sph_const k = kp;
   const struct wl_sph_grid g = gp;
   const struct wl_sph_eval e = ep;
@@ -1209,6 +1272,7 @@ __global__ void __launch_bounds__(THREADS)
 template <int DIM>
 __global__ void k_predict(struct wl_sph_const kp, struct wl_particles p, int n,
                           const struct dstats *st) {
+  pdl_begin();
   const int i = tid();
   if (i >= n || st->plan.stop) return;
   const struct wl_sph_const k = kp;
@@ -1292,6 +1356,7 @@ static __device__ void store_next(struct dplan *p, const struct dnext *pl) {
 
 /* A block's first plan (one thread). */
 __global__ void k_plan(struct wl_sph_const kp, struct dstats *st) {
+  pdl_begin();
   const struct wl_sph_const k = kp;
   struct dblock b = st->blk;
   struct dnext pl = {st->plan.dt, st->plan.dt_prev, st->plan.euler, st->plan.stop};
@@ -1365,6 +1430,7 @@ template <int DIM>
 __global__ void __launch_bounds__(THREADS)
     k_update(struct wl_sph_const kp, struct wl_sph_grid gp, struct wl_particles p, int n,
              int update, const struct dmeta *m, int *count, int *bsum, struct dstats *st) {
+  pdl_begin();
   if (st->plan.stop) return; /* the same for every block: only the last one sets it */
   __shared__ struct wl_sph_walls_sh ws;
   __shared__ bool last;
@@ -1509,28 +1575,26 @@ static enum wl_status rebuild(struct gpu *c, int how, struct wl_error *err) {
     CK(cudaMemsetAsync(c->count, 0, count_bytes, c->stream));
     CK(cudaMemsetAsync(c->bsum, 0, c->bsum_bytes, c->stream));
     if (dim == 3)
-      k_keys<3><<<blocks(n), THREADS, 0, c->stream>>>(c->grid, c->pos[0], c->pos[1], c->pos[2],
-                                                       c->kind, c->key, c->count, c->bsum, n,
-                                                       c->stats);
+      launch(c, k_keys<3>, blocks(n), THREADS, c->stream, c->grid, c->pos[0], c->pos[1], c->pos[2],
+             c->kind, c->key, c->count, c->bsum, n, c->stats);
     else
-      k_keys<2><<<blocks(n), THREADS, 0, c->stream>>>(c->grid, c->pos[0], c->pos[1], c->pos[1],
-                                                       c->kind, c->key, c->count, c->bsum, n,
-                                                       c->stats);
+      launch(c, k_keys<2>, blocks(n), THREADS, c->stream, c->grid, c->pos[0], c->pos[1], c->pos[1],
+             c->kind, c->key, c->count, c->bsum, n, c->stats);
     CKL("keys");
   }
-  k_scan<<<scan_blocks(n_keys + 1), SCAN_THREADS, 0, c->stream>>>(c->count, c->bsum, c->begin,
-                                                                  n_keys + 1, c->stats);
+  launch(c, k_scan, scan_blocks(n_keys + 1), SCAN_THREADS, c->stream, c->count, c->bsum, c->begin,
+         n_keys + 1, c->stats);
   CKL("scan");
-  k_scatter<<<blocks(n), THREADS, 0, c->stream>>>(c->key, c->begin, c->count, perm, n, c->stats);
+  launch(c, k_scatter, blocks(n), THREADS, c->stream, c->key, c->begin, c->count, perm, n,
+         c->stats);
   CKL("scatter");
   /* 3D cells are long: their ranges go one warp each */
-  k_cellsort<<<blocks(n_keys), THREADS, 0, c->stream>>>(c->begin, perm, n_keys, c->count, c->bsum,
-                                                        (how & REBUILD_STEP) != 0, dim == 3,
-                                                        c->stats);
+  launch(c, k_cellsort, blocks(n_keys), THREADS, c->stream, c->begin, perm, n_keys, c->count,
+         c->bsum, (how & REBUILD_STEP) != 0, dim == 3, c->stats);
   CKL("cell sort");
   if (dim == 3) {
-    k_cellsort_warp<<<(int)(((long)n_keys * 32 + THREADS - 1) / THREADS), THREADS, 0,
-                      c->stream>>>(c->begin, perm, n_keys, c->stats);
+    launch(c, k_cellsort_warp, (int)(((long)n_keys * 32 + THREADS - 1) / THREADS), THREADS,
+           c->stream, c->begin, perm, n_keys, c->stats);
     CKL("cell sort, long ranges");
   }
   struct permute_args a;
@@ -1561,8 +1625,10 @@ static enum wl_status rebuild(struct gpu *c, int how, struct wl_error *err) {
     a.rho_m1 = c->rho_m1;
     a.rho_m1_d = c->rho_m1_alt;
   }
-  if (dim == 3) k_permute<3><<<blocks(n), THREADS, 0, c->stream>>>(a, c->k, n, c->stats);
-  else k_permute<2><<<blocks(n), THREADS, 0, c->stream>>>(a, c->k, n, c->stats);
+  if (dim == 3)
+    launch(c, k_permute<3>, blocks(n), THREADS, c->stream, a, c->k, n, c->stats);
+  else
+    launch(c, k_permute<2>, blocks(n), THREADS, c->stream, a, c->k, n, c->stats);
   CKL("permute");
   {
     wl_real *t = (wl_real *)c->key;
@@ -1594,6 +1660,7 @@ template <int DIM>
 __global__ void __launch_bounds__(THREADS)
     k_vgrad(const struct wl_sph_const kp, const struct wl_sph_grid gp, const struct wl_sph_eval ep,
             int nb, int n, struct gvptr gv, struct dstats *st) {
+  pdl_begin();
   if (st->plan.stop) return;
   const int i = nb + tid();
   if (i >= n) return;
@@ -1612,30 +1679,30 @@ static void launch_gather(const struct gpu *c, const struct wl_sph_eval &e, int 
        * relative margin far above float rounding */
       const float skip2 = (float)(4.0 * c->k.h_d * c->k.h_d * 1.0001);
       const int nbs = (n - i0 + WL_SPLIT_THREADS - 1) / WL_SPLIT_THREADS;
-      k_gather_split<DIM, LAM><<<nbs, WL_SPLIT_THREADS, 0, s>>>(c->k, c->grid, e, i0, n, nb,
-                                                                skip2, c->stats);
+      launch(c, k_gather_split<DIM, LAM>, nbs, WL_SPLIT_THREADS, s, c->k, c->grid, e, i0, n, nb,
+             skip2, c->stats);
       return;
     }
   }
   if constexpr (loop_built(MODE_LANES, DIM)) {
     if (c->mode == MODE_LANES) {
       const int R = WL_GATHER_LANES;
-      k_gather_lanes<DIM, LAM, R><<<blocks((n - i0) * R), THREADS, 0, s>>>(c->k, c->grid, e, i0,
-                                                                           n, nb, c->stats);
+      launch(c, k_gather_lanes<DIM, LAM, R>, blocks((n - i0) * R), THREADS, s, c->k, c->grid, e, i0,
+             n, nb, c->stats);
       return;
     }
   }
   if constexpr (loop_built(MODE_FAST, DIM)) {
     if (c->mode == MODE_FAST) {
-      k_gather<DIM, LAM, 1><<<blocks(n - i0), THREADS, 0, s>>>(c->k, c->grid, e, i0, n, nb,
-                                                               c->stats);
+      launch(c, k_gather<DIM, LAM, 1>, blocks(n - i0), THREADS, s, c->k, c->grid, e, i0, n, nb,
+             c->stats);
       return;
     }
   }
   if constexpr (loop_built(MODE_REF, DIM)) {
     if (c->mode == MODE_REF)
-      k_gather<DIM, LAM, 0><<<blocks(n - i0), THREADS, 0, s>>>(c->k, c->grid, e, i0, n, nb,
-                                                               c->stats);
+      launch(c, k_gather<DIM, LAM, 0>, blocks(n - i0), THREADS, s, c->k, c->grid, e, i0, n, nb,
+             c->stats);
   }
 }
 
@@ -1665,8 +1732,10 @@ static enum wl_status evaluate(struct gpu *c, double *const *pos, wl_real *const
     struct gvptr gv;
     memset(&gv, 0, sizeof gv);
     for (int q = 0; q < c->dim * c->dim; q++) e.gv[q] = gv.g[q] = c->gv[q];
-    if (c->dim == 3) k_vgrad<3><<<blocks(n - nb), THREADS, 0, s>>>(c->k, c->grid, e, nb, n, gv, c->stats);
-    else k_vgrad<2><<<blocks(n - nb), THREADS, 0, s>>>(c->k, c->grid, e, nb, n, gv, c->stats);
+    if (c->dim == 3)
+      launch(c, k_vgrad<3>, blocks(n - nb), THREADS, s, c->k, c->grid, e, nb, n, gv, c->stats);
+    else
+      launch(c, k_vgrad<2>, blocks(n - nb), THREADS, s, c->k, c->grid, e, nb, n, gv, c->stats);
     CKL("velocity gradient");
   }
   if (wall_bc && nb > 0) {
@@ -1676,10 +1745,11 @@ static enum wl_status evaluate(struct gpu *c, double *const *pos, wl_real *const
     w.body = c->body;
     w.rho = rho;
     w.press = c->press;
-    if (c->dim == 3) k_wall<3><<<blocks(nb), THREADS, 0, s>>>(c->k, c->grid, e, nb, w, c->stats);
+    if (c->dim == 3)
+      launch(c, k_wall<3>, blocks(nb), THREADS, s, c->k, c->grid, e, nb, w, c->stats);
     else
-      k_wall_lanes<WL_GATHER_LANES><<<blocks(nb * WL_GATHER_LANES), THREADS, 0, s>>>(
-          c->k, c->grid, e, nb, w, c->stats);
+      launch(c, k_wall_lanes<WL_GATHER_LANES>, blocks(nb * WL_GATHER_LANES), THREADS, s, c->k,
+             c->grid, e, nb, w, c->stats);
     CKL("wall");
   }
   if (n == i0) return WL_OK;
@@ -1697,11 +1767,11 @@ static enum wl_status enqueue_update(struct gpu *c, int update, struct wl_error 
   const struct wl_particles p = view(c);
   const int n = c->n;
   if (c->dim == 3)
-    k_update<3><<<blocks(n), THREADS, 0, c->stream>>>(c->k, c->grid, p, n, update, c->meta,
-                                                      c->count, c->bsum, c->stats);
+    launch(c, k_update<3>, blocks(n), THREADS, c->stream, c->k, c->grid, p, n, update, c->meta,
+           c->count, c->bsum, c->stats);
   else
-    k_update<2><<<blocks(n), THREADS, 0, c->stream>>>(c->k, c->grid, p, n, update, c->meta,
-                                                      c->count, c->bsum, c->stats);
+    launch(c, k_update<2>, blocks(n), THREADS, c->stream, c->k, c->grid, p, n, update, c->meta,
+           c->count, c->bsum, c->stats);
   CKL("update");
   return WL_OK;
 }
@@ -1772,15 +1842,21 @@ static enum wl_status enqueue_step(struct gpu *c, struct wl_error *err) {
     memset(&sp, 0, sizeof sp);
     for (int a = 0; a < c->dim; a++) sp.s[a] = c->shift[a];
     const int nf = c->n - c->nb;
-    if (c->dim == 3) k_shift<3><<<blocks(nf), THREADS, 0, c->stream>>>(c->k, c->grid, e, c->n, c->nb, sp, c->stats);
-    else k_shift<2><<<blocks(nf), THREADS, 0, c->stream>>>(c->k, c->grid, e, c->n, c->nb, sp, c->stats);
+    if (c->dim == 3)
+      launch(c, k_shift<3>, blocks(nf), THREADS, c->stream, c->k, c->grid, e, c->n, c->nb, sp,
+             c->stats);
+    else
+      launch(c, k_shift<2>, blocks(nf), THREADS, c->stream, c->k, c->grid, e, c->n, c->nb, sp,
+             c->stats);
     CKL("shift");
   }
   if ((st = evaluate(c, c->pos, c->vel, c->rho, err))) return st;
   if (c->k.integrator != WL_SPH_VERLET) {
     struct wl_particles p = view(c);
-    if (c->dim == 3) k_predict<3><<<blocks(c->n), THREADS, 0, c->stream>>>(c->k, p, c->n, c->stats);
-    else k_predict<2><<<blocks(c->n), THREADS, 0, c->stream>>>(c->k, p, c->n, c->stats);
+    if (c->dim == 3)
+      launch(c, k_predict<3>, blocks(c->n), THREADS, c->stream, c->k, p, c->n, c->stats);
+    else
+      launch(c, k_predict<2>, blocks(c->n), THREADS, c->stream, c->k, p, c->n, c->stats);
     CKL("predict");
     if ((st = evaluate(c, c->pos_h, c->vel_h, c->rho_h, err))) return st;
   }
@@ -1943,7 +2019,7 @@ static enum wl_status cuda_run_start(void *ctx, const struct wl_sph_block_in *in
   const size_t len = offsetof(struct dstats, blk) + sizeof up->blk - off;
   CK(cudaMemcpyAsync((char *)c->stats + off, (const char *)up + off, len, cudaMemcpyHostToDevice,
                      c->stream));
-  k_plan<<<1, 1, 0, c->stream>>>(c->k, c->stats);
+  launch(c, k_plan, 1, 1, c->stream, c->k, c->stats);
   CKL("plan");
   const int q0 = role_set(c);
   if (!c->graphs || q0 < 0)
@@ -2217,6 +2293,10 @@ static enum wl_status init_mode(void **ctx, const struct wl_sph_config *cfg,
   c->dim = dim;
   c->n = host->n;
   c->nb = host->n_bound;
+  {
+    const char *pdl = getenv("WL_CUDA_PDL"); /* 0: off, to measure what it gains */
+    c->pdl = dev.sm_major >= 9 && !(pdl && !strcmp(pdl, "0"));
+  }
   const int residual = k->rav > 0;
   c->mode = mode >= 0 ? mode : residual ? MODE_FAST : default_mode(dim, host->n);
   if (!(dim == 3 ? loop_built(c->mode, 3) : loop_built(c->mode, 2))) {
