@@ -337,11 +337,13 @@ static void guard(struct cpu *c, const struct wl_sph_step_in *in, struct wl_sph_
                     (const double(*)[WL_SPH_DIM_MAX])in->body_vel, euler, i);
     else if (in)
       wl_sph_correct(dim, &c->k, p, in->dt, (const double(*)[WL_SPH_DIM_MAX])in->body_vel, i);
-    if (limiter) limited += wl_sph_wall_limit(dim, p, c->cfg.walls, c->cfg.n_walls,
-                                                   c->k.penetration, i);
+    const int moved =
+        limiter && wl_sph_wall_limit(dim, p, c->cfg.walls, c->cfg.n_walls, c->k.penetration, i);
+    limited += moved;
     if (in) excluded += wl_sph_exclude(dim, p, c->cfg.lo, c->cfg.hi, i);
     int w = -1;
-    if (wl_sph_guard(dim, &c->k, p, c->cfg.lo, c->cfg.hi, c->cfg.walls, c->cfg.n_walls, i, &w) &&
+    if (wl_sph_guard(dim, &c->k, p, c->cfg.lo, c->cfg.hi, c->cfg.walls,
+                     wl_sph_guard_faces(limiter, moved, c->cfg.n_walls), i, &w) &&
         i < first)
       first = i;
   }

@@ -252,11 +252,13 @@ static void guard(struct isph *c, int moved, struct wl_sph_step_out *out) {
 #pragma omp parallel for schedule(static) num_threads(threads(c)) reduction(min : first) \
     reduction(+ : limited, excluded)
   for (int i = 0; i < n; i++) {
-    if (limiter) limited += wl_sph_wall_limit(dim, p, c->cfg.walls, c->cfg.n_walls,
-                                              c->k.penetration, i);
+    const int limited_i =
+        limiter && wl_sph_wall_limit(dim, p, c->cfg.walls, c->cfg.n_walls, c->k.penetration, i);
+    limited += limited_i;
     if (moved) excluded += wl_sph_exclude(dim, p, c->cfg.lo, c->cfg.hi, i);
     int w = -1;
-    if (wl_sph_guard(dim, &c->k, p, c->cfg.lo, c->cfg.hi, c->cfg.walls, c->cfg.n_walls, i, &w) &&
+    if (wl_sph_guard(dim, &c->k, p, c->cfg.lo, c->cfg.hi, c->cfg.walls,
+                     wl_sph_guard_faces(limiter, limited_i, c->cfg.n_walls), i, &w) &&
         i < first)
       first = i;
   }

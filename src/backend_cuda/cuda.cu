@@ -1425,7 +1425,8 @@ static __device__ void end_step(const struct wl_sph_const *k, const struct wl_pa
  * (count, zeroed by the step's k_cellsort), for the next step's sort; and
  * the end of the step (end_step) by the block that finishes last, so that
  * a step needs no one-thread kernel of its own. The wall faces are read
- * from shared memory (each particle tests every face twice). */
+ * from shared memory (the limiter tests every face; the guard only where
+ * the limiter moved the particle, sph/guard.h wl_sph_guard_faces). */
 template <int DIM>
 __global__ void __launch_bounds__(THREADS)
     k_update(struct wl_sph_const kp, struct wl_sph_grid gp, struct wl_particles p, int n,
@@ -1445,11 +1446,14 @@ __global__ void __launch_bounds__(THREADS)
       wl_sph_verlet(DIM, &k, &p, pl->dt, pl->dt_prev, pl->body_vel, pl->euler, i);
     else if (update)
       wl_sph_correct(DIM, &k, &p, pl->dt, pl->body_vel, i);
-    if (update && k.wall_limiter && wl_sph_wall_limit(DIM, &p, ws.w, nw, k.penetration, i))
-      atomicAdd(&st->limited, 1ull);
+    const int limiter = update && k.wall_limiter;
+    const int moved = limiter && wl_sph_wall_limit(DIM, &p, ws.w, nw, k.penetration, i);
+    if (moved) atomicAdd(&st->limited, 1ull);
     if (update && wl_sph_exclude(DIM, &p, m->lo, m->hi, i)) atomicAdd(&st->excluded, 1ull);
     int w = -1;
-    if (wl_sph_guard(DIM, &k, &p, m->lo, m->hi, ws.w, nw, i, &w)) atomicMin(&st->first, i);
+    if (wl_sph_guard(DIM, &k, &p, m->lo, m->hi, ws.w, wl_sph_guard_faces(limiter, moved, nw), i,
+                     &w))
+      atomicMin(&st->first, i);
     const struct wl_sph_grid g = gp;
     const unsigned group = p.kind[i] == WL_KIND_FLUID ? 1u : 0u;
     const unsigned key = group * (unsigned)g.n_cells + (unsigned)wl_sph_cell_of(DIM, &g, p.pos, i);

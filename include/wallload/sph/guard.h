@@ -150,6 +150,18 @@ WL_HD static inline int wl_sph_wall_limit(const int dim, const struct wl_particl
   return 1;
 }
 
+/* How many of the wall faces the guard must test for a particle after the
+ * limiter: none when the limiter ran on it and left it where it was, all
+ * of them otherwise. A particle the limiter left lies behind no face
+ * (d < 0) within its layers and away from its ends, the same faces and
+ * margins as the guard's test below, which therefore cannot fire (d = 0
+ * is depth 0); one the limiter moved sits on a face and may be behind
+ * another at a corner. The guard's verdicts are unchanged, and a step
+ * loops over the faces once a particle instead of twice. */
+WL_HD static inline int wl_sph_guard_faces(int limiter_ran, int limiter_moved, int n_walls) {
+  return limiter_ran && !limiter_moved ? 0 : n_walls;
+}
+
 /* Fault of particle i (WL_SPH_FAULT_NONE if none); *wall gets the index of
  * the crossed wall for WL_SPH_FAULT_PENETRATION. lo, hi: domain box [m]. */
 WL_HD static inline int wl_sph_guard(const int dim, const struct wl_sph_const *k,
