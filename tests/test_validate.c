@@ -187,7 +187,10 @@ static void spheric2_short_run(void) {
   CHECK_TRUE(st == WL_OK && lv.status == WL_OK, "spheric2 runs 0.01 s at dp = 0.1 m");
   if (st) printf("%s\n", err.msg);
   CHECK_ABS(lv.t_reached, 0.01, 1e-9, "to its end time");
-  CHECK_TRUE(lv.n_metrics == 17, "17 metrics: P1 4, P2-P4 6, heights 7");
+  CHECK_TRUE(lv.n_metrics == 18, "18 metrics: P1 4 and its wall particles' plateau, P2-P4 6, heights 7");
+  CHECK_TRUE(lv.n_metrics > 4 && !strcmp(lv.m[4].name, "P1 plateau, wall particles' pressure") &&
+                 isnan(lv.m[4].tol),
+             "P1's plateau from the wall particles: reported, not judged");
   CHECK_TRUE(lv.n_metrics > 3 && !strcmp(lv.m[0].name, "P1 plateau (0.5-1 s after arrival)") &&
                  lv.m[0].tol == 0.15 && lv.m[1].tol == 0.05 && lv.m[2].tol == 0.30 &&
                  lv.m[3].tol == 1.0,

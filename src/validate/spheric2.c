@@ -34,7 +34,11 @@
  *    2.5 ms: five samples of either series), 30 % (REFERENCES 6);
  *  - tension: the most negative raw sample of P1-P4, in rho g H, judged
  *    >= -1 (issue 17);
- *  - P2-P4 plateau, H heights: reported, not judged. */
+ *  - P2-P4 plateau, H heights: reported, not judged;
+ *  - P1's plateau from the wall particles' own pressure (the box face's
+ *    first layer within a spacing of the sensor): reported, not judged;
+ *    it tells a probe artefact (the two parting) from the flow's pressure,
+ *    as zhou1999's P2 row does. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -43,6 +47,7 @@
 #include "internal.h"
 #include "wallload/plan.h"
 #include "wallload/scene.h"
+#include "wallload/sph/eos.h"
 
 #define G 9.81
 
@@ -298,6 +303,25 @@ enum wl_status wl_val_spheric2_near(double dp, const struct wl_particles *p, dou
   return st;
 }
 
+/* The pressure the box face's first layer of wall particles carries at P1:
+ * the mean over those within a spacing of the sensor in y and z (the
+ * pressure that pushes the fluid off the face, sph/wall.h; reported beside
+ * the probe's, as zhou1999 reports its P2's). */
+static double s2_wall_pressure_p1(const struct wl_particles *p, const struct wl_sph_const *k,
+                                  double dp) {
+  double s = 0;
+  int n = 0;
+  for (int i = 0; i < p->n_bound; i++) {
+    const double x = p->pos[0][i], y = p->pos[1][i], z = p->pos[2][i];
+    if (x < S2_BOX_X1 && x > S2_BOX_X1 - dp && fabs(y - S2_Y) < dp && fabs(z - s2_p_z[0]) < dp)
+      s += wl_sph_eos_p(k, p->rho[i]), n++;
+  }
+  return n ? s / n : 0;
+}
+
+/* Series columns: P1..P4, H1..H4, then P1's wall particles. */
+enum { S2_COLS = WL_VAL_S2_NP + WL_VAL_S2_NH + 1, S2_COL_P1_WALL = S2_COLS - 1 };
+
 static enum wl_status s2_out(void *user, struct wl_sph_sim *sim, double t, struct wl_error *err) {
   struct s2_run *r = user;
   const struct wl_particles *p = wl_sph_sim_particles(sim, err);
@@ -305,8 +329,9 @@ static enum wl_status s2_out(void *user, struct wl_sph_sim *sim, double t, struc
   enum wl_status st = s2_near(r, p, 2.0 * wl_sph_sim_const(sim)->h_d, err);
   if (!st) st = wl_sph_probe_index(r->probe, &r->near, err);
   if (st) return st;
-  double y[WL_VAL_S2_NP + WL_VAL_S2_NH];
+  double y[S2_COLS];
   wl_val_spheric2_sample(r->probe, r->dp, y, y + WL_VAL_S2_NP);
+  y[S2_COL_P1_WALL] = s2_wall_pressure_p1(p, wl_sph_sim_const(sim), r->dp);
   return wl_val_series_push(&r->s, t, y, err);
 }
 
@@ -322,7 +347,7 @@ enum wl_status wl_val_run_spheric2(const struct wl_val_case *c, const struct wl_
   struct wl_sph_config cfg;
   struct wl_particles init = {0};
   st = wl_val_spheric2_build(dp, ctx, &cfg, &init, err);
-  const int K = WL_VAL_S2_NP + WL_VAL_S2_NH;
+  const int K = S2_COLS;
   struct s2_run r = {dp, NULL, {0}, {0}};
   r.s.k = K;
   if (!st) st = wl_sph_probe_alloc(&r.probe, &cfg, err);
@@ -358,6 +383,11 @@ enum wl_status wl_val_run_spheric2(const struct wl_val_case *c, const struct wl_
     for (int i = 0; i < WL_VAL_S2_NP; i++) pmin = fmin(pmin, mm[i].min);
     wl_val_ratio(&lv->m[j++], "largest tension P1-P4 / rho g H", "Pa", fmax(0.0, -pmin), rgh,
                  S2_TOL_TENSION);
+    struct wl_val_s2_pmetrics mw;
+    wl_val_spheric2_pressure_metrics(r.s.t, r.s.y + S2_COL_P1_WALL, r.s.n, K, rgh, me[0].arrival,
+                                     &mw);
+    wl_val_rel(&lv->m[j++], "P1 plateau, wall particles' pressure", "Pa", mw.plateau,
+               me[0].plateau, NAN);
     static const char *pl_name[WL_VAL_S2_NP] = {NULL, "P2 plateau (0.5-1 s after arrival)",
                                                 "P3 plateau (0.5-1 s after arrival)",
                                                 "P4 plateau (0.5-1 s after arrival)"};
