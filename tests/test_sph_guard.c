@@ -138,9 +138,77 @@ static void depth_rules(void) {
   wl_particles_clear(&p);
 }
 
+/* The guard after the limiter tests the wall faces only for the particles
+ * the limiter moved (sph/guard.h wl_sph_guard_faces). Reference: the guard
+ * over every face, a second computation of the same verdict, on 20 000
+ * particles scattered with random velocities around a convex crest (the
+ * seawall's), a concave corner (bed and end wall), a thin wall and a slope
+ * meeting a platform. Every verdict and crossed wall must agree, and the
+ * sample must contain particles the limiter moved and faults the guard
+ * finds after it, so that both branches are exercised. */
+static void guard_after_limiter(void) {
+  struct wl_particles p = {0};
+  struct wl_error err;
+  if (wl_particles_alloc(&p, 2, 1, 1, &err)) {
+    printf("FAIL alloc: %s\n", err.msg);
+    wl_test_failures++;
+    return;
+  }
+  p.n = 1;
+  p.kind[0] = WL_KIND_FLUID;
+  p.rho[0] = 1000;
+  struct wl_sph_const k;
+  memset(&k, 0, sizeof k);
+  k.rho_min = 700;
+  k.rho_max = 1300;
+  k.penetration = 0.01;
+  const double lo[2] = {-10, -10}, hi[2] = {10, 10};
+  const struct wl_sph_wall w[] = {
+      wl_sph_wall_make(1, 0, 1, 0.45, 0.1),   /* seawall face, fluid at x < 1 */
+      wl_sph_wall_make(1, 0.45, 2, 0.45, 0.1), /* its crest */
+      wl_sph_wall_make(-1, 0, 1, 0, 0.1),     /* bed in front of it */
+      wl_sph_wall_make(-1, 1, -1, 0, 0.1),    /* end wall at x = -1, fluid at x > -1 */
+      wl_sph_wall_make(-0.5, 0.6, -0.5, 0.9, 0.03), /* a thin plate */
+      wl_sph_wall_make(0.2, 0.7, 0.6, 0.8, 0.1),    /* a slope meeting a platform */
+      wl_sph_wall_make(0.6, 0.8, 0.9, 0.8, 0.1)};
+  const int nw = (int)(sizeof w / sizeof w[0]);
+  unsigned long seed = 20261127;
+  int differ = 0, moved_n = 0, faults_after_move = 0;
+  for (int it = 0; it < 20000; it++) {
+    double u[4];
+    for (int a = 0; a < 4; a++) {
+      seed = seed * 6364136223846793005ul + 1442695040888963407ul;
+      u[a] = (double)(seed >> 11) / 9007199254740992.0;
+    }
+    p.pos[0][0] = -1.15 + 3.3 * u[0];
+    p.pos[1][0] = -0.15 + 1.1 * u[1];
+    p.vel[0][0] = (float)(2 * u[2] - 1);
+    p.vel[1][0] = (float)(2 * u[3] - 1);
+    p.body[0] = 0;
+    const int moved = wl_sph_wall_limit(2, &p, w, nw, k.penetration, 0);
+    int w_all = -1, w_fast = -1;
+    const int f_all = wl_sph_guard(2, &k, &p, lo, hi, w, nw, 0, &w_all);
+    const int f_fast = wl_sph_guard(2, &k, &p, lo, hi, w, wl_sph_guard_faces(1, moved, nw), 0, &w_fast);
+    differ += f_all != f_fast || w_all != w_fast;
+    moved_n += moved;
+    faults_after_move += moved && f_all != WL_SPH_FAULT_NONE;
+  }
+  printf("  %d of 20000 moved by the limiter, %d of those still crossed after it\n", moved_n,
+         faults_after_move);
+  CHECK_TRUE(differ == 0, "the guard after the limiter: the same verdict and wall over the moved "
+                          "particles' faces alone as over every face");
+  CHECK_TRUE(moved_n > 1000 && faults_after_move > 0,
+             "the sample exercises both: particles the limiter moved, and faults left after it");
+  CHECK_TRUE(wl_sph_guard_faces(1, 0, 7) == 0 && wl_sph_guard_faces(1, 1, 7) == 7 &&
+                 wl_sph_guard_faces(0, 0, 7) == 7,
+             "no faces where the limiter left the particle; all where it moved it or did not run");
+  wl_particles_clear(&p);
+}
+
 int main(void) {
   struct wl_error err;
   depth_rules();
+  guard_after_limiter();
 
   /* ---- guard faults, found in the initial state ---- */
   wl_error_clear(&err);
