@@ -139,8 +139,10 @@ static void depth_rules(void) {
 }
 
 /* The guard after the limiter tests the wall faces only for the particles
- * the limiter moved (sph/guard.h wl_sph_guard_faces). Reference: the guard
- * over every face, a second computation of the same verdict, on 20 000
+ * the limiter moved (sph/guard.h wl_sph_guard_faces), and the limiter only
+ * the faces near the particles' box (wl_sph_walls_near). Reference: the
+ * limiter and guard over every face, a second computation of the same
+ * decisions, on 20 000
  * particles scattered with random velocities around a convex crest (the
  * seawall's), a concave corner (bed and end wall), a thin wall and a slope
  * meeting a platform. Every verdict and crossed wall must agree, and the
@@ -173,7 +175,7 @@ static void guard_after_limiter(void) {
       wl_sph_wall_make(0.6, 0.8, 0.9, 0.8, 0.1)};
   const int nw = (int)(sizeof w / sizeof w[0]);
   unsigned long seed = 20261127;
-  int differ = 0, moved_n = 0, faults_after_move = 0;
+  int differ = 0, moved_n = 0, faults_after_move = 0, near_differ = 0, culled = 0;
   for (int it = 0; it < 20000; it++) {
     double u[4];
     for (int a = 0; a < 4; a++) {
@@ -185,7 +187,26 @@ static void guard_after_limiter(void) {
     p.vel[0][0] = (float)(2 * u[2] - 1);
     p.vel[1][0] = (float)(2 * u[3] - 1);
     p.body[0] = 0;
+    /* the limiter over the faces near a box around the particle (random
+     * half-widths up to 0.3 m) against the limiter over all of them */
+    const double x0 = p.pos[0][0], z0 = p.pos[1][0];
+    const float u0 = p.vel[0][0], w0 = p.vel[1][0];
+    double box[4];
+    for (int a = 0; a < 4; a++) {
+      seed = seed * 6364136223846793005ul + 1442695040888963407ul;
+      const double half = 0.3 * (double)(seed >> 11) / 9007199254740992.0;
+      box[a] = (a < 2 ? x0 : z0) + (a % 2 ? half : -half);
+    }
+    struct wl_sph_wall near[WL_SPH_WALLS_MAX];
+    const int n_near = wl_sph_walls_near(w, nw, box, near);
+    culled += n_near < nw;
+    const int moved_near = wl_sph_wall_limit(2, &p, near, n_near, k.penetration, 0);
+    const double xn = p.pos[0][0], zn = p.pos[1][0];
+    const float un = p.vel[0][0], wn = p.vel[1][0];
+    p.pos[0][0] = x0, p.pos[1][0] = z0, p.vel[0][0] = u0, p.vel[1][0] = w0;
     const int moved = wl_sph_wall_limit(2, &p, w, nw, k.penetration, 0);
+    near_differ += moved != moved_near || xn != p.pos[0][0] || zn != p.pos[1][0] ||
+                   un != p.vel[0][0] || wn != p.vel[1][0];
     int w_all = -1, w_fast = -1;
     const int f_all = wl_sph_guard(2, &k, &p, lo, hi, w, nw, 0, &w_all);
     const int f_fast = wl_sph_guard(2, &k, &p, lo, hi, w, wl_sph_guard_faces(1, moved, nw), 0, &w_fast);
@@ -197,6 +218,9 @@ static void guard_after_limiter(void) {
          faults_after_move);
   CHECK_TRUE(differ == 0, "the guard after the limiter: the same verdict and wall over the moved "
                           "particles' faces alone as over every face");
+  CHECK_TRUE(near_differ == 0 && culled > 10000,
+             "the limiter over the faces near a box around the particle (wl_sph_walls_near) moves "
+             "it as over every face, with faces left out in most draws");
   CHECK_TRUE(moved_n > 1000 && faults_after_move > 0,
              "the sample exercises both: particles the limiter moved, and faults left after it");
   CHECK_TRUE(wl_sph_guard_faces(1, 0, 7) == 0 && wl_sph_guard_faces(1, 1, 7) == 7 &&

@@ -318,12 +318,18 @@ static void fill_dt(const struct cpu *c, const struct eval_stats *st, struct wl_
 /* ---- guard ------------------------------------------------------------------- */
 
 /* The guard for every particle, after the update (the corrector or the
- * Verlet step) when `in` is not NULL (one loop: particle i's check reads
- * only what its update wrote). The
- * first faulty particle is the lowest index, whatever the threads. */
+ * Verlet step) when `in` is not NULL, a chunk of GUARD_CHUNK particles at
+ * a time: the chunk's updates, then its limiter and guard (particle i's
+ * check reads only what its update wrote). The limiter tests only the
+ * wall faces near the chunk (sph/guard.h wl_sph_walls_near; the particles
+ * are in cell order, so a chunk is a compact patch and most faces are far
+ * from it); its decisions are those over every face. The first faulty
+ * particle is the lowest index, whatever the threads. */
+enum { GUARD_CHUNK = 256 };
+
 static void guard(struct cpu *c, const struct wl_sph_step_in *in, struct wl_sph_step_out *out) {
   struct wl_particles *p = &c->p;
-  const int n = p->n, dim = p->dim;
+  const int n = p->n, dim = p->dim, n_chunks = (n + GUARD_CHUNK - 1) / GUARD_CHUNK;
   int first = n;
   long limited = 0, excluded = 0;
   const int verlet = c->k.integrator == WL_SPH_VERLET;
@@ -331,21 +337,32 @@ static void guard(struct cpu *c, const struct wl_sph_step_in *in, struct wl_sph_
   const int limiter = in && c->k.wall_limiter;
 #pragma omp parallel for schedule(static) num_threads(threads(c)) reduction(min : first) \
     reduction(+ : limited, excluded)
-  for (int i = 0; i < n; i++) {
-    if (in && verlet)
-      wl_sph_verlet(dim, &c->k, p, in->dt, in->dt_prev,
-                    (const double(*)[WL_SPH_DIM_MAX])in->body_vel, euler, i);
-    else if (in)
-      wl_sph_correct(dim, &c->k, p, in->dt, (const double(*)[WL_SPH_DIM_MAX])in->body_vel, i);
-    const int moved =
-        limiter && wl_sph_wall_limit(dim, p, c->cfg.walls, c->cfg.n_walls, c->k.penetration, i);
-    limited += moved;
-    if (in) excluded += wl_sph_exclude(dim, p, c->cfg.lo, c->cfg.hi, i);
-    int w = -1;
-    if (wl_sph_guard(dim, &c->k, p, c->cfg.lo, c->cfg.hi, c->cfg.walls,
-                     wl_sph_guard_faces(limiter, moved, c->cfg.n_walls), i, &w) &&
-        i < first)
-      first = i;
+  for (int ch = 0; ch < n_chunks; ch++) {
+    const int i0 = ch * GUARD_CHUNK, i1 = i0 + GUARD_CHUNK < n ? i0 + GUARD_CHUNK : n;
+    double box[4] = {INFINITY, -INFINITY, INFINITY, -INFINITY};
+    for (int i = i0; i < i1; i++) {
+      if (in && verlet)
+        wl_sph_verlet(dim, &c->k, p, in->dt, in->dt_prev,
+                      (const double(*)[WL_SPH_DIM_MAX])in->body_vel, euler, i);
+      else if (in)
+        wl_sph_correct(dim, &c->k, p, in->dt, (const double(*)[WL_SPH_DIM_MAX])in->body_vel, i);
+      if (p->kind[i] != WL_KIND_FLUID) continue;
+      const double x = p->pos[0][i], z = p->pos[dim - 1][i];
+      box[0] = fmin(box[0], x), box[1] = fmax(box[1], x);
+      box[2] = fmin(box[2], z), box[3] = fmax(box[3], z);
+    }
+    struct wl_sph_wall near[WL_SPH_WALLS_MAX];
+    const int n_near = limiter ? wl_sph_walls_near(c->cfg.walls, c->cfg.n_walls, box, near) : 0;
+    for (int i = i0; i < i1; i++) {
+      const int moved = limiter && wl_sph_wall_limit(dim, p, near, n_near, c->k.penetration, i);
+      limited += moved;
+      if (in) excluded += wl_sph_exclude(dim, p, c->cfg.lo, c->cfg.hi, i);
+      int w = -1;
+      if (wl_sph_guard(dim, &c->k, p, c->cfg.lo, c->cfg.hi, c->cfg.walls,
+                       wl_sph_guard_faces(limiter, moved, c->cfg.n_walls), i, &w) &&
+          i < first)
+        first = i;
+    }
   }
   wl_cpu_guard_report(&c->k, p, &c->cfg, first, limited, excluded, out);
 }

@@ -150,6 +150,43 @@ WL_HD static inline int wl_sph_wall_limit(const int dim, const struct wl_particl
   return 1;
 }
 
+/* The axis-aligned box {x0, x1, z0, z1} around what lies behind face w
+ * within its layers (a + s t - d n, n the fluid side's unit normal, s in
+ * [0, len], d in [0, thickness]), widened by a micrometre against
+ * rounding: a particle outside it is behind no part of w. */
+WL_HD static inline void wl_sph_wall_box(const struct wl_sph_wall *w, double box[4]) {
+  const double nx = -w->t[1], nz = w->t[0];
+  const double cx[4] = {w->a[0], w->a[0] + w->len * w->t[0], w->a[0] - w->thickness * nx,
+                        w->a[0] + w->len * w->t[0] - w->thickness * nx};
+  const double cz[4] = {w->a[1], w->a[1] + w->len * w->t[1], w->a[1] - w->thickness * nz,
+                        w->a[1] + w->len * w->t[1] - w->thickness * nz};
+  box[0] = box[1] = cx[0];
+  box[2] = box[3] = cz[0];
+  for (int c = 1; c < 4; c++) {
+    box[0] = cx[c] < box[0] ? cx[c] : box[0];
+    box[1] = cx[c] > box[1] ? cx[c] : box[1];
+    box[2] = cz[c] < box[2] ? cz[c] : box[2];
+    box[3] = cz[c] > box[3] ? cz[c] : box[3];
+  }
+  box[0] -= 1e-6, box[1] += 1e-6, box[2] -= 1e-6, box[3] += 1e-6;
+}
+
+/* The faces of walls[0, n) whose boxes (wl_sph_wall_box) meet `box`
+ * ({x0, x1, z0, z1}, the particles' own), copied in their order into out;
+ * returns how many. For every particle inside `box` the limiter over them
+ * decides as over all n (the faces left out cannot hold it, and the order
+ * of those kept, which breaks ties, is the same). */
+WL_HD static inline int wl_sph_walls_near(const struct wl_sph_wall *walls, int n,
+                                          const double box[4], struct wl_sph_wall *out) {
+  int m = 0;
+  for (int w = 0; w < n; w++) {
+    double b[4];
+    wl_sph_wall_box(&walls[w], b);
+    if (b[0] <= box[1] && b[1] >= box[0] && b[2] <= box[3] && b[3] >= box[2]) out[m++] = walls[w];
+  }
+  return m;
+}
+
 /* How many of the wall faces the guard must test for a particle after the
  * limiter: none when the limiter ran on it and left it where it was, all
  * of them otherwise. A particle the limiter left lies behind no face
