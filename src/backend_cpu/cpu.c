@@ -318,18 +318,15 @@ static void fill_dt(const struct cpu *c, const struct eval_stats *st, struct wl_
 /* ---- guard ------------------------------------------------------------------- */
 
 /* The guard for every particle, after the update (the corrector or the
- * Verlet step) when `in` is not NULL, a chunk of GUARD_CHUNK particles at
- * a time: the chunk's updates, then its limiter and guard (particle i's
- * check reads only what its update wrote). The limiter tests only the
- * wall faces near the chunk (sph/guard.h wl_sph_walls_near; the particles
- * are in cell order, so a chunk is a compact patch and most faces are far
- * from it); its decisions are those over every face. The first faulty
- * particle is the lowest index, whatever the threads. */
-enum { GUARD_CHUNK = 256 };
-
+ * Verlet step) when `in` is not NULL, a chunk at a time: the chunk's
+ * updates, then its limiter, exits and guard (cpu_shared.h
+ * wl_cpu_guard_chunk; particle i's check reads only what its update
+ * wrote). The first faulty particle is the lowest index, whatever the
+ * threads. */
 static void guard(struct cpu *c, const struct wl_sph_step_in *in, struct wl_sph_step_out *out) {
   struct wl_particles *p = &c->p;
-  const int n = p->n, dim = p->dim, n_chunks = (n + GUARD_CHUNK - 1) / GUARD_CHUNK;
+  const int n = p->n, dim = p->dim;
+  const int n_chunks = (n + WL_CPU_GUARD_CHUNK - 1) / WL_CPU_GUARD_CHUNK;
   int first = n;
   long limited = 0, excluded = 0;
   const int verlet = c->k.integrator == WL_SPH_VERLET;
@@ -338,31 +335,20 @@ static void guard(struct cpu *c, const struct wl_sph_step_in *in, struct wl_sph_
 #pragma omp parallel for schedule(static) num_threads(threads(c)) reduction(min : first) \
     reduction(+ : limited, excluded)
   for (int ch = 0; ch < n_chunks; ch++) {
-    const int i0 = ch * GUARD_CHUNK, i1 = i0 + GUARD_CHUNK < n ? i0 + GUARD_CHUNK : n;
-    double box[4] = {INFINITY, -INFINITY, INFINITY, -INFINITY};
-    for (int i = i0; i < i1; i++) {
-      if (in && verlet)
+    const int i0 = ch * WL_CPU_GUARD_CHUNK;
+    const int i1 = i0 + WL_CPU_GUARD_CHUNK < n ? i0 + WL_CPU_GUARD_CHUNK : n;
+    for (int i = i0; i < i1 && in; i++) {
+      if (verlet)
         wl_sph_verlet(dim, &c->k, p, in->dt, in->dt_prev,
                       (const double(*)[WL_SPH_DIM_MAX])in->body_vel, euler, i);
-      else if (in)
+      else
         wl_sph_correct(dim, &c->k, p, in->dt, (const double(*)[WL_SPH_DIM_MAX])in->body_vel, i);
-      if (p->kind[i] != WL_KIND_FLUID) continue;
-      const double x = p->pos[0][i], z = p->pos[dim - 1][i];
-      box[0] = fmin(box[0], x), box[1] = fmax(box[1], x);
-      box[2] = fmin(box[2], z), box[3] = fmax(box[3], z);
     }
-    struct wl_sph_wall near[WL_SPH_WALLS_MAX];
-    const int n_near = limiter ? wl_sph_walls_near(c->cfg.walls, c->cfg.n_walls, box, near) : 0;
-    for (int i = i0; i < i1; i++) {
-      const int moved = limiter && wl_sph_wall_limit(dim, p, near, n_near, c->k.penetration, i);
-      limited += moved;
-      if (in) excluded += wl_sph_exclude(dim, p, c->cfg.lo, c->cfg.hi, i);
-      int w = -1;
-      if (wl_sph_guard(dim, &c->k, p, c->cfg.lo, c->cfg.hi, c->cfg.walls,
-                       wl_sph_guard_faces(limiter, moved, c->cfg.n_walls), i, &w) &&
-          i < first)
-        first = i;
-    }
+    struct wl_cpu_guard_counts cnt = {n, 0, 0};
+    wl_cpu_guard_chunk(&c->k, &c->cfg, p, i0, i1, limiter, in != NULL, &cnt);
+    first = cnt.first < first ? cnt.first : first;
+    limited += cnt.limited;
+    excluded += cnt.excluded;
   }
   wl_cpu_guard_report(&c->k, p, &c->cfg, first, limited, excluded, out);
 }

@@ -1,6 +1,7 @@
 /* cpu_shared.c: what the CPU backends share (cpu_shared.h). */
 #include "cpu_shared.h"
 
+#include <math.h>
 #include <omp.h>
 
 #include "wallload/sph/guard.h"
@@ -71,6 +72,34 @@ void wl_cpu_rebuild(struct wl_particles *p, struct wl_particles *alt, unsigned i
   unsigned int *tmp = p->key;
   p->key = *key_tmp;
   *key_tmp = tmp;
+}
+
+void wl_cpu_guard_chunk(const struct wl_sph_const *k, const struct wl_sph_config *cfg,
+                        struct wl_particles *p, int i0, int i1, int limiter, int exits,
+                        struct wl_cpu_guard_counts *cnt) {
+  const int dim = p->dim;
+  struct wl_sph_wall near[WL_SPH_WALLS_MAX];
+  int n_near = 0;
+  if (limiter) {
+    double box[4] = {INFINITY, -INFINITY, INFINITY, -INFINITY};
+    for (int i = i0; i < i1; i++) {
+      if (p->kind[i] != WL_KIND_FLUID) continue;
+      const double x = p->pos[0][i], z = p->pos[dim - 1][i];
+      box[0] = fmin(box[0], x), box[1] = fmax(box[1], x);
+      box[2] = fmin(box[2], z), box[3] = fmax(box[3], z);
+    }
+    n_near = wl_sph_walls_near(cfg->walls, cfg->n_walls, box, near);
+  }
+  for (int i = i0; i < i1; i++) {
+    const int moved = limiter && wl_sph_wall_limit(dim, p, near, n_near, k->penetration, i);
+    cnt->limited += moved;
+    if (exits) cnt->excluded += wl_sph_exclude(dim, p, cfg->lo, cfg->hi, i);
+    int w = -1;
+    if (wl_sph_guard(dim, k, p, cfg->lo, cfg->hi, cfg->walls,
+                     wl_sph_guard_faces(limiter, moved, cfg->n_walls), i, &w) &&
+        i < cnt->first)
+      cnt->first = i;
+  }
 }
 
 void wl_cpu_guard_report(const struct wl_sph_const *k, const struct wl_particles *p,

@@ -30,6 +30,26 @@ void wl_cpu_rebuild(struct wl_particles *p, struct wl_particles *alt, unsigned i
                     const struct wl_sph_grid *g, int *begin, int *cursor,
                     const struct wl_cpu_sort_extra *extra, int threads);
 
+/* Particles per chunk of the guard (wl_cpu_guard_chunk). */
+enum { WL_CPU_GUARD_CHUNK = 256 };
+
+/* The guard's counts over the chunks of a step. */
+struct wl_cpu_guard_counts {
+  int first;    /* the lowest faulty index so far (p->n: none) */
+  long limited; /* wall-limiter corrections */
+  long excluded; /* particles taken out of the run (domain exits) */
+};
+
+/* After the particles [i0, i1) (a chunk, in cell order: a compact patch)
+ * have been updated: the wall limiter (when `limiter`), the domain exits
+ * (when `exits`) and the guard of each, added to *cnt. The limiter tests
+ * only the wall faces near the chunk's fluid (sph/guard.h
+ * wl_sph_walls_near: its decisions are those over every face), the guard
+ * only where the limiter moved a particle (wl_sph_guard_faces). */
+void wl_cpu_guard_chunk(const struct wl_sph_const *k, const struct wl_sph_config *cfg,
+                        struct wl_particles *p, int i0, int i1, int limiter, int exits,
+                        struct wl_cpu_guard_counts *cnt);
+
 /* The guard's report of a step into out: the wall limiter's and the domain
  * exits' counts, and the first particle (lowest index; n: none) that
  * failed the guard, with its state. */

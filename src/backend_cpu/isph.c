@@ -242,25 +242,24 @@ static void wall_ga(const struct isph *c, const struct wl_sph_step_in *in, int i
     ga[a == az ? 2 : a] = (double)c->k.gravity[a] - (aw ? aw[a] : 0.0);
 }
 
-/* The guard of cpu.c (limiter, exclusion, faults), after the update. */
+/* The guard of cpu.c (limiter, exclusion, faults: cpu_shared.h
+ * wl_cpu_guard_chunk), after the update when `moved`. */
 static void guard(struct isph *c, int moved, struct wl_sph_step_out *out) {
   struct wl_particles *p = &c->p;
-  const int n = p->n, dim = p->dim;
+  const int n = p->n, n_chunks = (n + WL_CPU_GUARD_CHUNK - 1) / WL_CPU_GUARD_CHUNK;
   int first = n;
   long limited = 0, excluded = 0;
   const int limiter = moved && c->k.wall_limiter;
 #pragma omp parallel for schedule(static) num_threads(threads(c)) reduction(min : first) \
     reduction(+ : limited, excluded)
-  for (int i = 0; i < n; i++) {
-    const int limited_i =
-        limiter && wl_sph_wall_limit(dim, p, c->cfg.walls, c->cfg.n_walls, c->k.penetration, i);
-    limited += limited_i;
-    if (moved) excluded += wl_sph_exclude(dim, p, c->cfg.lo, c->cfg.hi, i);
-    int w = -1;
-    if (wl_sph_guard(dim, &c->k, p, c->cfg.lo, c->cfg.hi, c->cfg.walls,
-                     wl_sph_guard_faces(limiter, limited_i, c->cfg.n_walls), i, &w) &&
-        i < first)
-      first = i;
+  for (int ch = 0; ch < n_chunks; ch++) {
+    const int i0 = ch * WL_CPU_GUARD_CHUNK;
+    const int i1 = i0 + WL_CPU_GUARD_CHUNK < n ? i0 + WL_CPU_GUARD_CHUNK : n;
+    struct wl_cpu_guard_counts cnt = {n, 0, 0};
+    wl_cpu_guard_chunk(&c->k, &c->cfg, p, i0, i1, limiter, moved, &cnt);
+    first = cnt.first < first ? cnt.first : first;
+    limited += cnt.limited;
+    excluded += cnt.excluded;
   }
   wl_cpu_guard_report(&c->k, p, &c->cfg, first, limited, excluded, out);
 }
