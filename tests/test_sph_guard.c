@@ -81,6 +81,26 @@ static void prog(void *user, const struct wl_sph_progress *pr) {
   if (pr->t >= 0 && pr->n > 0) n_prog++;
 }
 
+/* One 2D fluid particle at rest density, and the constants the guard and
+ * limiter read (penetration 0.01 m); 1 (a failure counted) if the
+ * allocation fails. */
+static int one_fluid_particle(struct wl_particles *p, struct wl_sph_const *k) {
+  struct wl_error err;
+  if (wl_particles_alloc(p, 2, 1, 1, &err)) {
+    printf("FAIL alloc: %s\n", err.msg);
+    wl_test_failures++;
+    return 1;
+  }
+  p->n = 1;
+  p->kind[0] = WL_KIND_FLUID;
+  p->rho[0] = 1000;
+  memset(k, 0, sizeof *k);
+  k->rho_min = 700;
+  k->rho_max = 1300;
+  k->penetration = 0.01;
+  return 0;
+}
+
 /* The guard's depth rule and the wall limiter (sph/guard.h) on one fluid
  * particle against hand-made faces: a seawall block (vertical face x = 1
  * up to its crest z = 0.45, crest face on top), layers 0.1 m deep, and a
@@ -88,20 +108,8 @@ static void prog(void *user, const struct wl_sph_progress *pr) {
  * geometry itself (distances by hand). */
 static void depth_rules(void) {
   struct wl_particles p = {0};
-  struct wl_error err;
-  if (wl_particles_alloc(&p, 2, 1, 1, &err)) {
-    printf("FAIL alloc: %s\n", err.msg);
-    wl_test_failures++;
-    return;
-  }
-  p.n = 1;
-  p.kind[0] = WL_KIND_FLUID;
-  p.rho[0] = 1000;
   struct wl_sph_const k;
-  memset(&k, 0, sizeof k);
-  k.rho_min = 700;
-  k.rho_max = 1300;
-  k.penetration = 0.01;
+  if (one_fluid_particle(&p, &k)) return;
   const double lo[2] = {-10, -10}, hi[2] = {10, 10};
   struct wl_sph_wall w[2] = {wl_sph_wall_make(1, 0, 1, 0.45, 0.1),
                              wl_sph_wall_make(1, 0.45, 2, 0.45, 0.1)};
@@ -150,20 +158,8 @@ static void depth_rules(void) {
  * finds after it, so that both branches are exercised. */
 static void guard_after_limiter(void) {
   struct wl_particles p = {0};
-  struct wl_error err;
-  if (wl_particles_alloc(&p, 2, 1, 1, &err)) {
-    printf("FAIL alloc: %s\n", err.msg);
-    wl_test_failures++;
-    return;
-  }
-  p.n = 1;
-  p.kind[0] = WL_KIND_FLUID;
-  p.rho[0] = 1000;
   struct wl_sph_const k;
-  memset(&k, 0, sizeof k);
-  k.rho_min = 700;
-  k.rho_max = 1300;
-  k.penetration = 0.01;
+  if (one_fluid_particle(&p, &k)) return;
   const double lo[2] = {-10, -10}, hi[2] = {10, 10};
   const struct wl_sph_wall w[] = {
       wl_sph_wall_make(1, 0, 1, 0.45, 0.1),   /* seawall face, fluid at x < 1 */
