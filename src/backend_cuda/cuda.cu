@@ -1460,11 +1460,16 @@ __global__ void __launch_bounds__(THREADS)
     p.key[i] = key;
     count_key(key, count, bsum);
   }
-  /* the last block to finish ends the step (the threadfence pattern: every
-   * thread's writes ordered before its block's ticket) */
-  __threadfence();
+  /* the last block to finish ends the step: the barrier orders the block's
+   * writes before thread 0's fence, which orders them (fences are
+   * cumulative) before its ticket, as cooperative groups' grid barrier
+   * does; one fence a block instead of one a thread, which stalled every
+   * warp of the update (BENCHMARKS.md, "the cost of a step") */
   __syncthreads();
-  if (threadIdx.x == 0) last = atomicAdd(&st->ticket, 1u) == gridDim.x - 1;
+  if (threadIdx.x == 0) {
+    __threadfence();
+    last = atomicAdd(&st->ticket, 1u) == gridDim.x - 1;
+  }
   __syncthreads();
   if (!last || threadIdx.x != 0) return;
   __threadfence();
