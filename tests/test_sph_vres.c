@@ -3,7 +3,8 @@
  * wl_plan_default_numerics).
  *
  * still: a tank L = 1 m, h = 0.5 m, coarse dp = 0.05 m on x < 0.5 m and
- * fine dp = 0.025 m on x > 0.5 m, run 20 sqrt(h/g). References (issue 19):
+ * fine dp = 0.025 m on x > 0.5 m (the ranges overlap by the coarse band's
+ * width, 0.2 m, on either side: g_overlap), run 20 sqrt(h/g). References (issue 19):
  * hydrostatics (rho0 g depth) for the pressure on either side of the
  * interface, which must agree within 1 % of it; the mass each level holds
  * in its own range, conserved to 1e-6 relative (issue 19); the largest
@@ -189,18 +190,26 @@ static int basin_level(const struct basin *b, double dp, double x0, double x1, d
   return st != WL_OK;
 }
 
-/* Two levels of basin b, coarse dpc on x < x_if and fine dpf beyond, each
- * with its band (o->buffer_h h, whole rows) and `spare` parked particles
- * (parked high in the box, above the walls), coupled (vres.h). */
+/* The ranges' overlap on either side of the interface, in widths of the
+ * coarse level's band (vres.h: one width, 2h of the coarse level in whole
+ * rows, completes the supports of both fits); the solitary mode's sixth
+ * argument. */
+static double g_overlap = 1.0;
+
+/* Two levels of basin b, coarse dpc on x < x_if + overlap and fine dpf on
+ * x > x_if - overlap (overlap: g_overlap coarse band widths), each with its
+ * band (o->buffer_h h, whole rows) and `spare` parked particles (parked
+ * high in the box, above the walls), coupled (vres.h). */
 static int coupled(const struct basin *b, double dpc, double dpf, double x_if, struct wave_ic *w,
                    const struct wl_vres_opts *o, int spare, struct wl_vres **v) {
   const double bh = o->buffer_h > 0 ? o->buffer_h : 2.0;
   const double rows = ceil(bh * WL_PLAN_COEFH_2D * sqrt(2.0) - 1e-9); /* h = coefh sqrt(2) dp */
   const double wc = rows * dpc, wf = rows * dpf;
+  const double ov = g_overlap * wc;
   struct wl_sph_config cfg[2];
   struct wl_particles init[2] = {{0}, {0}};
-  if (basin_level(b, dpc, 0, x_if + wc + 3 * dpc, 0, x_if + wc, w, &cfg[0], &init[0]) ||
-      basin_level(b, dpf, x_if - wf - 3 * dpf, b->length, x_if - wf, b->length, w, &cfg[1],
+  if (basin_level(b, dpc, 0, x_if + ov + wc + 3 * dpc, 0, x_if + ov + wc, w, &cfg[0], &init[0]) ||
+      basin_level(b, dpf, x_if - ov - wf - 3 * dpf, b->length, x_if - ov - wf, b->length, w, &cfg[1],
                   &init[1]))
     return 1;
   struct wl_vres_level_spec s[2];
@@ -212,8 +221,8 @@ static int coupled(const struct basin *b, double dpc, double dpf, double x_if, s
     s[l].park_lo[1] = 0.64 * b->top, s[l].park_hi[1] = 0.92 * b->top;
     s[l].spare = spare;
   }
-  s[0].own_lo = -INFINITY, s[0].own_hi = x_if;
-  s[1].own_lo = x_if, s[1].own_hi = INFINITY;
+  s[0].own_lo = -INFINITY, s[0].own_hi = x_if + ov;
+  s[1].own_lo = x_if - ov, s[1].own_hi = INFINITY;
   struct wl_error err;
   wl_error_clear(&err);
   const enum wl_status st = wl_vres_alloc(v, &wl_backend_cpu_ops, 2, s, o, &err);
@@ -659,10 +668,11 @@ int main(int argc, char **argv) {
     const double eps = argc > 2 ? atof(argv[2]) : 0.4, ratio = argc > 3 ? atof(argv[3]) : 2;
     if (argc > 4) g_buffer_h = atof(argv[4]);
     if (argc > 5) g_shift = atof(argv[5]);
+    if (argc > 6) g_overlap = atof(argv[6]);
     if (solitary(eps, ratio)) return 1;
   } else {
-    printf("unknown mode %s (quick, suite, still, solitary [H/h [dp ratio [buffer/h [shift A]]]])\n",
-           mode);
+    printf("unknown mode %s (quick, suite, still, solitary [H/h [dp ratio [buffer/h [shift A "
+           "[overlap/band]]]]])\n", mode);
     return 2;
   }
   return TEST_RESULT();
