@@ -3,7 +3,8 @@
  * wl_plan_default_numerics).
  *
  * still: a tank L = 1 m, h = 0.5 m, coarse dp = 0.05 m on x < 0.5 m and
- * fine dp = 0.025 m on x > 0.5 m, run 20 sqrt(h/g). References (issue 19):
+ * fine dp = 0.025 m on x > 0.5 m (the ranges overlap by the coarse band's
+ * width, 0.2 m, on either side: g_overlap), run 20 sqrt(h/g). References (issue 19):
  * hydrostatics (rho0 g depth) for the pressure on either side of the
  * interface, which must agree within 1 % of it; the mass each level holds
  * in its own range, conserved to 1e-6 relative (issue 19); the largest
@@ -189,18 +190,26 @@ static int basin_level(const struct basin *b, double dp, double x0, double x1, d
   return st != WL_OK;
 }
 
-/* Two levels of basin b, coarse dpc on x < x_if and fine dpf beyond, each
- * with its band (o->buffer_h h, whole rows) and `spare` parked particles
- * (parked high in the box, above the walls), coupled (vres.h). */
+/* The ranges' overlap on either side of the interface, in widths of the
+ * coarse level's band (vres.h: one width, 2h of the coarse level in whole
+ * rows, completes the supports of both fits); the solitary mode's sixth
+ * argument. */
+static double g_overlap = 1.0;
+
+/* Two levels of basin b, coarse dpc on x < x_if + overlap and fine dpf on
+ * x > x_if - overlap (overlap: g_overlap coarse band widths), each with its
+ * band (o->buffer_h h, whole rows) and `spare` parked particles (parked
+ * high in the box, above the walls), coupled (vres.h). */
 static int coupled(const struct basin *b, double dpc, double dpf, double x_if, struct wave_ic *w,
                    const struct wl_vres_opts *o, int spare, struct wl_vres **v) {
   const double bh = o->buffer_h > 0 ? o->buffer_h : 2.0;
   const double rows = ceil(bh * WL_PLAN_COEFH_2D * sqrt(2.0) - 1e-9); /* h = coefh sqrt(2) dp */
   const double wc = rows * dpc, wf = rows * dpf;
+  const double ov = g_overlap * wc;
   struct wl_sph_config cfg[2];
   struct wl_particles init[2] = {{0}, {0}};
-  if (basin_level(b, dpc, 0, x_if + wc + 3 * dpc, 0, x_if + wc, w, &cfg[0], &init[0]) ||
-      basin_level(b, dpf, x_if - wf - 3 * dpf, b->length, x_if - wf, b->length, w, &cfg[1],
+  if (basin_level(b, dpc, 0, x_if + ov + wc + 3 * dpc, 0, x_if + ov + wc, w, &cfg[0], &init[0]) ||
+      basin_level(b, dpf, x_if - ov - wf - 3 * dpf, b->length, x_if - ov - wf, b->length, w, &cfg[1],
                   &init[1]))
     return 1;
   struct wl_vres_level_spec s[2];
@@ -212,8 +221,8 @@ static int coupled(const struct basin *b, double dpc, double dpf, double x_if, s
     s[l].park_lo[1] = 0.64 * b->top, s[l].park_hi[1] = 0.92 * b->top;
     s[l].spare = spare;
   }
-  s[0].own_lo = -INFINITY, s[0].own_hi = x_if;
-  s[1].own_lo = x_if, s[1].own_hi = INFINITY;
+  s[0].own_lo = -INFINITY, s[0].own_hi = x_if + ov;
+  s[1].own_lo = x_if - ov, s[1].own_hi = INFINITY;
   struct wl_error err;
   wl_error_clear(&err);
   const enum wl_status st = wl_vres_alloc(v, &wl_backend_cpu_ops, 2, s, o, &err);
@@ -348,10 +357,12 @@ static int still(double periods, int strict) {
 #define FL_X_IF 2.5  /* coarse on x < 2.5, fine beyond */
 #define FL_CREST 1.0 /* initial crest [m] */
 #define FL_T_END 5.2 /* to the reflected crest's return to G1 [s] */
-#define FL_GAUGES 3
+#define FL_GAUGES 8
 /* G1 in the coarse level; G2 and G3 in the fine, 1.5 m or more from the
- * wall, whose reflection would otherwise lift their crests */
-static const double fl_gauge_x[FL_GAUGES] = {1.75, 3.2, 4.0};
+ * wall, whose reflection would otherwise lift their crests. The rest are
+ * for diagnosis only (WL_VRES_DUMP): coarse at 2.0, 2.3, 2.45 m, fine at
+ * 2.55, 2.7 m. */
+static const double fl_gauge_x[FL_GAUGES] = {1.75, 3.2, 4.0, 2.0, 2.3, 2.45, 2.55, 2.7};
 static const struct basin flume = {FL_H, FL_L, 2.5 * FL_H, 5 * FL_H};
 
 /* Gauge records: eta at fl_gauge_x every 0.01 s. */
@@ -360,25 +371,83 @@ struct record {
   double t[600], eta[600][FL_GAUGES];
 };
 
-/* eta at gauge g from the level that owns it (sims[l], owns x in [lo, hi]). */
+/* eta at every gauge from the level that owns it (sims[l], owns x in [lo, hi]). */
 static int sample(struct record *r, double t, struct wl_sph_sim **sims, const double *lo,
                   const double *hi, int n_sims) {
   struct wl_error err;
   wl_error_clear(&err);
   if (r->n >= 600) return 0;
   r->t[r->n] = t;
-  for (int g = 0; g < FL_GAUGES; g++)
-    for (int l = 0; l < n_sims; l++) {
-      if (fl_gauge_x[g] < lo[l] || fl_gauge_x[g] > hi[l]) continue;
-      struct wl_sph_probe *pr;
-      if (wl_sph_probe_alloc(&pr, wl_sph_sim_config(sims[l]), &err)) return 1;
-      const struct wl_particles *p = wl_sph_sim_particles(sims[l], &err);
-      if (!p || wl_sph_probe_index(pr, p, &err)) return 1;
-      r->eta[r->n][g] = wl_sph_probe_elevation(pr, fl_gauge_x[g], 0, 0, 2.5 * FL_H, 0) - FL_H;
-      wl_sph_probe_free(pr);
-    }
+  for (int l = 0; l < n_sims; l++) {
+    struct wl_sph_probe *pr;
+    if (wl_sph_probe_alloc(&pr, wl_sph_sim_config(sims[l]), &err)) return 1;
+    const struct wl_particles *p = wl_sph_sim_particles(sims[l], &err);
+    if (!p || wl_sph_probe_index(pr, p, &err)) return 1;
+    for (int g = 0; g < FL_GAUGES; g++)
+      if (fl_gauge_x[g] >= lo[l] && fl_gauge_x[g] <= hi[l])
+        r->eta[r->n][g] = wl_sph_probe_elevation(pr, fl_gauge_x[g], 0, 0, 2.5 * FL_H, 0) - FL_H;
+    wl_sph_probe_free(pr);
+  }
   r->n++;
   return 0;
+}
+
+/* A uniform run's record from the directory WL_VRES_REF_DIR when it holds
+ * one (written there by an earlier run), so that runs of the coupled flume
+ * need not repeat the uniform references (one file per H/h, dp and gauge
+ * set). Returns 1 when loaded. */
+static int ref_path(char *buf, size_t n, double eps, double dp) {
+  const char *dir = getenv("WL_VRES_REF_DIR");
+  if (!dir || !*dir) return 0;
+  snprintf(buf, n, "%s/flume_eps%g_dp%g_g%d.bin", dir, eps, dp, FL_GAUGES);
+  return 1;
+}
+
+static int ref_load(struct record *r, double eps, double dp) {
+  char path[512];
+  if (!ref_path(path, sizeof path, eps, dp)) return 0;
+  FILE *fp = fopen(path, "rb");
+  /* WL_VRES_REF_WAIT=s: another process (mode refs) is writing it */
+  for (int s = getenv("WL_VRES_REF_WAIT") ? atoi(getenv("WL_VRES_REF_WAIT")) : 0; !fp && s > 0; s -= 5) {
+    struct timespec ts = {5, 0};
+    nanosleep(&ts, NULL);
+    fp = fopen(path, "rb");
+  }
+  if (!fp) return 0;
+  const int ok = fread(r, sizeof *r, 1, fp) == 1;
+  fclose(fp);
+  if (ok) printf("uniform dp %g: record read from %s\n", dp, path);
+  return ok;
+}
+
+static void ref_save(const struct record *r, double eps, double dp) {
+  char path[512];
+  if (!ref_path(path, sizeof path, eps, dp)) return;
+  FILE *fp = fopen(path, "wb");
+  if (fp) {
+    fwrite(r, sizeof *r, 1, fp);
+    fclose(fp);
+  }
+}
+
+/* The gauge records as text into WL_VRES_DUMP.<name> when set: t, then
+ * eta at each gauge. */
+static void dump(const struct record *r, const char *name) {
+  const char *base = getenv("WL_VRES_DUMP");
+  if (!base || !*base) return;
+  char path[512];
+  snprintf(path, sizeof path, "%s.%s", base, name);
+  FILE *fp = fopen(path, "w");
+  if (!fp) return;
+  fprintf(fp, "# t");
+  for (int g = 0; g < FL_GAUGES; g++) fprintf(fp, " eta(%.2f)", fl_gauge_x[g]);
+  fprintf(fp, "\n");
+  for (int k = 0; k < r->n; k++) {
+    fprintf(fp, "%.4f", r->t[k]);
+    for (int g = 0; g < FL_GAUGES; g++) fprintf(fp, " %.6f", r->eta[k][g]);
+    fprintf(fp, "\n");
+  }
+  fclose(fp);
 }
 
 /* Largest eta at gauge g over t in [t0, t1], parabola through the top
@@ -498,12 +567,20 @@ static int flume_run(double eps, double dpc, double dpf, double t_end, struct re
 static int solitary(double eps, double ratio) {
   const double H = eps * FL_H, dpf = FL_H / 20, dpc = ratio * dpf; /* H/dp 8 at H/h 0.4 */
   static struct record rv, ru, rc;
-  if (flume_run(eps, dpc, dpf, FL_T_END, &rv, NULL, NULL) ||
-      flume_run(eps, dpf, 0, FL_T_END, &ru, NULL, NULL))
-    return 1;
-  if (ratio > 1 && flume_run(eps, dpc, 0, FL_T_END, &rc, NULL, NULL)) return 1;
+  if (flume_run(eps, dpc, dpf, FL_T_END, &rv, NULL, NULL)) return 1;
+  dump(&rv, "vres");
+  if (!ref_load(&ru, eps, dpf)) {
+    if (flume_run(eps, dpf, 0, FL_T_END, &ru, NULL, NULL)) return 1;
+    ref_save(&ru, eps, dpf);
+  }
+  dump(&ru, "fine");
+  if (ratio > 1 && !ref_load(&rc, eps, dpc)) {
+    if (flume_run(eps, dpc, 0, FL_T_END, &rc, NULL, NULL)) return 1;
+    ref_save(&rc, eps, dpc);
+  }
+  if (ratio > 1) dump(&rc, "coarse");
   if (ratio > 1)
-    for (int g = 0; g < FL_GAUGES; g++) {
+    for (int g = 0; g < 3; g++) {
       const double tg = (fl_gauge_x[g] - FL_CREST) / sqrt(9.81 * FL_H * (1 + eps));
       double tcg;
       const double a = crest_of(&rc, g, tg - 0.4, tg + 0.4, &tcg);
@@ -515,7 +592,7 @@ static int solitary(double eps, double ratio) {
   const double t_g1 = (fl_gauge_x[0] - FL_CREST) / c, t_if = (2 * FL_X_IF - FL_CREST - fl_gauge_x[0]) / c;
   const double t_back = (2 * FL_L - FL_CREST - fl_gauge_x[0]) / c;
   double tv[FL_GAUGES], tu[FL_GAUGES], av[FL_GAUGES], au[FL_GAUGES];
-  for (int g = 0; g < FL_GAUGES; g++) {
+  for (int g = 0; g < 3; g++) {
     const double tg = (fl_gauge_x[g] - FL_CREST) / c;
     av[g] = crest_of(&rv, g, tg - 0.4, tg + 0.4, &tv[g]);
     au[g] = crest_of(&ru, g, tg - 0.4, tg + 0.4, &tu[g]);
@@ -578,14 +655,24 @@ int main(int argc, char **argv) {
     if (fit() || crossing()) return 1;
   } else if (!strcmp(mode, "still")) {
     if (still(20, 1)) return 1;
+  } else if (!strcmp(mode, "refs")) { /* the uniform references into WL_VRES_REF_DIR */
+    const double eps = argc > 2 ? atof(argv[2]) : 0.4, ratio = argc > 3 ? atof(argv[3]) : 2;
+    static struct record r;
+    const double dps[2] = {FL_H / 20, ratio * FL_H / 20};
+    for (int q = 0; q < (ratio > 1 ? 2 : 1); q++) {
+      if (flume_run(eps, dps[q], 0, FL_T_END, &r, NULL, NULL)) return 1;
+      ref_save(&r, eps, dps[q]);
+    }
+    return 0;
   } else if (!strcmp(mode, "solitary")) {
     const double eps = argc > 2 ? atof(argv[2]) : 0.4, ratio = argc > 3 ? atof(argv[3]) : 2;
     if (argc > 4) g_buffer_h = atof(argv[4]);
     if (argc > 5) g_shift = atof(argv[5]);
+    if (argc > 6) g_overlap = atof(argv[6]);
     if (solitary(eps, ratio)) return 1;
   } else {
-    printf("unknown mode %s (quick, suite, still, solitary [H/h [dp ratio [buffer/h [shift A]]]])\n",
-           mode);
+    printf("unknown mode %s (quick, suite, still, solitary [H/h [dp ratio [buffer/h [shift A "
+           "[overlap/band]]]]])\n", mode);
     return 2;
   }
   return TEST_RESULT();

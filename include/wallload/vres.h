@@ -26,8 +26,17 @@
  *    zero; only under its water, wetness WL_VRES_WET_MIN), and each whole
  *    particle mass becomes a new buffer particle dp/2 inside the edge once
  *    no particle is within dp/2 of that place.
+ * The two ranges touch or overlap (DualSPHysics 5.4's `overlappingh`;
+ * Ricci, Vacondio & Tafuni 2024): in an overlap both levels simulate their
+ * own fluid, and each band lies beyond the overlap, so that the donor
+ * level's fluid surrounds it and the fit interpolates instead of
+ * extrapolating from a cloud on one side. An overlap of at least the
+ * coarse level's 2h on either side of the interface completes both fits'
+ * supports; at a factor 2 it took the solitary wave's reflection from 3.3
+ * to 0.5 % of H (docs/history/2026-11-27-variable-resolution-overlap.md).
  * Mass is not conserved exactly (the flux points are Eulerian); the run
- * reports each level's own mass. Removed particles are parked at rest
+ * reports each level's own mass, the overlap counted up to its middle by
+ * each. Removed particles are parked at rest
  * (WL_SPH_BODY_EXCLUDED) in slots of a rectangle of the level's domain box
  * that holds no water and no wall, and revived for creation; each level is
  * allocated with `spare` of them.
@@ -54,7 +63,8 @@
 struct wl_vres_level_spec {
   const struct wl_sph_config *cfg;    /* its dp, h, walls and domain box */
   const struct wl_particles *initial; /* boundary, then fluid over its range and buffer bands */
-  double own_lo, own_hi;              /* the x range it owns [m]; +-INFINITY: no interface there */
+  double own_lo, own_hi;              /* the x range it owns [m]; +-INFINITY: no interface there;
+                                         the two ranges touch or overlap (above) */
   double park_lo[2], park_hi[2];      /* (x, z) rectangle for parked particles [m] */
   int spare;                          /* parked particles for creation */
 };
@@ -88,7 +98,8 @@ struct wl_sph_sim *wl_vres_level(struct wl_vres *v, int level);
 /* Whether level `level` owns x. */
 int wl_vres_owns(const struct wl_vres *v, int level, double x);
 /* Mass of the fluid (not buffer, not parked) each level holds in its own
- * range, summed [kg, or kg/m in 2D]. */
+ * range, an overlap counted by each level up to its middle, summed [kg, or
+ * kg/m in 2D]. */
 double wl_vres_own_mass(struct wl_vres *v, struct wl_error *err);
 const struct wl_vres_counts *wl_vres_counts(const struct wl_vres *v, int level);
 

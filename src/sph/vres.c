@@ -23,6 +23,7 @@ struct level {
   struct wl_sph_sim *sim;
   const struct wl_sph_const *k;
   double lo, hi, w, dp, h, mass;
+  double mass_lo, mass_hi; /* the part of its range its own mass counts (vres.h overlap) */
   double park_lo[2], park_hi[2];
   int park_nx, park_nz;
   long park_next;
@@ -415,8 +416,22 @@ enum wl_status wl_vres_alloc(struct wl_vres **out, const struct wl_backend_ops *
     st = level_init(v, &v->lv[l], ops, &levels[l], opts, err);
     if (st) wl_error_prefix(err, "vres level %d: ", l);
   }
-  if (!st && !(levels[0].own_hi <= levels[1].own_lo || levels[1].own_hi <= levels[0].own_lo))
-    st = wl_error_set(err, WL_EINPUT, "vres: the levels' ranges overlap");
+  if (!st) { /* side by side, touching or overlapping, neither range inside the other */
+    const int a = levels[0].own_lo <= levels[1].own_lo ? 0 : 1, b = 1 - a;
+    const struct wl_vres_level_spec *la = &levels[a], *lb = &levels[b];
+    if (!(la->own_lo < lb->own_lo && la->own_hi < lb->own_hi && lb->own_lo <= la->own_hi))
+      st = wl_error_set(err, WL_EINPUT, "vres: the levels' ranges [%g, %g] and [%g, %g] m must "
+                        "touch or overlap, neither inside the other", la->own_lo, la->own_hi,
+                        lb->own_lo, lb->own_hi);
+    else if (lb->own_lo - v->lv[b].w < la->own_lo || la->own_hi + v->lv[a].w > lb->own_hi)
+      st = wl_error_set(err, WL_EINPUT, "vres: a level's buffer band reaches beyond the other "
+                        "level's range");
+    else { /* own mass: each level counts the overlap up to its middle */
+      const double mid = 0.5 * (lb->own_lo + la->own_hi);
+      v->lv[a].mass_lo = la->own_lo, v->lv[a].mass_hi = mid;
+      v->lv[b].mass_lo = mid, v->lv[b].mass_hi = lb->own_hi;
+    }
+  }
   if (!st) st = couple(v, 0.0, err);
   if (st) {
     wl_vres_free(v);
@@ -453,7 +468,11 @@ double wl_vres_own_mass(struct wl_vres *v, struct wl_error *err) {
     const struct wl_particles *p = wl_sph_sim_particles(v->lv[l].sim, err);
     if (!p) return NAN;
     long c = 0;
-    for (int i = p->n_bound; i < p->n; i++) c += p->body[i] == 0 && owns(&v->lv[l], p->pos[0][i]);
+    const struct level *L = &v->lv[l];
+    for (int i = p->n_bound; i < p->n; i++) {
+      const double x = p->pos[0][i];
+      c += p->body[i] == 0 && owns(L, x) && x >= L->mass_lo && x < L->mass_hi;
+    }
     m += (double)c * v->lv[l].mass;
   }
   return m;
