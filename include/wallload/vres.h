@@ -33,7 +33,7 @@
  * extrapolating from a cloud on one side. An overlap of at least the
  * coarse level's 2h on either side of the interface completes both fits'
  * supports; at a factor 2 it took the solitary wave's reflection from 3.3
- * to 0.5 % of H (docs/history/2026-11-27-variable-resolution-overlap.md).
+ * to 0.4 % of H (docs/history/2026-11-27-variable-resolution-overlap.md).
  * Mass is not conserved exactly (the flux points are Eulerian); the run
  * reports each level's own mass, the overlap counted up to its middle by
  * each. Removed particles are parked at rest

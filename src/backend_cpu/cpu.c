@@ -337,13 +337,14 @@ static void guard(struct cpu *c, const struct wl_sph_step_in *in, struct wl_sph_
   for (int ch = 0; ch < n_chunks; ch++) {
     const int i0 = ch * WL_CPU_GUARD_CHUNK;
     const int i1 = i0 + WL_CPU_GUARD_CHUNK < n ? i0 + WL_CPU_GUARD_CHUNK : n;
-    for (int i = i0; i < i1 && in; i++) {
-      if (verlet)
-        wl_sph_verlet(dim, &c->k, p, in->dt, in->dt_prev,
-                      (const double(*)[WL_SPH_DIM_MAX])in->body_vel, euler, i);
-      else
-        wl_sph_correct(dim, &c->k, p, in->dt, (const double(*)[WL_SPH_DIM_MAX])in->body_vel, i);
-    }
+    if (in)
+      for (int i = i0; i < i1; i++) {
+        if (verlet)
+          wl_sph_verlet(dim, &c->k, p, in->dt, in->dt_prev,
+                        (const double(*)[WL_SPH_DIM_MAX])in->body_vel, euler, i);
+        else
+          wl_sph_correct(dim, &c->k, p, in->dt, (const double(*)[WL_SPH_DIM_MAX])in->body_vel, i);
+      }
     struct wl_cpu_guard_counts cnt = {n, 0, 0};
     wl_cpu_guard_chunk(&c->k, &c->cfg, p, i0, i1, limiter, in != NULL, &cnt);
     first = cnt.first < first ? cnt.first : first;
