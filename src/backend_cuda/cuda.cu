@@ -9,7 +9,8 @@
  *   sort      counting sort by key in the stable order (a CUB scan that
  *             gives begin[key] = first sorted index of each key,
  *             k_scatter, k_cellsort), then the state fields gathered into
- *             sorted order
+ *             sorted order (in a 2D step k_permute ranks each key's
+ *             range itself, without k_cellsort)
  *   walls     with the wall condition (the default), k_wall: one thread per
  *             boundary particle samples the fluid (sph/wall.h); the force
  *             loops then start at the first fluid particle
@@ -348,7 +349,9 @@ static __device__ __forceinline__ void pdl_begin(void) {
  * k_scatter: each particle into a free slot of its key's range (count
  * counted down to 0 as the fill counter: the order inside a range depends
  * on timing); k_cellsort: each range sorted by previous index, which makes
- * it the stable order again, the same permutation on every run. A cell
+ * it the stable order again, the same permutation on every run (in a 2D
+ * step k_permute takes each particle to its rank in its range instead,
+ * the same permutation, one kernel fewer). A cell
  * holds ~8 particles in 2D and ~30 in 3D, so the ranges are short; this
  * takes a few short kernels where a radix sort of the keys takes two
  * passes of decoupled look-back that run nearly serially at a few ten
@@ -430,12 +433,17 @@ __global__ void k_keys(struct wl_sph_grid g, const double *__restrict__ x,
 
 /* Particle i into a free slot of its key's range of perm, counting its
  * count down (to 0 when all are placed); thread 0 resets the step
- * record. */
+ * record. The first n_bsum block sums go to 0 for the step's update to
+ * count anew, where no k_cellsort follows to do it (a 2D step: k_permute
+ * ranks the ranges itself). */
 __global__ void k_scatter(const unsigned int *__restrict__ key, const int *__restrict__ begin,
-                          int *count, unsigned int *perm, int n, struct dstats *st) {
+                          int *count, unsigned int *perm, int n, int *bsum, int n_bsum,
+                          struct dstats *st) {
   pdl_begin();
   const int i = tid();
-  if (i >= n || st->plan.stop) return;
+  if (st->plan.stop) return;
+  for (int q = i; q < n_bsum; q += gridDim.x * blockDim.x) bsum[q] = 0;
+  if (i >= n) return;
   if (i == 0) {
     st->ace2 = st->vel2 = st->visc = 0ull;
     st->first = 0x7fffffff;
@@ -453,9 +461,10 @@ __global__ void k_scatter(const unsigned int *__restrict__ key, const int *__res
  * round trips made this the step's slowest sort kernel); longer ranges
  * (3D cells hold ~30-40) are left to k_cellsort_warp when `by_warp`, else
  * (2D, where they are rare) sorted here, by insertion in a local array up
- * to CELLSORT_LOCAL and in place beyond. In a step the block sums go to 0
- * for the step's update to count anew (k_update; the scatter left count at
- * 0); a rebuild outside a step (wall_load: the next step sorts the same
+ * to CELLSORT_LOCAL and in place beyond. In a (3D) step the block sums go
+ * to 0 for the step's update to count anew (k_update; the scatter left
+ * count at 0); a 2D step has no k_cellsort (k_permute ranks the ranges,
+ * k_scatter zeroes the block sums); a rebuild outside a step (wall_load: the next step sorts the same
  * state) gives count back. */
 enum { CELLSORT_REG = 16, CELLSORT_LOCAL = 48, CELLSORT_WARP = 64 };
 __global__ void k_cellsort(const int *__restrict__ begin, unsigned int *perm, int n_keys,
@@ -561,13 +570,23 @@ struct permute_args {
   wl_real *vel_m1_d[WL_SPH_DIM_MAX], *rho_m1_d;
 };
 
-template <int DIM>
+/* RANK = 0: perm sorted (k_cellsort), sorted slot s takes particle
+ * perm[s]. RANK = 1: perm as k_scatter left it, each key's range in the
+ * order of the atomics; slot s's particle j goes to its place in the
+ * stable order, the range's start plus the entries of the range smaller
+ * than j (the indices are distinct): k_cellsort's permutation without its
+ * kernel. A 2D range holds ~8 entries, so the count costs a few loads
+ * that hit the lines the range's other threads load, against a whole
+ * kernel's latencies in the step's chain: a Verlet step of the 2D flume of
+ * 22 600 particles 41.0 to 39.5 us on the H100 (BENCHMARKS.md, "Ranks in
+ * the permutation"). */
+template <int DIM, int RANK>
 __global__ void k_permute(struct permute_args a, struct wl_sph_const k, int n,
-                          const struct dstats *st) {
+                          const int *__restrict__ begin, const struct dstats *st) {
   pdl_begin();
-  const int s = tid();
-  if (s >= n || st->plan.stop) return;
-  const int j = (int)a.perm[s];
+  const int t = tid();
+  if (t >= n || st->plan.stop) return;
+  const int j = (int)a.perm[t];
   /* every load before the first store: the arrays may alias for all the
    * compiler knows, and a store between two loads would keep them apart */
   const unsigned key = a.key[j], id = a.id[j];
@@ -582,6 +601,13 @@ __global__ void k_permute(struct permute_args a, struct wl_sph_const k, int n,
   if (a.rho_m1) {
     for (int c = 0; c < DIM; c++) vel_m1[c] = a.vel_m1[c][j];
     rho_m1 = a.rho_m1[j];
+  }
+  int s = t;
+  if (RANK) {
+    const int b = begin[key], e = begin[key + 1];
+    int r = 0;
+    for (int q = b; q < e; q++) r += a.perm[q] < (unsigned)j;
+    s = b + r;
   }
   a.key_d[s] = key;
   for (int c = 0; c < DIM; c++) {
@@ -1422,7 +1448,8 @@ static __device__ void end_step(const struct wl_sph_const *k, const struct wl_pa
 /* The update (when update != 0: the corrector, or the Verlet step with
  * its Euler flag, as planned) and guard, the lowest faulty index; then
  * each particle's key of its new position and the particles per key
- * (count, zeroed by the step's k_cellsort), for the next step's sort; and
+ * (count, which the step's k_scatter left at 0, and the block sums, which
+ * k_cellsort, or in 2D k_scatter, zeroed), for the next step's sort; and
  * the end of the step (end_step) by the block that finishes last, so that
  * a step needs no one-thread kernel of its own. The wall faces are read
  * from shared memory (the limiter tests every face; the guard only where
@@ -1594,13 +1621,18 @@ static enum wl_status rebuild(struct gpu *c, int how, struct wl_error *err) {
   launch(c, k_scan, scan_blocks(n_keys + 1), SCAN_THREADS, c->stream, c->count, c->bsum, c->begin,
          n_keys + 1, c->stats);
   CKL("scan");
+  /* a 2D step ranks each range in k_permute (its ranges are short); 3D
+   * cells are long, and a rebuild outside a step gives the counts back:
+   * k_cellsort there, and 3D's long ranges one warp each */
+  const int rank = dim == 2 && (how & REBUILD_STEP);
   launch(c, k_scatter, blocks(n), THREADS, c->stream, c->key, c->begin, c->count, perm, n,
-         c->stats);
+         c->bsum, rank ? scan_blocks(n_keys) : 0, c->stats);
   CKL("scatter");
-  /* 3D cells are long: their ranges go one warp each */
-  launch(c, k_cellsort, blocks(n_keys), THREADS, c->stream, c->begin, perm, n_keys, c->count,
-         c->bsum, (how & REBUILD_STEP) != 0, dim == 3, c->stats);
-  CKL("cell sort");
+  if (!rank) {
+    launch(c, k_cellsort, blocks(n_keys), THREADS, c->stream, c->begin, perm, n_keys, c->count,
+           c->bsum, (how & REBUILD_STEP) != 0, dim == 3, c->stats);
+    CKL("cell sort");
+  }
   if (dim == 3) {
     launch(c, k_cellsort_warp, (int)(((long)n_keys * 32 + THREADS - 1) / THREADS), THREADS,
            c->stream, c->begin, perm, n_keys, c->stats);
@@ -1635,9 +1667,11 @@ static enum wl_status rebuild(struct gpu *c, int how, struct wl_error *err) {
     a.rho_m1_d = c->rho_m1_alt;
   }
   if (dim == 3)
-    launch(c, k_permute<3>, blocks(n), THREADS, c->stream, a, c->k, n, c->stats);
+    launch(c, k_permute<3, 0>, blocks(n), THREADS, c->stream, a, c->k, n, c->begin, c->stats);
+  else if (rank)
+    launch(c, k_permute<2, 1>, blocks(n), THREADS, c->stream, a, c->k, n, c->begin, c->stats);
   else
-    launch(c, k_permute<2>, blocks(n), THREADS, c->stream, a, c->k, n, c->stats);
+    launch(c, k_permute<2, 0>, blocks(n), THREADS, c->stream, a, c->k, n, c->begin, c->stats);
   CKL("permute");
   {
     wl_real *t = (wl_real *)c->key;
