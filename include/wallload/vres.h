@@ -34,6 +34,8 @@
  * coarse level's 2h on either side of the interface completes both fits'
  * supports; at a factor 2 it took the solitary wave's reflection from 3.3
  * to 0.4 % of H (docs/history/2026-11-27-variable-resolution-overlap.md).
+ * wl_vres_layout lays two levels out by that rule (one coarse band on
+ * either side by default), so that every caller overlaps them alike.
  * Mass is not conserved exactly (the flux points are Eulerian); the run
  * reports each level's own mass, the overlap counted up to its middle by
  * each. Removed particles are parked at rest
@@ -71,6 +73,9 @@ struct wl_vres_level_spec {
 
 struct wl_vres_opts {
   double buffer_h; /* buffer width in h of its level (0: 2, DualSPHysics' default) */
+  double overlap;  /* wl_vres_layout: the ranges overlap by this many of the coarse level's band
+                      widths on either side of the interface (0: 1, the measured choice above;
+                      < 0: the ranges touch) */
   double z_bed;    /* the flat bed under the flux points [m] */
   double z_top;    /* the highest the water may reach at a band's far edge [m] */
   double shift;    /* > 0: shift buffer particles along the interface (sph/shift.h's A) */
@@ -83,6 +88,20 @@ struct wl_vres_counts {
 };
 
 struct wl_vres;
+
+/* Where two levels side by side in x, coarse (dp_coarse) on x < x_if and
+ * fine beyond, own water, and how far each level's water must be laid for
+ * its band (the overlap rule above; each band in whole rows of its level,
+ * buffer_h of its h wide). h_over_dp: the levels' common h / dp. Either
+ * side may be the fine one: fine_right says which. */
+struct wl_vres_layout {
+  double own_lo[2], own_hi[2];     /* level 0 coarse, 1 fine: the x range it owns [m] */
+  double water_lo[2], water_hi[2]; /* the x range to fill with its water: range and band [m] */
+  double band[2];                  /* each level's band width [m] */
+  double overlap;                  /* on either side of x_if [m] */
+};
+void wl_vres_layout(double x_if, double dp_coarse, double dp_fine, double h_over_dp,
+                    int fine_right, const struct wl_vres_opts *opts, struct wl_vres_layout *out);
 
 enum wl_status wl_vres_alloc(struct wl_vres **out, const struct wl_backend_ops *ops, int n_levels,
                              const struct wl_vres_level_spec *levels,

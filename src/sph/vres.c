@@ -337,6 +337,12 @@ static enum wl_status with_spares(struct level *L, const struct wl_particles *in
   return WL_OK;
 }
 
+/* A band's width: whole rows of its level, at least buffer_h of its h. */
+static double band_width(const struct wl_vres_opts *o, double h, double dp) {
+  const double bh = o && o->buffer_h > 0 ? o->buffer_h : 2.0;
+  return ceil(bh * h / dp - 1e-9) * dp;
+}
+
 static enum wl_status level_init(struct wl_vres *v, struct level *L, const struct wl_backend_ops *ops,
                                  const struct wl_vres_level_spec *s, const struct wl_vres_opts *o,
                                  struct wl_error *err) {
@@ -361,8 +367,7 @@ static enum wl_status level_init(struct wl_vres *v, struct level *L, const struc
   if (st) return st;
   L->lo = s->own_lo, L->hi = s->own_hi;
   L->dp = prm->dp, L->h = (double)k.h, L->mass = (double)k.mass;
-  const double bh = o && o->buffer_h > 0 ? o->buffer_h : 2.0;
-  L->w = ceil(bh * L->h / L->dp - 1e-9) * L->dp; /* whole rows of its lattice */
+  L->w = band_width(o, L->h, L->dp);
   memcpy(L->park_lo, s->park_lo, sizeof L->park_lo);
   memcpy(L->park_hi, s->park_hi, sizeof L->park_hi);
   const double slot = 2.2 * L->h; /* slots out of each other's reach */
@@ -397,6 +402,19 @@ static enum wl_status level_init(struct wl_vres *v, struct level *L, const struc
   if (st) return st;
   L->k = wl_sph_sim_const(L->sim);
   return WL_OK;
+}
+
+void wl_vres_layout(double x_if, double dp_coarse, double dp_fine, double h_over_dp,
+                    int fine_right, const struct wl_vres_opts *opts, struct wl_vres_layout *out) {
+  const double dp[2] = {dp_coarse, dp_fine};
+  for (int l = 0; l < 2; l++) out->band[l] = band_width(opts, h_over_dp * dp[l], dp[l]);
+  const double ov = opts && opts->overlap < 0 ? 0.0 : (opts && opts->overlap > 0 ? opts->overlap : 1.0);
+  out->overlap = ov * out->band[0];
+  const int right = fine_right ? 1 : 0, left = 1 - right; /* the level on x > x_if, and the other */
+  out->own_lo[left] = -INFINITY, out->own_hi[left] = x_if + out->overlap;
+  out->own_lo[right] = x_if - out->overlap, out->own_hi[right] = INFINITY;
+  out->water_lo[left] = -INFINITY, out->water_hi[left] = out->own_hi[left] + out->band[left];
+  out->water_lo[right] = out->own_lo[right] - out->band[right], out->water_hi[right] = INFINITY;
 }
 
 enum wl_status wl_vres_alloc(struct wl_vres **out, const struct wl_backend_ops *ops, int n_levels,
