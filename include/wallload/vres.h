@@ -44,7 +44,7 @@
  * allocated with `spare` of them.
  *
  * Limits of this stage: 2D, two levels, the interface a vertical line, a
- * flat bed under the flux points (z_bed), the symplectic integrator, a
+ * flat bed under the flux points (z_bed), a
  * backend with upload (the CPU backend); no loads, gauges or outputs of its
  * own: the caller reads each level (wl_vres_level) in the range it owns. */
 #ifndef WALLLOAD_VRES_H

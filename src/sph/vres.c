@@ -349,9 +349,6 @@ static enum wl_status level_init(struct wl_vres *v, struct level *L, const struc
   const struct wl_sph_params *prm = &s->cfg->prm;
   if (prm->dim != 2)
     return wl_error_set(err, WL_EUNSUPPORTED, "vres: %dD; this stage couples 2D levels", prm->dim);
-  if (prm->integrator != WL_SPH_SYMPLECTIC)
-    return wl_error_set(err, WL_EUNSUPPORTED, "vres: the levels step with the symplectic "
-                        "integrator (buffers hold their values through its two halves)");
   if (!ops->upload)
     return wl_error_set(err, WL_EUNSUPPORTED, "vres: the %s backend cannot take edited particles "
                         "back (backend.h upload)", ops->name);

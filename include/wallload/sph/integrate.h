@@ -177,6 +177,16 @@ WL_HD static WL_INLINE void wl_sph_verlet(const int dim, const struct wl_sph_con
                                           const double (*body_vel)[WL_SPH_DIM_MAX], int euler,
                                           int i) {
   if (p->kind[i] == WL_KIND_FLUID && p->body[i] == WL_SPH_BODY_EXCLUDED) return; /* guard.h */
+  if (p->kind[i] == WL_KIND_FLUID && p->body[i] == WL_SPH_BODY_BUFFER) { /* particles.h */
+    /* moved with its (fitted) velocity; its v and rho are also the previous
+     * ones, which the Verlet step reads once it joins the fluid */
+    p->rho_h[i] = p->rho[i];
+    for (int a = 0; a < dim; a++) {
+      p->vel_h[a][i] = p->vel[a][i];
+      p->pos[a][i] += dt * (double)p->vel[a][i];
+    }
+    return;
+  }
   const wl_real span = (wl_real)(euler ? dt : dt_prev + dt);
   const wl_real rho_n = p->rho[i];
   const wl_real rho = (euler ? rho_n : p->rho_h[i]) + span * p->ar[i];
