@@ -43,10 +43,13 @@
  * that holds no water and no wall, and revived for creation; each level is
  * allocated with `spare` of them.
  *
+ * Either integrator: buffer particles move with their fitted velocity
+ * under both (sph/integrate.h).
+ *
  * Limits of this stage: 2D, two levels, the interface a vertical line, a
- * flat bed under the flux points (z_bed), a
- * backend with upload (the CPU backend); no loads, gauges or outputs of its
- * own: the caller reads each level (wl_vres_level) in the range it owns. */
+ * flat bed under the flux points (z_bed), a backend with upload (the CPU
+ * backend); no loads, gauges or outputs of its own: the caller reads each
+ * level (wl_vres_level) in the range it owns. */
 #ifndef WALLLOAD_VRES_H
 #define WALLLOAD_VRES_H
 
