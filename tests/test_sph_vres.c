@@ -166,9 +166,10 @@ static double wave_dp(const double *x, void *user) {
 
 /* CPU threads of each level's run (WL_VRES_THREADS; 1 when unset, so that
  * two runs share the 2-core machine). */
+static int g_threads = 0; /* > 0: overrides WL_VRES_THREADS (threads_same) */
 static int threads(void) {
   const char *s = getenv("WL_VRES_THREADS");
-  return s && atoi(s) > 0 ? atoi(s) : 1;
+  return g_threads > 0 ? g_threads : s && atoi(s) > 0 ? atoi(s) : 1;
 }
 
 /* The levels' integrator (vres.h: either; buffer particles move with
@@ -784,12 +785,64 @@ static int crossing(void) {
   return 0;
 }
 
+/* The coupled flume's state after 0.15 s (the wave's crest 0.3 m from the
+ * interface at the start, its front across the bands) on 1 and on 2 threads:
+ * the same bits (the fits run side by side, their use in particle order;
+ * the CPU backend's steps are thread-count independent, test_sph_threads). */
+static int threads_same(void) {
+  struct wl_error err;
+  wl_error_clear(&err);
+  struct wave_ic w;
+  memset(&w, 0, sizeof w);
+  w.crest = FL_X_IF - 0.3;
+  w.depth = FL_H;
+  if (wl_waves_solitary_init(&w.sw, WL_SOLITARY_GRIMSHAW, FL_H, 0.4 * FL_H, 9.81, &err)) return 1;
+  double *state[2] = {NULL, NULL};
+  size_t len[2] = {0, 0};
+  for (int run = 0; run < 2; run++) {
+    g_threads = run + 1;
+    struct wl_vres_opts o = {0};
+    o.z_bed = 0;
+    o.z_top = FL_H * 1.8;
+    o.shift = VRES_SHIFT;
+    struct wl_vres *v;
+    if (coupled(&flume, 0.04, 0.02, FL_X_IF, &w, &o, 600, &v)) return 1;
+    enum wl_status st = WL_OK;
+    while (st == WL_OK && wl_vres_time(v) < 0.15) st = wl_vres_step(v, 0.15 - wl_vres_time(v), &err);
+    CHECK_TRUE(st == WL_OK, "the coupled flume runs on 1 and 2 threads");
+    size_t n = 0;
+    for (int l = 0; l < 2; l++) n += 5 * (size_t)wl_sph_sim_particles(wl_vres_level(v, l), &err)->n;
+    state[run] = malloc(sizeof(double) * n);
+    len[run] = n;
+    size_t q = 0;
+    for (int l = 0; l < 2 && state[run]; l++) {
+      const struct wl_particles *p = wl_sph_sim_particles(wl_vres_level(v, l), &err);
+      for (int i = 0; i < p->n; i++) {
+        state[run][q++] = p->pos[0][i];
+        state[run][q++] = p->pos[1][i];
+        state[run][q++] = (double)p->vel[0][i];
+        state[run][q++] = (double)p->vel[1][i];
+        state[run][q++] = (double)p->rho[i];
+      }
+    }
+    wl_vres_free(v);
+  }
+  g_threads = 0;
+  CHECK_TRUE(state[0] && state[1] && len[0] == len[1] &&
+                 !memcmp(state[0], state[1], sizeof(double) * len[0]),
+             "1 and 2 threads: the same particles, positions, velocities and densities, bit for "
+             "bit");
+  free(state[0]);
+  free(state[1]);
+  return 0;
+}
+
 int main(int argc, char **argv) {
   const char *mode = argc > 1 ? argv[1] : "suite";
   g_verlet = getenv("WL_VRES_VERLET") && atoi(getenv("WL_VRES_VERLET")) > 0;
   if (getenv("WL_VRES_T_END") && atof(getenv("WL_VRES_T_END")) > 0) g_t_end = atof(getenv("WL_VRES_T_END"));
   if (!strcmp(mode, "quick")) {
-    if (fit() || layout() || still(2, 0)) return 1;
+    if (fit() || layout() || still(2, 0) || threads_same()) return 1;
   } else if (!strcmp(mode, "suite")) {
     if (fit() || layout() || crossing()) return 1;
   } else if (!strcmp(mode, "still")) {

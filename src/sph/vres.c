@@ -3,6 +3,7 @@
  * copies (wl_sph_sim_edit / _commit): classification, the buffers' fit from
  * the other level, their shifting, removal and creation. */
 #include <math.h>
+#include <omp.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -19,8 +20,17 @@ struct donor_grid {
   int n, cap_cells, cap_idx;
 };
 
+/* A buffer particle's fit from the other level (fit_at). */
+struct fit_out {
+  double val[3], wet;
+  int r;
+};
+
 struct level {
   struct wl_sph_sim *sim;
+  int threads;             /* the level's CPU threads, for the coupling's per-particle loops */
+  struct fit_out *fits;    /* per particle, refill's first pass */
+  int fits_cap;
   const struct wl_sph_const *k;
   double lo, hi, w, dp, h, mass;
   double mass_lo, mass_hi; /* the part of its range its own mass counts (vres.h overlap) */
@@ -54,6 +64,7 @@ void wl_vres_free(struct wl_vres *v) {
     free(L->pt_z);
     free(L->pt_n);
     free(L->acc);
+    free(L->fits);
     grid_free(&L->grid);
   }
   free(v);
@@ -245,21 +256,36 @@ static void classify(struct level *L, struct wl_particles *p) {
  * points' creation. */
 static enum wl_status refill(struct level *L, struct wl_particles *p, const struct level *D,
                              const struct wl_particles *pd, double dt, struct wl_error *err) {
-  double val[3], wet;
-  for (int i = p->n_bound; i < p->n; i++) {
+  /* the fits first, side by side (each reads the donor level only), then
+   * their use in particle order (parking counts its slots): the same bits
+   * on any number of threads */
+  if (p->n > L->fits_cap) {
+    free(L->fits);
+    L->fits = malloc(sizeof *L->fits * (size_t)p->n);
+    L->fits_cap = L->fits ? p->n : 0;
+    if (!L->fits) return wl_error_set(err, WL_ENOMEM, "vres: out of memory for %d fits", p->n);
+  }
+  struct fit_out *fits = L->fits;
+  const int n = p->n, n_bound = p->n_bound;
+#pragma omp parallel for schedule(dynamic, 64) num_threads(L->threads)
+  for (int i = n_bound; i < n; i++)
+    if (p->body[i] == WL_SPH_BODY_BUFFER)
+      fits[i].r = fit_at(D, pd, p->pos[0][i], p->pos[1][i], fits[i].val, &fits[i].wet);
+  for (int i = n_bound; i < n; i++) {
     if (p->body[i] != WL_SPH_BODY_BUFFER) continue;
-    const int r = fit_at(D, pd, p->pos[0][i], p->pos[1][i], val, &wet);
-    if (r < 0 || wet < WL_VRES_DRY_MAX) {
+    const struct fit_out *f = &fits[i];
+    if (f->r < 0 || f->wet < WL_VRES_DRY_MAX) {
       park(L, p, i);
       L->cnt.removed++;
       continue;
     }
-    p->rho[i] = (wl_real)val[0];
-    p->vel[0][i] = (wl_real)val[1];
-    p->vel[1][i] = (wl_real)val[2];
-    if (r == 1) L->cnt.fitted++;
+    p->rho[i] = (wl_real)f->val[0];
+    p->vel[0][i] = (wl_real)f->val[1];
+    p->vel[1][i] = (wl_real)f->val[2];
+    if (f->r == 1) L->cnt.fitted++;
     else L->cnt.shepard++;
   }
+  double val[3], wet;
   int cursor = p->n_bound;
   int near[WL_VRES_NEIGHBOURS_MAX]; /* the level's particles near a new one's place */
   double near_r2[WL_VRES_NEIGHBOURS_MAX];
@@ -365,6 +391,7 @@ static enum wl_status level_init(struct wl_vres *v, struct level *L, const struc
   L->lo = s->own_lo, L->hi = s->own_hi;
   L->dp = prm->dp, L->h = (double)k.h, L->mass = (double)k.mass;
   L->w = band_width(o, L->h, L->dp);
+  L->threads = s->cfg->n_threads > 0 ? s->cfg->n_threads : omp_get_max_threads();
   memcpy(L->park_lo, s->park_lo, sizeof L->park_lo);
   memcpy(L->park_hi, s->park_hi, sizeof L->park_hi);
   const double slot = 2.2 * L->h; /* slots out of each other's reach */
