@@ -1,19 +1,24 @@
 /* test_sph_vres.c: variable resolution by coupled subdomains (vres.h,
  * issue 19 stage A), 2D, CPU backend, default numerics (plan.h
- * wl_plan_default_numerics).
+ * wl_plan_default_numerics; Verlet where a mode says).
  *
- * still: a tank L = 1 m, h = 0.5 m, coarse dp = 0.05 m on x < 0.5 m and
- * fine dp = 0.025 m on x > 0.5 m (the ranges overlap by the coarse band's
- * width, 0.2 m, on either side: g_overlap), run 20 sqrt(h/g). References (issue 19):
- * hydrostatics (rho0 g depth) for the pressure on either side of the
- * interface, which must agree within 1 % of it; the mass each level holds
- * in its own range, conserved to 1e-6 relative (issue 19); the largest
- * speed, below 1 % of sqrt(g h) (issue 19), printed beside the same tank
- * at uniform dp 0.05 and 0.025 m, which do not reach it either (3.4-3.9 %,
- * reference/RESULTS.md hydrostatic). Mode still: what holds (pressure,
- * mass within the particles removal and creation quantise, a stable run);
- * mode still-issue (label accuracy): issue 19's mass and speed bars, which
- * this stage does not reach, with the uniform runs beside them. */
+ * Modes (first argument):
+ *  quick (every build): the corrected fit against linear fields; the
+ *    layout rule against values worked by hand; the still tank below
+ *    through 2 sqrt(h/g) (classification, fit, shifting; a stable run);
+ *    a wave entering the bands on 1 and on 2 threads, the same bits.
+ *  suite (label long): the fit, and a solitary wave crossing into the fine
+ *    level with either integrator (creation runs, own mass within 1 %).
+ *  still (label accuracy): a tank L = 1 m, h = 0.5 m, coarse dp = 0.05 m on
+ *    x < 0.5 m and fine dp = 0.025 m beyond (the ranges overlapping by
+ *    wl_vres_layout's rule), run 20 sqrt(h/g), against issue 19's bars:
+ *    hydrostatic pressure (rho0 g depth) continuous across the interface
+ *    within 1 % of it (met); the mass each level holds in its own range
+ *    conserved to 1e-6, and the largest speed below 1 % of sqrt(g h) (not
+ *    met: the same tank at uniform dp 0.05 and 0.025 m, printed beside it,
+ *    reads 2.2-2.5 %, reference/RESULTS.md hydrostatic, issue 17).
+ *  solitary (label accuracy), refs: below, at "a solitary wave across the
+ *    interface and back". */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
