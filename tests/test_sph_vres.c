@@ -407,8 +407,9 @@ static int still(double periods, int strict) {
  * factor 2 with the coarse level at 4 particles a wave height (H/h 0.4,
  * fine rows 20) the crest at G2 reads +1.7 % of H, as the coarse level's
  * wave is above the fine one's at the interface; at 8 (fine rows 40) +0.9
- * %. The two-sided bar is kept: issue 19 words it as height lost, and a
- * wave that arrives too high is as wrong a load. */
+ * %, and the return into the coarse level +1.3 %. The two-sided bar is
+ * kept: issue 19 words it as height lost, and a wave that arrives too high
+ * is as wrong a load. */
 
 #define FL_H 0.2     /* still water [m] */
 #define FL_L 5.5     /* wall to wall [m] */
