@@ -96,6 +96,14 @@ struct wl_flume {
 enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan *plan,
                               enum wl_load_case load, struct wl_flume *f, struct wl_error *err);
 
+/* Keep of f's particles the fluid with fluid_lo <= x < fluid_hi and the
+ * boundary particles within margin of that range [m], ids renumbered in
+ * order: one level of a two-resolution run (vres.h), whose flume is built
+ * whole at the level's dp and then cut to the water it simulates. WL_EINPUT
+ * when no fluid is left; WL_ENOMEM (f unchanged). */
+enum wl_status wl_flume_crop(struct wl_flume *f, double fluid_lo, double fluid_hi, double margin,
+                             struct wl_error *err);
+
 /* Free what a flume owns; safe on a zeroed flume. */
 void wl_flume_clear(struct wl_flume *f);
 

@@ -137,6 +137,13 @@ struct wl_plan {
   double gpu_case_seconds[2];       /* each case alone on the GPU; gpu_seconds is
                                        the cases side by side, as assess runs them */
   double gpu_case_work_seconds[2];
+  /* resolution.refine (vres.h): two levels, dp from refine_from to the
+   * wall, dp_coarse = 2 dp seaward of it, laid out by wl_vres_layout */
+  int refine;
+  double refine_from;               /* the interface [m] */
+  double dp_coarse;                 /* the coarse level's spacing [m] */
+  double refine_overlap, refine_band[2]; /* wl_vres_layout's overlap and bands (coarse, fine) [m] */
+  double uniform_particle_steps;    /* all cases at dp everywhere, for the saving `check` prints */
   int n_notes;
   char notes[WL_PLAN_MAX_NOTES][320]; /* warnings and assumptions worth reading */
 };

@@ -79,6 +79,12 @@ enum wl_status wl_sample_alloc(struct wl_sample **s, const struct wl_flume *f,
 /* Free a sampler; NULL is accepted. */
 void wl_sample_free(struct wl_sample *s);
 
+/* Sum the energies and momentum over the fluid particles with x_lo <= x <
+ * x_hi [m] that take part in the run (neither parked nor in a buffer band,
+ * vres.h) only: one level of a two-resolution run, each level counting the
+ * water it owns. By default every fluid particle counts. */
+void wl_sample_set_range(struct wl_sample *s, double x_lo, double x_hi);
+
 /* Sample particle state p (kernel constants k; p is indexed and kept by
  * pointer until the next call) at time t [s] into a new row of r: gauges,
  * probe pressures, probe force and moment, energies and momentum. Gauges

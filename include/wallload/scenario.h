@@ -140,6 +140,10 @@ struct wl_scenario {
     int n_levels;
     struct wl_scenario_value levels[WL_SCENARIO_MAX_LEVELS];
     int levels_given;
+    struct {
+      int present;
+      struct wl_scenario_value from; /* the fine level's seaward end [m] (vres.h) */
+    } refine;
   } resolution;
   struct {
     struct wl_scenario_value end_time, output_interval, backend, threads;

@@ -118,7 +118,7 @@ enum wl_status wl_store_attr_double(struct wl_store *store, const char *path, co
 struct wl_snapshot_ref {
   double time;   /* [s] */
   size_t n;      /* particles */
-  char group[96];/* HDF5 group holding position (n x 3), velocity (n x 3), rho, p, kind */
+  char group[96];/* HDF5 group holding position (n x 3), velocity (n x 3), rho, p, dp, kind */
 };
 
 /* Write the XDMF index `xmf_path` (atomically) that refers to the snapshot

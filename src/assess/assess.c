@@ -37,6 +37,14 @@ static int stop_signal(const struct wl_assess_opts *opts) {
 }
 
 /* State of one running case, seen by the output callback. */
+/* The coarse level of a two-resolution case and what wl_vres_alloc takes
+ * (levels.c); the fine level is the case's flume. */
+struct case_levels {
+  struct wl_flume coarse;
+  struct wl_vres_level_spec spec[2];
+  struct wl_vres_opts vo;
+};
+
 struct run_ctx {
   struct wl_case_result *c;
   const struct wl_assess_opts *opts;
@@ -45,6 +53,11 @@ struct run_ctx {
   struct wl_snapshot_ref *refs;
   size_t n_refs, cap_refs;
   double next_snapshot, snapshot_interval;
+  /* two resolutions (levels.c): the coarse level's sampler, and a scratch
+   * record for its row; the fine level's is `sample` */
+  struct wl_sample *sample_coarse;
+  struct wl_record row_coarse;
+  double x_interface;
 };
 
 static double now_s(void) {
@@ -53,8 +66,11 @@ static double now_s(void) {
   return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+/* A snapshot of p at time t; dp_of: each particle's spacing [m], or NULL
+ * for k's. */
 static enum wl_status write_snapshot(struct run_ctx *rc, const struct wl_particles *p,
-                                    const struct wl_sph_const *k, double t, struct wl_error *err) {
+                                    const struct wl_sph_const *k, const float *dp_of, double t,
+                                    struct wl_error *err) {
   if (rc->n_refs == rc->cap_refs) {
     size_t cap = rc->cap_refs ? 2 * rc->cap_refs : 32;
     struct wl_snapshot_ref *b = realloc(rc->refs, cap * sizeof *b);
@@ -69,10 +85,10 @@ static enum wl_status write_snapshot(struct run_ctx *rc, const struct wl_particl
   size_t n = (size_t)p->n;
   double *pos = malloc(3 * n * sizeof *pos);
   float *vel = malloc(3 * n * sizeof *vel), *rho = malloc(n * sizeof *rho),
-        *prs = malloc(n * sizeof *prs);
+        *prs = malloc(n * sizeof *prs), *dps = malloc(n * sizeof *dps);
   int *kind = malloc(n * sizeof *kind);
   enum wl_status st = WL_OK;
-  if (!pos || !vel || !rho || !prs || !kind) {
+  if (!pos || !vel || !rho || !prs || !dps || !kind) {
     st = wl_error_set(err, WL_ENOMEM, "snapshots: no memory for %zu particles", n);
   } else {
     for (size_t i = 0; i < n; i++) {
@@ -88,6 +104,7 @@ static enum wl_status write_snapshot(struct run_ctx *rc, const struct wl_particl
       }
       rho[i] = (float)p->rho[i];
       prs[i] = (float)wl_sph_eos_p(k, p->rho[i]);
+      dps[i] = dp_of ? dp_of[i] : (float)k->dp;
       kind[i] = p->kind[i];
     }
     char path[160];
@@ -107,6 +124,11 @@ static enum wl_status write_snapshot(struct run_ctx *rc, const struct wl_particl
       st = wl_store_write_vector_f(rc->snaps, path, prs, n, "Pa", "pressure (Tait EOS)", err);
     }
     if (!st) {
+      snprintf(path, sizeof path, "%s/dp", r->group);
+      st = wl_store_write_vector_f(rc->snaps, path, dps, n, "m", "particle spacing of its level",
+                                   err);
+    }
+    if (!st) {
       snprintf(path, sizeof path, "%s/kind", r->group);
       st = wl_store_write_vector_i(rc->snaps, path, kind, n, "0 fluid, 1 fixed, 2 moving", err);
     }
@@ -117,7 +139,7 @@ static enum wl_status write_snapshot(struct run_ctx *rc, const struct wl_particl
     /* to the disk now: a full disk stops the run here, not at its end */
     if (!st) st = wl_store_flush(rc->snaps, err);
   }
-  free(pos), free(vel), free(rho), free(prs), free(kind);
+  free(pos), free(vel), free(rho), free(prs), free(dps), free(kind);
   if (!st) rc->n_refs++;
   return st;
 }
@@ -133,10 +155,163 @@ static enum wl_status on_output(void *user, struct wl_sph_sim *sim, double t,
   enum wl_status st = wl_sample_sim(rc->sample, sim, p, t, &rc->c->rec, err);
   if (st) return st;
   if (rc->snaps && t >= rc->next_snapshot - 1e-12) {
-    if ((st = write_snapshot(rc, p, wl_sph_sim_const(sim), t, err))) return st;
+    if ((st = write_snapshot(rc, p, wl_sph_sim_const(sim), NULL, t, err))) return st;
     rc->next_snapshot += rc->snapshot_interval;
   }
   return WL_OK;
+}
+
+/* Both levels' particles that take part in the run (not parked), each
+ * with its level's dp, as one snapshot. */
+static enum wl_status levels_snapshot(struct run_ctx *rc, struct wl_vres *v, double t,
+                                      struct wl_error *err) {
+  const struct wl_particles *p[2];
+  int n = 0;
+  for (int l = 0; l < 2; l++) {
+    if (!(p[l] = wl_sph_sim_particles(wl_vres_level(v, l), err))) return err->status;
+    for (int i = 0; i < p[l]->n; i++) n += p[l]->body[i] != WL_SPH_BODY_EXCLUDED;
+  }
+  struct wl_particles m;
+  enum wl_status st = wl_particles_alloc(&m, 2, n, 0, err);
+  float *dp_of = malloc((size_t)(n > 0 ? n : 1) * sizeof *dp_of);
+  if (!st && !dp_of) st = wl_error_set(err, WL_ENOMEM, "snapshots: no memory");
+  if (!st) {
+    int k = 0;
+    for (int l = 0; l < 2; l++) {
+      const float dp = (float)wl_sph_sim_const(wl_vres_level(v, l))->dp;
+      for (int i = 0; i < p[l]->n; i++) {
+        if (p[l]->body[i] == WL_SPH_BODY_EXCLUDED) continue;
+        for (int a = 0; a < 2; a++) m.pos[a][k] = p[l]->pos[a][i], m.vel[a][k] = p[l]->vel[a][i];
+        m.rho[k] = p[l]->rho[i];
+        m.kind[k] = p[l]->kind[i];
+        m.body[k] = p[l]->body[i];
+        dp_of[k++] = dp;
+      }
+    }
+    m.n = n;
+    st = write_snapshot(rc, &m, wl_sph_sim_const(wl_vres_level(v, 1)), dp_of, t, err);
+  }
+  free(dp_of);
+  wl_particles_clear(&m);
+  return st;
+}
+
+/* One output of a two-resolution run: the fine level's row (wall, probes,
+ * the gauges it owns), the coarse level's gauges seaward of the interface,
+ * and the energies and momentum of the water each level owns. */
+static enum wl_status levels_output(struct run_ctx *rc, struct wl_vres *v, double t,
+                                    struct wl_error *err) {
+  if (rc->opts->interrupted && *rc->opts->interrupted)
+    return wl_error_set(err, WL_EINTERRUPTED, "interrupted by %s while stepping, at t = %.4f s",
+                        wl_assess_stop_signal_name((int)*rc->opts->interrupted), t);
+  struct wl_sph_sim *fine = wl_vres_level(v, 1), *coarse = wl_vres_level(v, 0);
+  const struct wl_particles *pf = wl_sph_sim_particles(fine, err);
+  if (!pf) return err->status ? err->status : WL_EIO;
+  struct wl_record *r = &rc->c->rec;
+  enum wl_status st = wl_sample_sim(rc->sample, fine, pf, t, r, err);
+  if (st) return st;
+  const struct wl_particles *pc = wl_sph_sim_particles(coarse, err);
+  if (!pc) return err->status ? err->status : WL_EIO;
+  struct wl_record *rq = &rc->row_coarse;
+  rq->n = 0;
+  const struct wl_sph_config *cc = wl_sph_sim_config(coarse);
+  if ((st = wl_sample_state(rc->sample_coarse, pc, wl_sph_sim_const(coarse), cc->hi[1], t, rq,
+                            err)))
+    return st;
+  const size_t row = r->n - 1;
+  const struct wl_flume *f = &rc->c->flume;
+  for (int g = 0; g < f->n_gauges; g++)
+    if (f->gauge_x[g] < rc->x_interface)
+      r->eta[row * (size_t)r->n_gauges + (size_t)g] = rq->eta[g];
+  r->kinetic[row] += rq->kinetic[0];
+  r->potential[row] += rq->potential[0];
+  r->momentum[row] += rq->momentum[0];
+  if (rc->snaps && t >= rc->next_snapshot - 1e-12) {
+    if ((st = levels_snapshot(rc, v, t, err))) return st;
+    rc->next_snapshot += rc->snapshot_interval;
+  }
+  return WL_OK;
+}
+
+/* Step the two levels of a case (levels.c) to its end, sampling every
+ * output_dt, as wl_sph_sim_run does for one. */
+static enum wl_status run_levels(struct run_ctx *rc, const struct wl_backend_ops *ops,
+                                 const struct wl_vres_level_spec spec[2],
+                                 const struct wl_vres_opts *vo, const struct wl_flume *coarse,
+                                 struct wl_error *err) {
+  struct wl_case_result *c = rc->c;
+  struct wl_vres *v = NULL;
+  rc->x_interface = 0.5 * (spec[0].own_hi + spec[1].own_lo);
+  rc->row_coarse.n_gauges = coarse->n_gauges;
+  rc->row_coarse.n_probes = coarse->n_probes;
+  enum wl_status st = wl_vres_alloc(&v, ops, 2, spec, vo, err);
+  if (!st && coarse->has_paddle) {
+    struct wl_sph_motion m = {0};
+    m.type = WL_SPH_MOTION_TABLE;
+    m.n = coarse->n_paddle;
+    m.t = coarse->paddle_t;
+    m.x = coarse->paddle_x;
+    st = wl_sph_sim_set_motion(wl_vres_level(v, 0), WL_FLUME_BODY_PADDLE, &m, err);
+  }
+  if (!st) st = wl_sample_alloc(&rc->sample, &c->flume, err);
+  if (!st) st = wl_sample_alloc(&rc->sample_coarse, coarse, err);
+  if (st) {
+    wl_vres_free(v);
+    return st;
+  }
+  wl_sample_set_range(rc->sample, rc->x_interface, INFINITY);
+  wl_sample_set_range(rc->sample_coarse, -INFINITY, rc->x_interface);
+  const struct wl_sph_const *k = wl_sph_sim_const(wl_vres_level(v, 1));
+  c->h = k->h_d;
+  c->c0 = k->c0_d;
+  rc->snapshot_interval = rc->opts->snapshot_interval > 0 ? rc->opts->snapshot_interval
+                                                           : c->t_end / 20.0;
+  const double output_dt = c->flume.cfg.prm.dp > 0 ? c->output_dt : 0.01;
+  const double wall0 = now_s();
+  double wall_next = wall0 + 0.5;
+  long m = 1;
+  st = levels_output(rc, v, 0.0, err);
+  while (st == WL_OK && wl_vres_time(v) < c->t_end) {
+    double t_out = output_dt > 0 ? (double)m * output_dt : c->t_end;
+    if (t_out > c->t_end) t_out = c->t_end;
+    const double rest = t_out - wl_vres_time(v);
+    if (!(rest > 1e-12 * t_out)) {
+      m++;
+      continue;
+    }
+    const double dt = fmin(wl_sph_sim_dt(wl_vres_level(v, 0)), wl_sph_sim_dt(wl_vres_level(v, 1)));
+    int lands;
+    const double dt_max = wl_sph_dt_toward(rest, dt, &lands);
+    if ((st = wl_vres_step(v, dt_max, err))) break;
+    if (fabs(wl_vres_time(v) - t_out) <= 1e-9 * fmax(t_out, 1.0)) {
+      st = levels_output(rc, v, t_out, err);
+      m++;
+    }
+    const double now = now_s();
+    if (rc->opts->progress && (now >= wall_next || wl_vres_time(v) >= c->t_end)) {
+      struct wl_sph_progress pr;
+      pr.t = wl_vres_time(v);
+      pr.t_end = c->t_end;
+      pr.step = wl_sph_sim_steps(wl_vres_level(v, 1));
+      pr.dt = dt;
+      pr.wall_s = now - wall0;
+      pr.steps_per_s = pr.wall_s > 0 ? (double)pr.step / pr.wall_s : 0;
+      pr.n = c->n_particles;
+      pr.particle_steps_per_s = pr.steps_per_s * pr.n;
+      pr.eta_s = pr.t > 0 ? pr.wall_s * (c->t_end - pr.t) / pr.t : 0;
+      rc->opts->progress(rc->opts->user, c->name, &pr);
+      wall_next = now + 0.5;
+    }
+  }
+  c->t_reached = wl_vres_time(v);
+  c->steps = wl_sph_sim_steps(wl_vres_level(v, 1));
+  c->n_limited = c->n_excluded = 0;
+  for (int l = 0; l < 2; l++) {
+    c->n_limited += wl_sph_sim_limited(wl_vres_level(v, l));
+    c->n_excluded += wl_sph_sim_excluded(wl_vres_level(v, l));
+  }
+  wl_vres_free(v);
+  return st;
 }
 
 static void on_progress(void *user, const struct wl_sph_progress *pr) {
@@ -155,6 +330,15 @@ static enum wl_status pick_backend(const struct wl_scenario *s, const struct wl_
   else if (opts->backend && !strcmp(opts->backend, "auto")) choice = WL_BACKEND_AUTO;
   *ops = &wl_backend_cpu_ops;
   if (choice == WL_BACKEND_CPU) return WL_OK;
+  /* two resolutions: the CPU backend only (vres.h: it edits the particles
+   * between steps on the host) */
+  if (s->resolution.refine.present) {
+    if (choice == WL_BACKEND_AUTO) return WL_OK;
+    return wl_error_set(err, WL_EUSAGE,
+                        "%s: resolution.refine: two resolutions run on the CPU backend only "
+                        "(docs/variable-resolution.md); use --backend cpu or auto",
+                        s->path);
+  }
   struct wl_cuda_device dev;
   struct wl_error qerr;
   wl_error_clear(&qerr);
@@ -200,15 +384,17 @@ void wl_assess_machine(const struct wl_scenario *s, const struct wl_assess_opts 
  * the record holds what was sampled before any stop. */
 static enum wl_status run_case(const struct wl_assess_opts *opts,
                                const struct wl_backend_ops *ops, const char *snap_path, int defer,
-                               struct wl_case_result *c, struct wl_error *err) {
+                               struct case_levels *lv, struct wl_case_result *c,
+                               struct wl_error *err) {
   struct run_ctx rc;
   memset(&rc, 0, sizeof rc);
   rc.c = c;
   rc.opts = opts;
   struct wl_sph_sim *sim = NULL;
   double start = now_s();
-  enum wl_status st = wl_sph_sim_alloc(&sim, ops, &c->flume.cfg, &c->flume.particles, err);
-  if (!st && c->flume.has_paddle) {
+  enum wl_status st = WL_OK;
+  if (!lv) st = wl_sph_sim_alloc(&sim, ops, &c->flume.cfg, &c->flume.particles, err);
+  if (!st && !lv && c->flume.has_paddle) {
     struct wl_sph_motion m = {0};
     m.type = WL_SPH_MOTION_TABLE;
     m.n = c->flume.n_paddle;
@@ -216,7 +402,7 @@ static enum wl_status run_case(const struct wl_assess_opts *opts,
     m.x = c->flume.paddle_x;
     st = wl_sph_sim_set_motion(sim, WL_FLUME_BODY_PADDLE, &m, err);
   }
-  if (!st) st = wl_sample_alloc(&rc.sample, &c->flume, err);
+  if (!st && !lv) st = wl_sample_alloc(&rc.sample, &c->flume, err);
   char xmf[1100] = "";
   if (snap_path) {
     snprintf(xmf, sizeof xmf, "%.*s.xmf", (int)(strlen(snap_path) - 3), snap_path);
@@ -227,7 +413,9 @@ static enum wl_status run_case(const struct wl_assess_opts *opts,
     }
   }
   if (!st && snap_path) st = wl_store_open(snap_path, &rc.snaps, err);
-  if (!st) {
+  if (!st && lv) {
+    st = run_levels(&rc, ops, lv->spec, &lv->vo, &lv->coarse, err);
+  } else if (!st) {
     const struct wl_sph_const *k = wl_sph_sim_const(sim);
     c->h = k->h_d;
     c->c0 = k->c0_d;
@@ -274,6 +462,8 @@ static enum wl_status run_case(const struct wl_assess_opts *opts,
     }
   }
   wl_sample_free(rc.sample);
+  wl_sample_free(rc.sample_coarse);
+  wl_sample_record_clear(&rc.row_coarse);
   wl_sph_sim_free(sim);
   free(rc.refs);
   return st;
@@ -326,6 +516,16 @@ enum wl_status assess_case(const struct wl_scenario *s, const struct wl_plan *pl
   snprintf(c->name, sizeof c->name, "%s", wl_flume_case_name(load));
   enum wl_status st = wl_flume_build(s, plan, load, &c->flume, err);
   if (st) return st;
+  struct case_levels *lv = NULL;
+  if (plan->refine) {
+    if (!(lv = calloc(1, sizeof *lv))) return wl_error_set(err, WL_ENOMEM, "no memory");
+    if ((st = levels_build(s, plan, load, &c->flume, &lv->coarse, lv->spec, &lv->vo, err))) {
+      wl_flume_clear(&lv->coarse);
+      free(lv);
+      return st;
+    }
+    if (opts->threads > 0) lv->coarse.cfg.n_threads = opts->threads;
+  }
   if (opts->threads > 0) c->flume.cfg.n_threads = opts->threads;
   if (how & ASSESS_URGENT) c->flume.cfg.priority = 1;
   c->t_end = opts->end_time > 0 ? opts->end_time : c->flume.t_end;
@@ -333,6 +533,10 @@ enum wl_status assess_case(const struct wl_scenario *s, const struct wl_plan *pl
   c->dp = plan->dp;
   c->n_particles = c->flume.particles.n;
   c->n_fluid = c->flume.particles.n - c->flume.particles.n_bound;
+  if (lv) {
+    c->n_particles += lv->coarse.particles.n;
+    c->n_fluid += lv->coarse.particles.n - lv->coarse.particles.n_bound;
+  }
   c->static_force = c->flume.static_force;
   c->static_moment = c->flume.static_moment;
   c->depth_wall = c->flume.depth_wall;
@@ -345,9 +549,16 @@ enum wl_status assess_case(const struct wl_scenario *s, const struct wl_plan *pl
                                                : 0.0;
   c->rec.n_gauges = c->flume.n_gauges;
   c->rec.n_probes = c->flume.n_probes;
-  const struct wl_backend_ops *ops;
-  if ((st = pick_backend(s, opts, &ops, err))) return st;
-  c->status = run_case(opts, ops, snapshots, (how & ASSESS_DEFER) != 0, c, err);
+  const struct wl_backend_ops *ops = NULL;
+  st = pick_backend(s, opts, &ops, err);
+  if (st) {
+    if (lv) wl_flume_clear(&lv->coarse);
+    free(lv);
+    return st;
+  }
+  c->status = run_case(opts, ops, snapshots, (how & ASSESS_DEFER) != 0, lv, c, err);
+  if (lv) wl_flume_clear(&lv->coarse);
+  free(lv);
   if (c->status != WL_OK) snprintf(c->message, sizeof c->message, "%s", err->msg);
   struct wl_error lerr;
   wl_error_clear(&lerr);

@@ -3,6 +3,7 @@
 #define WALLLOAD_ASSESS_PRIVATE_H
 
 #include "wallload/assess.h"
+#include "wallload/vres.h"
 
 /* record.c */
 void case_loads_clear(struct wl_case_loads *l);
@@ -25,6 +26,18 @@ enum wl_status assess_case(const struct wl_scenario *s, const struct wl_plan *pl
 /* The GPU's memory [bytes] when this scenario's run goes to the CUDA backend
  * (opts->backend, else run.backend; auto: a GPU found), else 0. */
 double assess_gpu_memory(const struct wl_scenario *s, const struct wl_assess_opts *opts);
+
+/* levels.c */
+/* The two levels of a case under resolution.refine (plan->refine): fine is
+ * the case's flume built at plan->dp, cut here to the fine level's water;
+ * coarse is built at plan->dp_coarse and cut likewise; spec and vo are what
+ * wl_vres_alloc takes (spec[0] coarse, spec[1] fine, pointing into the two
+ * flumes, whose domains grow a band of parking slots above their walls).
+ * On failure coarse may hold a flume for the caller to clear. */
+enum wl_status levels_build(const struct wl_scenario *s, const struct wl_plan *plan,
+                            enum wl_load_case load, struct wl_flume *fine, struct wl_flume *coarse,
+                            struct wl_vres_level_spec spec[2], struct wl_vres_opts *vo,
+                            struct wl_error *err);
 
 /* ladder.c */
 /* Run load case `load` on the scenario's convergence ladder into c (the last

@@ -435,3 +435,40 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
   snprintf(f->gauge_name[s->n_gauges], sizeof f->gauge_name[0], "wall");
   return WL_OK;
 }
+
+enum wl_status wl_flume_crop(struct wl_flume *f, double fluid_lo, double fluid_hi, double margin,
+                             struct wl_error *err) {
+  const struct wl_particles *p = &f->particles;
+  int n = 0, nb = 0;
+  for (int i = 0; i < p->n; i++) {
+    const double x = p->pos[0][i];
+    const int keep = p->kind[i] == WL_KIND_FLUID ? x >= fluid_lo && x < fluid_hi
+                                                 : x >= fluid_lo - margin && x < fluid_hi + margin;
+    n += keep;
+    nb += keep && i < p->n_bound;
+  }
+  if (n == nb)
+    return wl_error_set(err, WL_EINPUT, "flume: no fluid between x = %g and %g m", fluid_lo,
+                        fluid_hi);
+  struct wl_particles q;
+  enum wl_status st = wl_particles_alloc(&q, p->dim, n, 0, err);
+  if (st) return st;
+  int k = 0;
+  for (int i = 0; i < p->n; i++) {
+    const double x = p->pos[0][i];
+    const int keep = p->kind[i] == WL_KIND_FLUID ? x >= fluid_lo && x < fluid_hi
+                                                 : x >= fluid_lo - margin && x < fluid_hi + margin;
+    if (!keep) continue;
+    for (int a = 0; a < p->dim; a++) q.pos[a][k] = p->pos[a][i], q.vel[a][k] = p->vel[a][i];
+    q.rho[k] = p->rho[i];
+    q.id[k] = (unsigned)k;
+    q.kind[k] = p->kind[i];
+    q.body[k] = p->body[i];
+    k++;
+  }
+  q.n = n;
+  q.n_bound = nb;
+  wl_particles_clear(&f->particles);
+  f->particles = q;
+  return WL_OK;
+}

@@ -1,6 +1,7 @@
 /* plan.c: load cases -> initial conditions, resolution, end time and cost.
  * See plan.h for the two equal-energy bases. */
 #include "wallload/plan.h"
+#include "wallload/vres.h"
 
 #include <limits.h>
 #include <math.h>
@@ -453,6 +454,19 @@ static void case_cost(const struct wl_scenario *s, struct wl_plan *p, double x_l
   double across = p->dims == 3 ? s->domain.width.q.si / (p->symmetry ? 2 : 1) / p->dp : 1.0;
   *n_fluid = count_of(area / (p->dp * p->dp) * across);
   *n_boundary = count_of(BOUNDARY_LAYERS * perimeter / p->dp * across);
+  if (p->refine && p->refine_from > x_left) {
+    /* each level over its own range and into the other's by the overlap
+     * and its band (vres.h); both step at the fine level's dt */
+    const double xf = p->refine_from, d_if = p->h - wl_scenario_bed_z(s, xf);
+    const double a_fine = wet_area(s, p->h, xf), a_coarse = area - a_fine;
+    const double dpc = p->dp_coarse, ov = p->refine_overlap;
+    const double a_c = a_coarse + d_if * (ov + p->refine_band[0]);
+    const double a_f = a_fine + d_if * (ov + p->refine_band[1]);
+    const double per_c = (xf - x_left) + ov + p->refine_band[0] + p->h;
+    const double per_f = perimeter - (xf - x_left) + ov + p->refine_band[1] - p->h;
+    *n_fluid = count_of(a_c / (dpc * dpc) + a_f / (p->dp * p->dp));
+    *n_boundary = count_of(BOUNDARY_LAYERS * (per_c / dpc + per_f / p->dp));
+  }
   if (p->dims == 3) {
     /* flume.c: the polyline extruded under the side walls too, and the
      * side walls over the flume's profile up to the domain's top */
@@ -564,6 +578,11 @@ double wl_plan_whole_rows_dp(const struct wl_scenario *s, double dp_target, doub
         if (h - zb > 0)
           e = fmax(e, fabs(wl_plan_modelled_depth(h, z_min, zb, dp) - (h - zb)) / (h - zb));
       }
+      if (s->resolution.refine.present) { /* the coarse level's rows at the interface */
+        const double zf = wl_scenario_bed_z(s, s->resolution.refine.from.q.si);
+        if (h - zf > 0)
+          e = fmax(e, fabs(wl_plan_modelled_depth(h, z_min, zf, 2.0 * dp) - (h - zf)) / (h - zf));
+      }
       const double dist = fabs(log(dp / dp_target));
       /* errors below 1e-9 are exact: then the nearest spacing wins */
       const double ek = e < 1e-9 ? 0.0 : e, bk = best_err < 1e-9 ? 0.0 : best_err;
@@ -577,6 +596,80 @@ double wl_plan_whole_rows_dp(const struct wl_scenario *s, double dp_target, doub
 double wl_plan_level_dp(const struct wl_scenario *s, const struct wl_plan *p, double factor) {
   return s->resolution.dp.is_auto ? wl_plan_whole_rows_dp(s, p->dp_target * factor, NULL)
                                   : p->dp * factor;
+}
+
+/* resolution.refine: the two levels' layout (vres.h wl_vres_layout), and
+ * what the coupling needs of the scene: 2D, the interface over a flat bed
+ * from the coarse level's water to the fine level's (the flux points stand
+ * on it), every depth in whole rows of both spacings there (checked by the
+ * notes of whole rows), the explosion's crater clear of the coarse band. */
+static enum wl_status plan_refine(const struct wl_scenario *s, struct wl_plan *p,
+                                  struct wl_error *err) {
+  p->refine = s->resolution.refine.present;
+  if (!p->refine) return WL_OK;
+  const struct wl_scenario_value *rf = &s->resolution.refine.from;
+  char rbuf[32];
+  if (p->dims != 2)
+    return wl_error_set(err, WL_EINPUT,
+                        "%s%s: resolution.refine.from: two resolutions run in 2D only, and this "
+                        "scenario plans 3D (%s); expected domain.dimensions: 2 or no "
+                        "resolution.refine",
+                        s->path, where(rf, rbuf), p->dims_reason);
+  p->refine_from = rf->q.si;
+  p->dp_coarse = 2.0 * p->dp;
+  struct wl_vres_opts vo = {0};
+  struct wl_vres_layout lay;
+  wl_vres_layout(p->refine_from, p->dp_coarse, p->dp, p->h_sml / p->dp, 1, &vo, &lay);
+  p->refine_overlap = lay.overlap;
+  p->refine_band[0] = lay.band[0], p->refine_band[1] = lay.band[1];
+  /* the bed under both levels' water around the interface, and their
+   * kernels' reach beyond it */
+  const double lo = lay.water_lo[1] - 2.0 * wl_sph_smoothing_length(p->coefh, 2, p->dp_coarse);
+  const double hi = lay.water_hi[0] + 2.0 * wl_sph_smoothing_length(p->coefh, 2, p->dp_coarse);
+  const double z_if = wl_scenario_bed_z(s, p->refine_from);
+  const double x_left = fmin(p->solitary.present ? p->solitary.x_left : INFINITY,
+                             p->explosion.present ? p->explosion.x_left : INFINITY);
+  if (lo <= x_left || hi >= s->wall.x.q.si)
+    return wl_error_set(err, WL_EINPUT,
+                        "%s%s: resolution.refine.from: %g m leaves no room for the two levels' "
+                        "overlap and bands (%.3g to %.3g m at dp = %.3g m); expected a position "
+                        "between %.3g and %.3g m",
+                        s->path, where(rf, rbuf), p->refine_from, lo, hi, p->dp,
+                        x_left + (p->refine_from - lo), s->wall.x.q.si - (hi - p->refine_from));
+  for (int i = 0; i < s->n_bed; i++) {
+    const double xb = s->bed[i].from.q.si;
+    if (xb > lo && xb < hi && fabs(wl_scenario_bed_z(s, xb + 1e-9) - z_if) +
+                                      fabs(wl_scenario_bed_z(s, hi) - z_if) +
+                                      fabs(wl_scenario_bed_z(s, lo) - z_if) > 1e-9)
+      return wl_error_set(err, WL_EINPUT,
+                          "%s%s: resolution.refine.from: the bed changes at %g m (bathymetry[%d]), "
+                          "within the two levels' overlap and bands (%.3g to %.3g m); the "
+                          "interface needs a flat bed there: expected `from` at least %.3g m "
+                          "from every change of slope",
+                          s->path, where(rf, rbuf), xb, i, lo, hi,
+                          fmax(p->refine_from - lo, hi - p->refine_from));
+  }
+  if (p->explosion.present) {
+    const double reach = p->explosion.x_center + 2.0 * p->explosion.r0; /* the lip within 2 r0 */
+    if (reach > lo)
+      return wl_error_set(err, WL_EINPUT,
+                          "%s%s: resolution.refine.from: the explosion's crater and lip reach "
+                          "%.3g m, into the fine level's band (from %.3g m); expected `from` "
+                          "beyond %.3g m",
+                          s->path, where(rf, rbuf), reach, lo, reach + (p->refine_from - lo));
+  }
+  const double zf = wl_scenario_bed_z(s, p->refine_from), z_min = wl_plan_bed_min(s);
+  const double dc = wl_plan_modelled_depth(p->h, z_min, zf, p->dp_coarse);
+  const double df = wl_plan_modelled_depth(p->h, z_min, zf, p->dp);
+  if (fabs(dc - df) > 1e-9 * p->h)
+    return wl_error_set(err, WL_EINPUT,
+                        "%s%s: resolution.refine.from: at dp = %g m the still water at the "
+                        "interface is %.4g m in the fine level and %.4g m in the coarse one "
+                        "(2 dp): the two free surfaces would not meet; expected dp: auto (it "
+                        "picks a spacing that models both) or a dp that divides the depth %.4g m "
+                        "into an even number of rows",
+                        s->path, where(rf, rbuf), p->dp, df, dc, p->h - zf);
+  return WL_OK;
 }
 
 static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_plan *p,
@@ -614,6 +707,10 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
   p->coefh = s->numerics.coefh.is_auto ? (p->dims == 2 ? WL_PLAN_COEFH_2D : WL_PLAN_COEFH_3D)
                                         : s->numerics.coefh.q.si;
   p->h_sml = wl_sph_smoothing_length(p->coefh, p->dims, p->dp);
+  {
+    enum wl_status rs = plan_refine(s, p, err);
+    if (rs) return rs;
+  }
   p->evals_per_step = s->numerics.integrator.choice == WL_INTEGRATOR_VERLET ? 1 : 2;
   if (s->numerics.residual_viscosity.q.si > 0 && p->evals_per_step == 1) {
     char rbuf[32];
@@ -708,6 +805,23 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
                         s->path, where(r, rbuf), s->resolution.dp.is_auto ? "particles_per_height" : "dp",
                         p->dp, (double)n_max, p->memory_bytes / 1073741824.0,
                         (double)WL_PLAN_PARTICLES_MAX);
+  }
+  if (p->refine) {
+    p->uniform_particle_steps = 0;
+    p->refine = 0; /* the same cases at dp everywhere */
+    long nf, nb;
+    double ps;
+    if (p->solitary.present) {
+      case_cost(s, p, p->solitary.x_left, p->solitary.end_time, p->solitary.wave.H,
+                p->solitary.dt, &nf, &nb, &ps);
+      p->uniform_particle_steps += ps;
+    }
+    if (p->explosion.present) {
+      case_cost(s, p, p->explosion.x_left, p->explosion.end_time, 2.0 * p->explosion.eta0,
+                p->explosion.dt, &nf, &nb, &ps);
+      p->uniform_particle_steps += ps;
+    }
+    p->refine = 1;
   }
   p->cpu_seconds = p->particle_steps * p->evals_per_step /
                    (p->dims == 3 ? WL_PLAN_CPU_RATE_3D : WL_PLAN_CPU_RATE);
@@ -997,6 +1111,18 @@ void wl_plan_write(const struct wl_plan *p, FILE *out) {
   fprintf(out, "  %-36s %12.4g MiB    (%.4g MiB on a GPU)\n", "memory (estimate)",
           p->memory_bytes / 1048576.0, p->gpu_memory_bytes / 1048576.0);
   fprintf(out, "  %-36s %12.4g\n", "particle-steps, all cases", p->particle_steps);
+  if (p->refine) {
+    fprintf(out, "  %-36s %12.5g m      (seaward of x = %.4g m; dp from there to the wall)\n",
+            "coarse level's spacing", p->dp_coarse, p->refine_from);
+    fprintf(out, "  %-36s %12.4g m      (either side of the interface; bands %.3g m coarse, "
+                 "%.3g m fine)\n",
+            "levels' overlap", p->refine_overlap, p->refine_band[0], p->refine_band[1]);
+    fprintf(out, "  %-36s %12.4g        (%.2f times fewer particle-steps than dp everywhere, "
+                 "%.4g)\n",
+            "two levels' particle-steps", p->particle_steps,
+            p->particle_steps > 0 ? p->uniform_particle_steps / p->particle_steps : 0.0,
+            p->uniform_particle_steps);
+  }
   fprintf(out, "  %-36s %12.4g s      (at %.2g force evaluations/s, %d a step: %s)\n",
           "CPU runtime (estimate)", p->cpu_seconds,
           p->dims == 3 ? WL_PLAN_CPU_RATE_3D : WL_PLAN_CPU_RATE, p->evals_per_step,

@@ -14,7 +14,14 @@ struct wl_sample {
   /* the wet profile: the wet probes, the surface point and, for a single
    * wet probe, its copy */
   double prof_z[WL_FLUME_MAX_PROBES + 2], prof_p[WL_FLUME_MAX_PROBES + 2];
+  int ranged; /* wl_sample_set_range */
+  double x_lo, x_hi;
 };
+
+void wl_sample_set_range(struct wl_sample *s, double x_lo, double x_hi) {
+  s->ranged = 1;
+  s->x_lo = x_lo, s->x_hi = x_hi;
+}
 
 enum wl_status wl_sample_alloc(struct wl_sample **out, const struct wl_flume *f,
                                struct wl_error *err) {
@@ -101,6 +108,9 @@ enum wl_status wl_sample_state(struct wl_sample *s, const struct wl_particles *p
   double kin = 0.0, pot = 0.0, mom = 0.0;
   const int az = p->dim - 1;
   for (int i = p->n_bound; i < p->n; i++) {
+    if (s->ranged && (p->body[i] == WL_SPH_BODY_EXCLUDED || p->body[i] == WL_SPH_BODY_BUFFER ||
+                      !(p->pos[0][i] >= s->x_lo && p->pos[0][i] < s->x_hi)))
+      continue;
     mom += (double)k->mass * p->vel[0][i];
     double v2 = (double)p->vel[0][i] * p->vel[0][i] + (double)p->vel[1][i] * p->vel[1][i];
     if (az == 2) v2 += (double)p->vel[2][i] * p->vel[2][i];

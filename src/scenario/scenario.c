@@ -805,6 +805,29 @@ static enum wl_status check_rules(struct ctx *c, struct wl_scenario *s) {
       return at_value(c, &s->resolution.levels[i], key,
                       "levels must decrease (each one finer than the one before)");
   }
+  if (s->resolution.refine.present) {
+    const struct wl_scenario_value *rf = &s->resolution.refine.from;
+    const double xf = rf->q.si;
+    if (!(xf > 0 && xf < xw)) {
+      snprintf(msg, sizeof msg, "found %g m; expected a position between the paddle (0) and the "
+               "wall (%g m): the fine level runs from it to the wall", xf, xw);
+      return at_value(c, rf, "resolution.refine.from", msg);
+    }
+    if (s->domain.dimensions.given && !s->domain.dimensions.is_auto &&
+        (int)s->domain.dimensions.q.si == 3)
+      return at_value(c, rf, "resolution.refine.from",
+                      "two resolutions run in 2D only (docs/variable-resolution.md); remove "
+                      "resolution.refine or use domain.dimensions: 2");
+    if (s->explosion.present && s->explosion.at.q.si >= xf)
+      return at_value(c, rf, "resolution.refine.from",
+                      "the explosion's crater lies in the fine level; expected `from` seaward of "
+                      "loads.explosion.at (the crater collapses in the coarse level and its "
+                      "waves cross into the fine one)");
+    if (s->run.backend.given && s->run.backend.choice == WL_BACKEND_CUDA)
+      return at_value(c, rf, "resolution.refine.from",
+                      "two resolutions run on the CPU backend only (docs/variable-resolution.md); "
+                      "use run.backend: cpu or auto, or remove resolution.refine");
+  }
   if (s->sweep.present) return check_sweep(c, s);
   return WL_OK;
 }

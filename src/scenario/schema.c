@@ -122,6 +122,13 @@ static const struct wl_key loads_keys[] = {
      OFF(explosion.present), 0, "an explosion-wave load case"},
     {0}};
 
+static const struct wl_key refine_keys[] = {
+    {"from", KT_QTY, WL_DIM_LENGTH, OFF(resolution.refine.from), NULL, 0, NONE, 1, 0, NULL, NULL,
+     NO_FLAG, 1,
+     "where the fine level begins, from the paddle, over a flat bed: from here to the wall the "
+     "water is at dp, seaward of it at 2 dp"},
+    {0}};
+
 static const struct wl_key resolution_keys[] = {
     {"dp", KT_QTY_OR_AUTO, WL_DIM_LENGTH, OFF(resolution.dp), NULL, 0, NONE, 1, 0, "auto", NULL,
      NO_FLAG, 0, "particle spacing, or auto (from particles_per_height)"},
@@ -133,6 +140,10 @@ static const struct wl_key resolution_keys[] = {
      NULL, NO_FLAG, 0, "relative error at which a convergence ladder stops"},
     {"convergence", KT_LEVELS, WL_DIM_NONE, 0, NULL, 0, 1, 1, 0, NULL, NULL, NO_FLAG, 0,
      "list of dp factors, e.g. [1, 0.71, 0.5]"},
+    {"refine", KT_MAP, WL_DIM_NONE, 0, NULL, NONE, NONE, 0, 0, NULL, refine_keys,
+     OFF(resolution.refine.present), 0,
+     "two resolutions in one run (2D, CPU backend; docs/variable-resolution.md): dp at the wall, "
+     "2 dp seaward of `from`"},
     {0}};
 
 static const struct wl_key run_keys[] = {

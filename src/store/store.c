@@ -594,8 +594,8 @@ enum wl_status wl_store_write_xdmf_batch(const char *xmf_path, const char *h5_na
         "Dimensions=\"%zu 3\" NumberType=\"Float\" Precision=\"4\" Format=\"HDF\">%s:%s/velocity"
         "</DataItem></Attribute>\n",
         r->n, h5_name, r->group);
-    static const char *const scalars[] = {"rho", "p"};
-    for (int k = 0; k < 2; k++)
+    static const char *const scalars[] = {"rho", "p", "dp"};
+    for (int k = 0; k < 3; k++)
       PUT("    <Attribute Name=\"%s\" AttributeType=\"Scalar\" Center=\"Node\"><DataItem "
           "Dimensions=\"%zu\" NumberType=\"Float\" Precision=\"4\" Format=\"HDF\">%s:%s/%s"
           "</DataItem></Attribute>\n",
