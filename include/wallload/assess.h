@@ -104,6 +104,11 @@ struct wl_case_result {
   double runtime_s;         /* wall-clock [s] */
   int n_particles, n_fluid;
   double dp, h, c0;
+  /* resolution.refine (vres.h): the coarse level's spacing (0: one level),
+   * the interface [m], and the relative change of the water the two levels
+   * own from the start to the end of the run (the flux points exchange
+   * water between them without conserving it exactly) */
+  double dp_coarse, x_interface, water_change;
   double static_force, static_moment, depth_wall; /* at rest [N/m], [N m/m], [m] */
   /* Peaks (and their rise time and duration) are searched from peak_from
    * [s] on: half the plan's estimate of when the wave reaches the wall

@@ -242,6 +242,8 @@ static enum wl_status run_levels(struct run_ctx *rc, const struct wl_backend_ops
   struct wl_case_result *c = rc->c;
   struct wl_vres *v = NULL;
   rc->x_interface = 0.5 * (spec[0].own_hi + spec[1].own_lo);
+  c->x_interface = rc->x_interface;
+  c->dp_coarse = coarse->cfg.prm.dp;
   rc->row_coarse.n_gauges = coarse->n_gauges;
   rc->row_coarse.n_probes = coarse->n_probes;
   enum wl_status st = wl_vres_alloc(&v, ops, 2, spec, vo, err);
@@ -267,6 +269,7 @@ static enum wl_status run_levels(struct run_ctx *rc, const struct wl_backend_ops
   rc->snapshot_interval = rc->opts->snapshot_interval > 0 ? rc->opts->snapshot_interval
                                                            : c->t_end / 20.0;
   const double output_dt = c->flume.cfg.prm.dp > 0 ? c->output_dt : 0.01;
+  const double mass0 = wl_vres_own_mass(v, err);
   const double wall0 = now_s();
   double wall_next = wall0 + 0.5;
   long m = 1;
@@ -305,6 +308,11 @@ static enum wl_status run_levels(struct run_ctx *rc, const struct wl_backend_ops
   }
   c->t_reached = wl_vres_time(v);
   c->steps = wl_sph_sim_steps(wl_vres_level(v, 1));
+  {
+    struct wl_error merr;
+    wl_error_clear(&merr);
+    c->water_change = wl_vres_own_mass(v, &merr) / mass0 - 1.0;
+  }
   c->n_limited = c->n_excluded = 0;
   for (int l = 0; l < 2; l++) {
     c->n_limited += wl_sph_sim_limited(wl_vres_level(v, l));

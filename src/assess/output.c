@@ -320,6 +320,13 @@ static enum wl_status write_summary(const struct wl_scenario *s, const struct wl
       jval(&t, "force_evaluations_per_step", prm->integrator == WL_SPH_VERLET ? 1 : 2, "1",
            prm->integrator == WL_SPH_VERLET ? "Verlet integrator" : "symplectic integrator", 0);
     }
+    if (c->dp_coarse > 0) {
+      jval(&t, "dp_coarse", c->dp_coarse, "m",
+           "resolution.refine: the coarse level's spacing, seaward of x_interface", 0);
+      jval(&t, "x_interface", c->x_interface, "m", "resolution.refine: the levels' interface", 0);
+      jval(&t, "water_change", c->water_change, "1",
+           "relative change of the water the two levels own, start to end", 0);
+    }
     jval(&t, "particles", c->n_particles, "1", NULL, 0);
     jval(&t, "steps", (double)c->steps, "1", NULL, 0);
     jval(&t, "wall_limiter_corrections", (double)c->n_limited, "1",

@@ -364,6 +364,10 @@ static void print_case(const struct wl_case_result *c, const struct wl_scenario 
   if (c->n_limited || c->n_excluded)
     printf("  %-34s %ld wall-limiter corrections, %ld fluid particles left the domain\n",
            "kept in bounds", c->n_limited, c->n_excluded);
+  if (c->dp_coarse > 0)
+    printf("  %-34s dp = %.4g m from x = %.4g m to the wall, %.4g m seaward; the water they "
+           "own changed by %+.3g %%\n",
+           "two resolutions", c->dp, c->x_interface, c->dp_coarse, 100.0 * c->water_change);
   struct wl_load_units u;
   if (wl_scenario_load_units(s, &u))
     printf("  %-34s %.5g %s, positive impulse %.5g %s (net %.5g, positive phase %.5g), moment "

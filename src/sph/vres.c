@@ -34,6 +34,7 @@ struct level {
   const struct wl_sph_const *k;
   double lo, hi, w, dp, h, mass;
   double mass_lo, mass_hi; /* the part of its range its own mass counts (vres.h overlap) */
+  double zone_lo, zone_hi; /* the x its grid covers: where either level's coupling asks (below) */
   double park_lo[2], park_hi[2];
   int park_nx, park_nz;
   long park_next;
@@ -93,8 +94,10 @@ static void park(struct level *L, struct wl_particles *p, int i) {
  * wetness only (the water beside a wall, and across the level's own
  * interface). */
 static int donor(const struct level *L, const struct wl_particles *p, int i) {
-  return p->kind[i] != WL_KIND_FLUID || p->body[i] == WL_SPH_BODY_BUFFER ||
-         (p->body[i] == 0 && owns(L, p->pos[0][i]));
+  const double x = p->pos[0][i];
+  return x >= L->zone_lo && x <= L->zone_hi &&
+         (p->kind[i] != WL_KIND_FLUID || p->body[i] == WL_SPH_BODY_BUFFER ||
+          (p->body[i] == 0 && owns(L, x)));
 }
 
 static int fit_donor(const struct level *L, const struct wl_particles *p, int j) {
@@ -238,16 +241,27 @@ static int take_parked(const struct wl_particles *p, int *cursor) {
   return -1;
 }
 
-/* Level L's fluid by position (vres.h): its range, its bands, gone. */
+/* Level L's fluid by position (vres.h): its range, its bands, gone. The
+ * classes side by side; the few that leave are parked after, in particle
+ * order (parking counts its slots): the same bits on any thread count. */
 static void classify(struct level *L, struct wl_particles *p) {
-  for (int i = p->n_bound; i < p->n; i++) {
+  const int n = p->n, n_bound = p->n_bound;
+  long gone = 0;
+#pragma omp parallel for reduction(+ : gone) num_threads(L->threads)
+  for (int i = n_bound; i < n; i++) {
     if (p->body[i] == WL_SPH_BODY_EXCLUDED) continue;
     const double x = p->pos[0][i];
     if (owns(L, x)) p->body[i] = 0;
     else if (in_band(L, x)) p->body[i] = WL_SPH_BODY_BUFFER;
-    else {
+    else gone++;
+  }
+  for (int i = n_bound; i < n && gone > 0; i++) {
+    if (p->body[i] == WL_SPH_BODY_EXCLUDED) continue;
+    const double x = p->pos[0][i];
+    if (!owns(L, x) && !in_band(L, x)) {
       park(L, p, i);
       L->cnt.removed++;
+      gone--;
     }
   }
 }
@@ -469,6 +483,18 @@ enum wl_status wl_vres_alloc(struct wl_vres **out, const struct wl_backend_ops *
       st = wl_error_set(err, WL_EINPUT, "vres: a level's buffer band reaches beyond the other "
                         "level's range");
     else { /* own mass: each level counts the overlap up to its middle */
+      /* each level's grid: the other level's bands and flux points (its
+       * fits from this level), this level's own (shifting, crowding), and
+       * the reach of the larger kernel beyond them */
+      double lo = INFINITY, hi = -INFINITY, reach = 0;
+      for (int l = 0; l < n_levels; l++) {
+        const struct level *L = &v->lv[l];
+        if (isfinite(L->lo)) lo = fmin(lo, L->lo - L->w), hi = fmax(hi, L->lo);
+        if (isfinite(L->hi)) lo = fmin(lo, L->hi), hi = fmax(hi, L->hi + L->w);
+        reach = fmax(reach, 2.0 * L->h + L->dp);
+      }
+      for (int l = 0; l < n_levels; l++)
+        v->lv[l].zone_lo = lo - reach, v->lv[l].zone_hi = hi + reach;
       const double mid = 0.5 * (lb->own_lo + la->own_hi);
       v->lv[a].mass_lo = la->own_lo, v->lv[a].mass_hi = mid;
       v->lv[b].mass_lo = mid, v->lv[b].mass_hi = lb->own_hi;
