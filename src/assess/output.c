@@ -618,7 +618,7 @@ void wl_assess_results_plan(const struct wl_scenario *s, const struct wl_plan *p
     const struct wl_scenario_value *v = wl_scenario_value_of(s, key);
     struct wl_results_setting *o = &r->settings[r->n_settings++];
     snprintf(o->key, sizeof o->key, "%s", key);
-    snprintf(o->value, sizeof o->value, "%s", v ? v->text : "?");
+    snprintf(o->value, sizeof o->value, "%s", !v ? "?" : v->text[0] ? v->text : "none");
     o->given = v && v->given;
   }
 

@@ -307,6 +307,7 @@ const struct wl_results_setting_key wl_store_results_settings[] = {
     {"numerics.integrator", "time integrator"},
     {"numerics.verlet_steps", "Euler step every (Verlet)"},
     {"numerics.boundary", "wall condition"},
+    {"resolution.refine.from", "fine level (dp) from, 2 dp seaward of it"},
     {"run.output_interval", "output interval"},
     {"run.end_time", "end time"},
 };
