@@ -30,6 +30,11 @@ out=$("$bin" check refine.yaml 2>&1); rc=$?
 [ $rc = 0 ] && ok "check accepts refine" || bad "check exit $rc: $out"
 grep -q "coarse level's spacing" <<<"$out" && grep -q "times fewer particle-steps" <<<"$out" &&
   ok "check prints the coarse level and the saving" || bad "check output: $out"
+# `check` times its calibration flume when WL_CPU_SPEED does not set the
+# speed (src/assess/speed.c): a positive speed and an estimate for here
+out=$(env -u WL_CPU_SPEED "$bin" check refine.yaml 2>&1 | grep "CPU speed now")
+grep -qE "CPU speed now: [0-9]+\.[0-9]+ of the reference.*about [0-9.e+]+ s here" <<<"$out" &&
+  ok "check times this machine: $out" || bad "no CPU speed in check's output: $out"
 out=$("$bin" assess refine.yaml --quiet --end-time $t_end --threads 2 2>&1); rc=$?
 [ $rc = 0 ] && ok "assess with two levels (exit 0)" || bad "assess exit $rc: $out"
 grep -q 'Name="dp"' refine-results/particles_solitary.xmf && ok "snapshots carry dp" ||

@@ -270,4 +270,11 @@ void wl_assess_results_plan(const struct wl_scenario *s, const struct wl_plan *p
  * crest (sech^2(6) ~ 2.5e-5 of its height). */
 #define WL_ASSESS_SOLITARY_HALF 6.0
 
+/* This machine's CPU speed now against the reference machine the plan
+ * prices with (plan.h WL_PLAN_CPU_SPEED_RATE), timing a small still-water
+ * flume on `threads` threads (src/assess/speed.c; about 0.2 s). The
+ * environment's WL_CPU_SPEED, when set, is returned instead (tests). NAN
+ * when the flume cannot be run (err says why). */
+double wl_assess_cpu_speed(int threads, struct wl_error *err);
+
 #endif

@@ -323,6 +323,11 @@ struct wl_plan_machine {
   int force_large;       /* 1: past the runtime budget anyway (never past memory) */
 };
 
+/* The calibration flume of `check` (src/assess/speed.c) on the reference
+ * machine, 2 threads, when the main job's ladder runs at WL_PLAN_CPU_RATE
+ * [particle-steps/s]: measured beside that ladder's first level
+ * (BENCHMARKS.md, "Sweeps"), scaled to its 6.4e6. */
+#define WL_PLAN_CPU_SPEED_RATE 1.0 /* set below from the measurement */
 /* The CPU thread count WL_PLAN_CPU_RATE was measured with. */
 #define WL_PLAN_CPU_THREADS 2
 /* A run may plan at most this fraction of the host's physical memory. */

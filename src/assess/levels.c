@@ -11,12 +11,25 @@
 
 #include "wallload/sph/params.h"
 
-/* Parked particles (vres.h) per fluid particle of a level, and at least:
- * the water a wave carries across the interface is a few per cent of a
- * level's (seawall.yaml's 0.05 m solitary wave: 0.11 m^2 of 2.9), and a
- * level that runs out of them stops with an error naming it. */
+/* Parked particles (vres.h) a level keeps for the water that flows in: a
+ * share of its own, the wave's volume twice (it may pile up against the
+ * wall before it flows back) and at least a few hundred. A level that runs
+ * out stops with an error naming it: the solitary wave H/h = 0.3 of
+ * test_solitary_wall (0.05 m^2, a quarter of the fine level's water) ran
+ * out of a quarter's share. */
 #define LEVELS_SPARE_SHARE 0.25
 #define LEVELS_SPARE_MIN 500
+
+/* The water the case's wave holds above still level [m^2]: the solitary
+ * wave's integral 2 H / K of H sech^2(K x); a crater's lip about
+ * eta0 r0 (its plane section's rim). */
+static double wave_volume(const struct wl_plan *plan, enum wl_load_case load) {
+  if (load == WL_CASE_SOLITARY && plan->solitary.present && plan->solitary.wave.K > 0)
+    return 2.0 * plan->solitary.wave.H / plan->solitary.wave.K;
+  if (load == WL_CASE_EXPLOSION && plan->explosion.present)
+    return plan->explosion.eta0 * plan->explosion.r0;
+  return 0.0;
+}
 
 /* Place a band of parking slots above the level's walls (its domain's top
  * raised to hold them) over the level's water in x. */
@@ -61,8 +74,9 @@ enum wl_status levels_build(const struct wl_scenario *s, const struct wl_plan *p
     }
     memset(&spec[l], 0, sizeof spec[l]);
     const int fluid = lv[l]->particles.n - lv[l]->particles.n_bound;
-    park_band(lv[l], lay.water_lo[l], lay.water_hi[l],
-              (int)fmax(LEVELS_SPARE_MIN, LEVELS_SPARE_SHARE * fluid), &spec[l]);
+    const double spare = LEVELS_SPARE_SHARE * fluid + 2.0 * wave_volume(plan, load) / (dp * dp);
+    park_band(lv[l], lay.water_lo[l], lay.water_hi[l], (int)fmax(LEVELS_SPARE_MIN, spare),
+              &spec[l]);
     spec[l].cfg = &lv[l]->cfg;
     spec[l].initial = &lv[l]->particles;
     spec[l].own_lo = lay.own_lo[l], spec[l].own_hi = lay.own_hi[l];

@@ -124,6 +124,20 @@ static enum wl_status judge_run(const struct wl_scenario *s, const struct wl_pla
             m.device_bytes > 0 ? "GPU " : "CPU", m.device_bytes > 0 ? m.device_name : "",
             (m.device_bytes > 0 ? m.device_bytes : m.host_bytes) / 1073741824.0,
             m.budget_seconds / 3600.0, force_large ? " (lifted by --force-large)" : "");
+    if (!(m.device_bytes > 0)) {
+      /* the estimates above are at the reference machine's rate; this
+       * machine's now (src/assess/speed.c) */
+      struct wl_error serr;
+      wl_error_clear(&serr);
+      const double speed = wl_assess_cpu_speed(m.threads, &serr);
+      if (speed > 0)
+        fprintf(out, "CPU speed now: %.2f of the reference machine's on %d threads (a small "
+                     "flume timed just now): about %.4g s here (%.3g h)\n",
+                speed, m.threads, wl_plan_machine_seconds(cost, &m) / speed,
+                wl_plan_machine_seconds(cost, &m) / speed / 3600.0);
+      else
+        fprintf(out, "CPU speed now: not measured (%s)\n", serr.msg);
+    }
   }
   return st;
 }
