@@ -323,11 +323,13 @@ struct wl_plan_machine {
   int force_large;       /* 1: past the runtime budget anyway (never past memory) */
 };
 
-/* The calibration flume of `check` (src/assess/speed.c) on the reference
- * machine, 2 threads, when the main job's ladder runs at WL_PLAN_CPU_RATE
- * [particle-steps/s]: measured beside that ladder's first level
- * (BENCHMARKS.md, "Sweeps"), scaled to its 6.4e6. */
-#define WL_PLAN_CPU_SPEED_RATE 1.0 /* set below from the measurement */
+/* The calibration flume of `check` (src/assess/speed.c) on a machine that
+ * runs WL_PLAN_CPU_RATE [particle-steps/s]: its rate times WL_PLAN_CPU_RATE
+ * over the rate of a flume the plan prices, measured back to back
+ * (seawall-sweep.yaml's first case, 14 k particles; BENCHMARKS.md,
+ * "Sweeps", 2026-11-27): 6.43e6 on the 2-core machine at 2 threads, 6.95e6
+ * and 6.18e6 on the H100 host's Xeon at 2 and 4; their mean. */
+#define WL_PLAN_CPU_SPEED_RATE 6.5e6
 /* The CPU thread count WL_PLAN_CPU_RATE was measured with. */
 #define WL_PLAN_CPU_THREADS 2
 /* A run may plan at most this fraction of the host's physical memory. */
