@@ -21,12 +21,17 @@ static double seconds_now(void) {
   return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-/* The calibration flume: still water 0.3 m deep in a tank 1.2 m long at
- * dp = 7.5 mm (6400 fluid particles), the default numerics, the Verlet
- * step; the fastest of a few trials after a few steps to warm the caches. */
+/* The calibration flume: still water 0.3 m deep at dp = 7.5 mm in a tank
+ * 1.2 m long (6400 fluid particles: 3200 a thread on the 2 threads
+ * WL_PLAN_CPU_SPEED_RATE was measured with), longer with more threads so
+ * that each keeps as many (with fewer a thread, the step's barriers
+ * dominate, as they would not in the run priced: 16 threads on 6400
+ * particles read 0.28 of the rate), the default numerics, the Verlet step;
+ * the fastest of a few trials after a few steps to warm the caches. */
 #define SPEED_DEPTH 0.3
 #define SPEED_LENGTH 1.2
 #define SPEED_DP 0.0075
+#define SPEED_PARTICLES_PER_THREAD 3200
 #define SPEED_WARM_STEPS 5
 #define SPEED_STEPS 60
 #define SPEED_TRIALS 3 /* the fastest: a trial that another job interrupted reads slow */
@@ -42,14 +47,15 @@ double wl_assess_cpu_speed(int threads, struct wl_error *err) {
   struct wl_sph_const k;
   enum wl_status st = wl_sph_const_make(&cfg.prm, &k, err);
   if (st) return NAN;
+  const double length = fmax(SPEED_LENGTH, (double)SPEED_PARTICLES_PER_THREAD * cfg.n_threads *
+                                               SPEED_DP * SPEED_DP / SPEED_DEPTH);
   const double m = 5 * SPEED_DP;
-  cfg.lo[0] = -m, cfg.hi[0] = SPEED_LENGTH + m;
+  cfg.lo[0] = -m, cfg.hi[0] = length + m;
   cfg.lo[1] = -m, cfg.hi[1] = 2 * SPEED_DEPTH;
   struct wl_scene sc;
   wl_scene_init(&sc, &k, 0, 0);
-  const double tx[4] = {0, 0, SPEED_LENGTH, SPEED_LENGTH},
-               tz[4] = {1.5 * SPEED_DEPTH, 0, 0, 1.5 * SPEED_DEPTH};
-  const double lo[2] = {0, 0}, hi[2] = {SPEED_LENGTH, SPEED_DEPTH};
+  const double tx[4] = {0, 0, length, length}, tz[4] = {1.5 * SPEED_DEPTH, 0, 0, 1.5 * SPEED_DEPTH};
+  const double lo[2] = {0, 0}, hi[2] = {length, SPEED_DEPTH};
   struct wl_particles init = {0};
   st = wl_scene_boundary_polyline(&sc, tx, tz, 4, 3, WL_KIND_FIXED, 0, &cfg, err);
   if (!st) st = wl_scene_fluid_block(&sc, lo, hi, SPEED_DEPTH, err);
