@@ -32,9 +32,6 @@
 #define LAND_PER_HEIGHT 5.0
 /* Distance kept between a gauge and a truncated left end of the flume [m]. */
 #define GAUGE_CLEARANCE 0.5
-/* Boundary layers of dynamic boundary particles (enough for the support 2h
- * of a Wendland kernel at h/dp up to 1.5). */
-#define BOUNDARY_LAYERS 3
 /* Memory of a run: a fixed part (libraries, the result record) and bytes
  * per particle. Host: the peak resident size of `assess` on the CPU backend
  * (state, the sort's second copy, cell index, snapshot buffers), measured
@@ -449,11 +446,16 @@ static void case_cost(const struct wl_scenario *s, struct wl_plan *p, double x_l
   double xw = s->wall.x.q.si;
   double area = wet_area(s, p->h, x_left);
   double wall_top = wl_scenario_bed_z(s, xw) + s->wall.height.q.si;
-  /* bed and land to the end of the flume, left end and seawall faces */
-  double perimeter = (xw + p->land_length - x_left) + 2.0 * wall_top + p->h;
+  /* flume.c's polyline: the left end (or the piston) from the domain's top
+   * to the bed, the bed and land to the end of the flume, the seawall's
+   * face, the end wall up to the top; ceil(2h / dp) layers behind it */
+  const double z_top = fmax(wall_top, p->h) + fmax(3.0 * rise, 0.5 * p->h);
+  const double layers = ceil(2.0 * p->h_sml / p->dp);
+  double perimeter = (z_top - wl_scenario_bed_z(s, x_left)) + (xw + p->land_length - x_left) +
+                     s->wall.height.q.si + (z_top - wall_top);
   double across = p->dims == 3 ? s->domain.width.q.si / (p->symmetry ? 2 : 1) / p->dp : 1.0;
   *n_fluid = count_of(area / (p->dp * p->dp) * across);
-  *n_boundary = count_of(BOUNDARY_LAYERS * perimeter / p->dp * across);
+  *n_boundary = count_of(layers * perimeter / p->dp * across);
   if (p->refine && p->refine_from > x_left) {
     /* each level over its own range and into the other's by the overlap
      * and its band (vres.h); both step at the fine level's dt */
@@ -462,16 +464,16 @@ static void case_cost(const struct wl_scenario *s, struct wl_plan *p, double x_l
     const double dpc = p->dp_coarse, ov = p->refine_overlap;
     const double a_c = a_coarse + d_if * (ov + p->refine_band[0]);
     const double a_f = a_fine + d_if * (ov + p->refine_band[1]);
-    const double per_c = (xf - x_left) + ov + p->refine_band[0] + p->h;
-    const double per_f = perimeter - (xf - x_left) + ov + p->refine_band[1] - p->h;
+    const double left = z_top - wl_scenario_bed_z(s, x_left);
+    const double per_c = left + (xf - x_left) + ov + p->refine_band[0];
+    const double per_f = perimeter - left - (xf - x_left) + ov + p->refine_band[1];
     *n_fluid = count_of(a_c / (dpc * dpc) + a_f / (p->dp * p->dp));
-    *n_boundary = count_of(BOUNDARY_LAYERS * (per_c / dpc + per_f / p->dp));
+    /* the same number of layers: each level's h / dp is the fine level's */
+    *n_boundary = count_of(layers * (per_c / dpc + per_f / p->dp));
   }
   if (p->dims == 3) {
     /* flume.c: the polyline extruded under the side walls too, and the
      * side walls over the flume's profile up to the domain's top */
-    const double layers = ceil(2.0 * p->h_sml / p->dp);
-    const double z_top = fmax(wall_top, p->h) + fmax(3.0 * rise, 0.5 * p->h);
     const double x_end = xw + p->land_length;
     double profile = (x_end - x_left) * z_top - p->land_length * wall_top -
                      ((xw - x_left) * p->h - area);
