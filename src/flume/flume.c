@@ -436,14 +436,18 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
   return WL_OK;
 }
 
+/* Whether wl_flume_crop keeps particle i of p. */
+static int crop_keeps(const struct wl_particles *p, int i, double lo, double hi, double margin) {
+  const double x = p->pos[0][i];
+  return p->kind[i] == WL_KIND_FLUID ? x >= lo && x < hi : x >= lo - margin && x < hi + margin;
+}
+
 enum wl_status wl_flume_crop(struct wl_flume *f, double fluid_lo, double fluid_hi, double margin,
                              struct wl_error *err) {
   const struct wl_particles *p = &f->particles;
   int n = 0, nb = 0;
   for (int i = 0; i < p->n; i++) {
-    const double x = p->pos[0][i];
-    const int keep = p->kind[i] == WL_KIND_FLUID ? x >= fluid_lo && x < fluid_hi
-                                                 : x >= fluid_lo - margin && x < fluid_hi + margin;
+    const int keep = crop_keeps(p, i, fluid_lo, fluid_hi, margin);
     n += keep;
     nb += keep && i < p->n_bound;
   }
@@ -455,10 +459,7 @@ enum wl_status wl_flume_crop(struct wl_flume *f, double fluid_lo, double fluid_h
   if (st) return st;
   int k = 0;
   for (int i = 0; i < p->n; i++) {
-    const double x = p->pos[0][i];
-    const int keep = p->kind[i] == WL_KIND_FLUID ? x >= fluid_lo && x < fluid_hi
-                                                 : x >= fluid_lo - margin && x < fluid_hi + margin;
-    if (!keep) continue;
+    if (!crop_keeps(p, i, fluid_lo, fluid_hi, margin)) continue;
     for (int a = 0; a < p->dim; a++) q.pos[a][k] = p->pos[a][i], q.vel[a][k] = p->vel[a][i];
     q.rho[k] = p->rho[i];
     q.id[k] = (unsigned)k;

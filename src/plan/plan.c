@@ -439,8 +439,10 @@ static long count_of(double x) {
 }
 
 /* Particles of one case whose flume starts at x_left, and its
- * particle-steps to t_end at its time step dt. */
-static void case_cost(const struct wl_scenario *s, struct wl_plan *p, double x_left, double t_end,
+ * particle-steps to t_end at its time step dt; two_levels: as
+ * resolution.refine lays it out (p->refine's layout), else dp everywhere. */
+static void case_cost(const struct wl_scenario *s, struct wl_plan *p, int two_levels,
+                      double x_left, double t_end,
                       double rise, double dt, long *n_fluid, long *n_boundary,
                       double *particle_steps) {
   double xw = s->wall.x.q.si;
@@ -456,7 +458,7 @@ static void case_cost(const struct wl_scenario *s, struct wl_plan *p, double x_l
   double across = p->dims == 3 ? s->domain.width.q.si / (p->symmetry ? 2 : 1) / p->dp : 1.0;
   *n_fluid = count_of(area / (p->dp * p->dp) * across);
   *n_boundary = count_of(layers * perimeter / p->dp * across);
-  if (p->refine && p->refine_from > x_left) {
+  if (two_levels && p->refine_from > x_left) {
     /* each level over its own range and into the other's by the overlap
      * and its band (vres.h); both step at the fine level's dt */
     const double xf = p->refine_from, d_if = p->h - wl_scenario_bed_z(s, xf);
@@ -603,8 +605,9 @@ double wl_plan_level_dp(const struct wl_scenario *s, const struct wl_plan *p, do
 /* resolution.refine: the two levels' layout (vres.h wl_vres_layout), and
  * what the coupling needs of the scene: 2D, the interface over a flat bed
  * from the coarse level's water to the fine level's (the flux points stand
- * on it), every depth in whole rows of both spacings there (checked by the
- * notes of whole rows), the explosion's crater clear of the coarse band. */
+ * on it), the still water there in whole rows of both spacings (so that
+ * the two free surfaces meet), the explosion's crater clear of the fine
+ * level's band. */
 static enum wl_status plan_refine(const struct wl_scenario *s, struct wl_plan *p,
                                   struct wl_error *err) {
   p->refine = s->resolution.refine.present;
@@ -667,10 +670,13 @@ static enum wl_status plan_refine(const struct wl_scenario *s, struct wl_plan *p
     return wl_error_set(err, WL_EINPUT,
                         "%s%s: resolution.refine.from: at dp = %g m the still water at the "
                         "interface is %.4g m in the fine level and %.4g m in the coarse one "
-                        "(2 dp): the two free surfaces would not meet; expected dp: auto (it "
-                        "picks a spacing that models both) or a dp that divides the depth %.4g m "
-                        "into an even number of rows",
-                        s->path, where(rf, rbuf), p->dp, df, dc, p->h - zf);
+                        "(2 dp): the two free surfaces would not meet; expected %s a dp that "
+                        "divides the depth %.4g m into an even number of rows",
+                        s->path, where(rf, rbuf), p->dp, df, dc,
+                        s->resolution.dp.is_auto
+                            ? "(no spacing near the one particles_per_height asks models both) "
+                            : "dp: auto (it picks a spacing that models both) or",
+                        p->h - zf);
   return WL_OK;
 }
 
@@ -760,7 +766,7 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
   if (p->solitary.present) {
     struct wl_plan_solitary *ps = &p->solitary;
     if (!s->run.end_time.is_auto) ps->end_time = s->run.end_time.q.si;
-    case_cost(s, p, ps->x_left, ps->end_time, ps->wave.H, ps->dt, &ps->n_fluid, &ps->n_boundary,
+    case_cost(s, p, p->refine, ps->x_left, ps->end_time, ps->wave.H, ps->dt, &ps->n_fluid, &ps->n_boundary,
               &ps->particle_steps);
     p->particle_steps += ps->particle_steps;
     if (ps->n_fluid + ps->n_boundary > n_max) n_max = ps->n_fluid + ps->n_boundary;
@@ -769,7 +775,7 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
   if (p->explosion.present) {
     struct wl_plan_explosion *px = &p->explosion;
     if (!s->run.end_time.is_auto) px->end_time = s->run.end_time.q.si;
-    case_cost(s, p, px->x_left, px->end_time, 2.0 * px->eta0, px->dt, &px->n_fluid,
+    case_cost(s, p, p->refine, px->x_left, px->end_time, 2.0 * px->eta0, px->dt, &px->n_fluid,
               &px->n_boundary, &px->particle_steps);
     p->particle_steps += px->particle_steps;
     if (px->n_fluid + px->n_boundary > n_max)
@@ -808,22 +814,20 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
                         p->dp, (double)n_max, p->memory_bytes / 1073741824.0,
                         (double)WL_PLAN_PARTICLES_MAX);
   }
-  if (p->refine) {
-    p->uniform_particle_steps = 0;
-    p->refine = 0; /* the same cases at dp everywhere */
+  if (p->refine) { /* the same cases at dp everywhere, for the saving `check` prints */
     long nf, nb;
     double ps;
+    p->uniform_particle_steps = 0;
     if (p->solitary.present) {
-      case_cost(s, p, p->solitary.x_left, p->solitary.end_time, p->solitary.wave.H,
+      case_cost(s, p, 0, p->solitary.x_left, p->solitary.end_time, p->solitary.wave.H,
                 p->solitary.dt, &nf, &nb, &ps);
       p->uniform_particle_steps += ps;
     }
     if (p->explosion.present) {
-      case_cost(s, p, p->explosion.x_left, p->explosion.end_time, 2.0 * p->explosion.eta0,
+      case_cost(s, p, 0, p->explosion.x_left, p->explosion.end_time, 2.0 * p->explosion.eta0,
                 p->explosion.dt, &nf, &nb, &ps);
       p->uniform_particle_steps += ps;
     }
-    p->refine = 1;
   }
   p->cpu_seconds = p->particle_steps * p->evals_per_step /
                    (p->dims == 3 ? WL_PLAN_CPU_RATE_3D : WL_PLAN_CPU_RATE);
