@@ -2,6 +2,7 @@
  * checked by a round trip through an independent path or against the seeds'
  * and REFERENCES' numbers. */
 #include <gsl/gsl_errno.h>
+#include <math.h>
 #include <string.h>
 
 #include "testutil.h"
@@ -41,8 +42,95 @@ static int plan_seawall(double dp, struct wl_scenario *sw, struct wl_plan *pw) {
   return ok;
 }
 
+/* 1 when some note of the plan contains `what`. */
+static int has_note(const struct wl_plan *p, const char *what) {
+  for (int i = 0; i < p->n_notes; i++)
+    if (strstr(p->notes[i], what)) return 1;
+  return 0;
+}
+
+/* resolution.refine.from: auto, against the rule written out by hand
+ * (plan.h): the interface 2 still-water depths seaward of the bed's first
+ * change (on a flat bed, the solitary wave's half-length to 1 % of H,
+ * acosh(10) / k, k = sqrt(3 H / (4 d^3)), if longer), less the coarse
+ * level's reach beyond it: three bands of overlap, its band and 2 h_c. A
+ * band is whole rows of at least 2 h: h = 1.2 sqrt(2) dp = 1.697 dp, so
+ * 4 dp_c; the reach is 12 + 4 + 2 x 1.697 = 19.394 dp_c. */
+static void refine_auto(void) {
+  struct wl_scenario s;
+  struct wl_plan p;
+  const double beyond = 12.0 + 4.0 + 2.0 * 1.2 * sqrt(2.0); /* in coarse spacings */
+  char text[1024];
+  const char *slope = "scenario: t\nwater: {depth: 0.5 m}\ndomain: {length: 20 m}\n"
+                      "bathymetry: [{from: 10 m, slope: 1/10}, {from: 13 m, slope: 0}]\n"
+                      "wall: {x: 15 m, height: 0.5 m}\nloads: {solitary: {height: %g m}%s}\n"
+                      "resolution: {dp: 0.0125 m, refine: {from: auto}}\n%s";
+  /* coarse level 0.025 m: 4.8 particles over 0.12 m */
+  snprintf(text, sizeof text, slope, 0.12, "", "");
+  if (make(text, &s, &p)) {
+    CHECK_TRUE(p.refine && p.refine_auto && p.solitary.refine, "from: auto refines the solitary case");
+    CHECK_REL(p.dp_coarse, 0.025, 1e-12, "the coarse level at 2 dp");
+    CHECK_REL(p.refine_from, 10.0 - 2 * 0.5 - beyond * 0.025, 1e-9,
+              "the interface: two depths and the coarse level's reach seaward of the toe (by hand)");
+  }
+  wl_scenario_clear(&s);
+  /* a machine whose run takes the GPU: one resolution (the coupling runs
+   * on the host) */
+  snprintf(text, sizeof text, slope, 0.12, "", "");
+  if (make(text, &s, &p)) {
+    struct wl_plan_machine gpu = {0};
+    struct wl_plan_choice ch;
+    struct wl_error err;
+    wl_error_clear(&err);
+    gpu.device_bytes = 80e9, gpu.threads = 16, gpu.budget_seconds = 3600;
+    CHECK_TRUE(wl_plan_choose(&s, &gpu, &ch, &err) == WL_OK && wl_plan_make(&s, &p, &err) == WL_OK &&
+                   !p.refine && has_note(&p, "GPU"),
+               "from: auto on a GPU machine: one resolution, said");
+  }
+  wl_scenario_clear(&s);
+  /* 3.2 particles over 0.08 m in the coarse level: one resolution, said */
+  snprintf(text, sizeof text, slope, 0.08, "", "");
+  if (make(text, &s, &p)) {
+    CHECK_TRUE(!p.refine && !p.solitary.refine, "from: auto keeps one resolution under 4 a height");
+    CHECK_TRUE(has_note(&p, "from: auto: one resolution"), "and check says why");
+  }
+  wl_scenario_clear(&s);
+  /* an explosion beside it runs at dp everywhere */
+  snprintf(text, sizeof text, slope, 0.12, ", explosion: {energy: same-as-solitary, at: 4 m}", "");
+  if (make(text, &s, &p)) {
+    CHECK_TRUE(p.solitary.refine && !p.explosion.refine,
+               "from: auto: the solitary case refines, the explosion does not");
+    CHECK_TRUE(has_note(&p, "the explosion runs at dp everywhere"), "and check says so");
+  }
+  wl_scenario_clear(&s);
+  /* 3D: one resolution, said (an interface the scenario gives is refused) */
+  snprintf(text, sizeof text, slope, 0.12, "", "");
+  char *dims = strstr(text, "domain: {length: 20 m}");
+  if (dims) {
+    char t3[1100];
+    snprintf(t3, sizeof t3, "%.*sdomain: {length: 20 m, width: 0.3 m, dimensions: 3}%s",
+             (int)(dims - text), text, dims + strlen("domain: {length: 20 m}"));
+    if (make(t3, &s, &p))
+      CHECK_TRUE(!p.refine && has_note(&p, "2D only"), "from: auto in 3D: one resolution, said");
+    wl_scenario_clear(&s);
+  }
+  /* a flat bed: the solitary_wall flume (H/h = 0.3 on 0.2 m), fine over the
+   * wave's half-length before the wall */
+  const char *flat = "scenario: t\nwater: {depth: 0.2 m}\ndomain: {length: 7 m}\n"
+                     "wall: {x: 6 m, height: 0.4 m}\nloads: {solitary: {height: 0.06 m}}\n"
+                     "resolution: {dp: 0.005 m, refine: {from: auto}}\n";
+  if (make(flat, &s, &p)) {
+    const double k = sqrt(3.0 * 0.06 / (4.0 * 0.2 * 0.2 * 0.2));
+    CHECK_TRUE(p.solitary.refine, "from: auto on a flat bed refines");
+    CHECK_REL(p.refine_from, 6.0 - acosh(10.0) / k - beyond * 0.01, 1e-9,
+              "the interface a half-length of the wave and the reach before the wall (by hand)");
+  }
+  wl_scenario_clear(&s);
+}
+
 int main(void) {
   gsl_set_error_handler_off();
+  refine_auto();
   struct wl_scenario s;
   struct wl_plan p;
   const char *per_width = "scenario: t\nwater: {depth: 0.36 m}\ndomain: {length: 36 m}\n"

@@ -52,6 +52,7 @@ struct wl_plan_solitary {
                                           the flume gives the solver */
   double end_time;                     /* simulated time of this case [s] */
   double x_left;                       /* the modelled flume starts here [m] */
+  int refine;                          /* runs at two resolutions (resolution.refine) */
   long n_fluid, n_boundary;            /* estimated particles */
   double particle_steps;               /* estimated to end_time */
 };
@@ -86,6 +87,7 @@ struct wl_plan_explosion {
   double c0, dt;                    /* as the solitary case's */
   double end_time;                  /* simulated time of this case [s] */
   double x_left;                    /* the modelled flume starts here [m] */
+  int refine;                          /* runs at two resolutions (resolution.refine) */
   long n_fluid, n_boundary;         /* estimated particles */
   double particle_steps;            /* estimated to end_time */
 };
@@ -138,8 +140,11 @@ struct wl_plan {
                                        the cases side by side, as assess runs them */
   double gpu_case_work_seconds[2];
   /* resolution.refine (vres.h): two levels, dp from refine_from to the
-   * wall, dp_coarse = 2 dp seaward of it, laid out by wl_vres_layout */
-  int refine;
+   * wall, dp_coarse = 2 dp seaward of it, laid out by wl_vres_layout, for
+   * the cases whose `refine` is set (from: auto refines the solitary case
+   * alone) */
+  int refine;                       /* some case runs at two resolutions */
+  int refine_auto;                  /* refine_from placed by the plan (from: auto) */
   double refine_from;               /* the interface [m] */
   double dp_coarse;                 /* the coarse level's spacing [m] */
   double refine_overlap, refine_band[2]; /* wl_vres_layout's overlap and bands (coarse, fine) [m] */
@@ -164,6 +169,27 @@ struct wl_plan {
 /* Most output times (samples of gauges, probes and wall force) one case may
  * have (run.output_interval against its end time). */
 #define WL_PLAN_OUTPUTS_MAX 1e6
+
+/* resolution.refine: the two levels overlap by this many of the coarse
+ * level's band widths on either side of the interface (vres.h
+ * wl_vres_opts.overlap). Three, not the module's one: with the coarse level
+ * at 4-4.5 particles a wave height the wall's run-up came within 1.1-1.5 %
+ * of the uniform fine run's (one band: 3-4.4 % low) and the peaks and
+ * impulses within the same spread, for 4 % more runtime
+ * (docs/variable-resolution.md, "In a scenario"). */
+#define WL_PLAN_REFINE_OVERLAP_BANDS 3.0
+/* Below this many particles over the wave height the coarse level does not
+ * carry the wave to the fine level within 2 % (measured, as above); `check`
+ * says so. */
+#define WL_PLAN_REFINE_COARSE_PPH_MIN 4.0
+/* resolution.refine.from: auto places the interface this many still-water
+ * depths seaward of the bed's first change (the slope's toe: a long wave
+ * starts to feel a slope about a depth or two ahead of it; seawall.yaml's
+ * measured interface stood 0.8 m, 2.3 depths, off its toe), and declines
+ * to refine where the coarse level would keep less than this share of the
+ * modelled flume. */
+#define WL_PLAN_REFINE_TOE_DEPTHS 2.0
+#define WL_PLAN_REFINE_COARSE_SHARE_MIN 0.2
 
 #define WL_PLAN_COEFH_2D 1.2
 #define WL_PLAN_COEFH_3D 1.0

@@ -142,7 +142,10 @@ struct wl_scenario {
     int levels_given;
     struct {
       int present;
-      struct wl_scenario_value from; /* the fine level's seaward end [m] (vres.h) */
+      struct wl_scenario_value from; /* the fine level's seaward end [m] (vres.h), or auto
+                                        (plan.c plan_refine places it from the scene) */
+      int gpu; /* from: auto on a machine whose run takes the GPU (wl_plan_choose): the
+                  CUDA backend runs one resolution */
     } refine;
   } resolution;
   struct {

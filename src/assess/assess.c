@@ -339,8 +339,9 @@ static enum wl_status pick_backend(const struct wl_scenario *s, const struct wl_
   *ops = &wl_backend_cpu_ops;
   if (choice == WL_BACKEND_CPU) return WL_OK;
   /* two resolutions: the CPU backend only (vres.h: it edits the particles
-   * between steps on the host) */
-  if (s->resolution.refine.present) {
+   * between steps on the host); from: auto lets the GPU run one
+   * (wl_plan_choose) */
+  if (s->resolution.refine.present && !s->resolution.refine.from.is_auto) {
     if (choice == WL_BACKEND_AUTO) return WL_OK;
     return wl_error_set(err, WL_EUSAGE,
                         "%s: resolution.refine: two resolutions run on the CPU backend only "
@@ -524,8 +525,13 @@ enum wl_status assess_case(const struct wl_scenario *s, const struct wl_plan *pl
   snprintf(c->name, sizeof c->name, "%s", wl_flume_case_name(load));
   enum wl_status st = wl_flume_build(s, plan, load, &c->flume, err);
   if (st) return st;
+  const struct wl_backend_ops *ops = NULL;
+  if ((st = pick_backend(s, opts, &ops, err))) return st;
   struct case_levels *lv = NULL;
-  if (plan->refine) {
+  /* two levels on the CPU backend; from: auto on the GPU (a sweep's case,
+   * planned without the machine) runs one */
+  if ((load == WL_CASE_SOLITARY ? plan->solitary.refine : plan->explosion.refine) &&
+      ops == &wl_backend_cpu_ops) {
     if (!(lv = calloc(1, sizeof *lv))) return wl_error_set(err, WL_ENOMEM, "no memory");
     if ((st = levels_build(s, plan, load, &c->flume, &lv->coarse, lv->spec, &lv->vo, err))) {
       wl_flume_clear(&lv->coarse);
@@ -557,13 +563,6 @@ enum wl_status assess_case(const struct wl_scenario *s, const struct wl_plan *pl
                                                : 0.0;
   c->rec.n_gauges = c->flume.n_gauges;
   c->rec.n_probes = c->flume.n_probes;
-  const struct wl_backend_ops *ops = NULL;
-  st = pick_backend(s, opts, &ops, err);
-  if (st) {
-    if (lv) wl_flume_clear(&lv->coarse);
-    free(lv);
-    return st;
-  }
   c->status = run_case(opts, ops, snapshots, (how & ASSESS_DEFER) != 0, lv, c, err);
   if (lv) wl_flume_clear(&lv->coarse);
   free(lv);

@@ -59,6 +59,7 @@ enum wl_status levels_build(const struct wl_scenario *s, const struct wl_plan *p
   enum wl_status st = wl_flume_build(s, &pc, load, coarse, err);
   if (st) return st;
   memset(vo, 0, sizeof *vo);
+  vo->overlap = WL_PLAN_REFINE_OVERLAP_BANDS;
   struct wl_vres_layout lay;
   wl_vres_layout(plan->refine_from, plan->dp_coarse, plan->dp, plan->h_sml / plan->dp, 1, vo, &lay);
   struct wl_flume *lv[2] = {coarse, fine};

@@ -582,8 +582,11 @@ double wl_plan_whole_rows_dp(const struct wl_scenario *s, double dp_target, doub
         if (h - zb > 0)
           e = fmax(e, fabs(wl_plan_modelled_depth(h, z_min, zb, dp) - (h - zb)) / (h - zb));
       }
-      if (s->resolution.refine.present) { /* the coarse level's rows at the interface */
-        const double zf = wl_scenario_bed_z(s, s->resolution.refine.from.q.si);
+      if (s->resolution.refine.present && !s->resolution.refine.gpu) {
+        /* the coarse level's rows at the interface (from: auto puts it on
+         * the offshore bed) */
+        const struct wl_scenario_value *rf = &s->resolution.refine.from;
+        const double zf = rf->is_auto ? z_min : wl_scenario_bed_z(s, rf->q.si);
         if (h - zf > 0)
           e = fmax(e, fabs(wl_plan_modelled_depth(h, z_min, zf, 2.0 * dp) - (h - zf)) / (h - zf));
       }
@@ -602,81 +605,184 @@ double wl_plan_level_dp(const struct wl_scenario *s, const struct wl_plan *p, do
                                   : p->dp * factor;
 }
 
-/* resolution.refine: the two levels' layout (vres.h wl_vres_layout), and
- * what the coupling needs of the scene: 2D, the interface over a flat bed
- * from the coarse level's water to the fine level's (the flux points stand
- * on it), the still water there in whole rows of both spacings (so that
- * the two free surfaces meet), the explosion's crater clear of the fine
- * level's band. */
-static enum wl_status plan_refine(const struct wl_scenario *s, struct wl_plan *p,
-                                  struct wl_error *err) {
-  p->refine = s->resolution.refine.present;
-  if (!p->refine) return WL_OK;
-  const struct wl_scenario_value *rf = &s->resolution.refine.from;
-  char rbuf[32];
-  if (p->dims != 2)
-    return wl_error_set(err, WL_EINPUT,
-                        "%s%s: resolution.refine.from: two resolutions run in 2D only, and this "
-                        "scenario plans 3D (%s); expected domain.dimensions: 2 or no "
-                        "resolution.refine",
-                        s->path, where(rf, rbuf), p->dims_reason);
-  p->refine_from = rf->q.si;
-  p->dp_coarse = 2.0 * p->dp;
+/* The first x seaward of the wall where the bed departs from the bed at
+ * x0 (a slope begins or a step): the toe of the structure's fore slope;
+ * the wall's x for a flat bed. */
+static double first_bed_change(const struct wl_scenario *s, double x0) {
+  const double xw = s->wall.x.q.si, z0 = wl_scenario_bed_z(s, x0);
+  double x_change = xw;
+  for (int i = 0; i < s->n_bed; i++) {
+    const double xb = s->bed[i].from.q.si;
+    if (xb > x0 && xb < x_change && (fabs(wl_scenario_bed_z(s, xb + 1e-6) - z0) > 1e-12 ||
+                                     fabs(wl_scenario_bed_z(s, xb) - z0) > 1e-12))
+      x_change = xb;
+  }
+  return x_change;
+}
+
+/* What rules an interface at xf out (NULL: none; else the reason, in
+ * `why`, with `fix`, what to change): room for both levels' water seaward
+ * and landward (lo..hi, the layout's reach), a flat bed there (the flux
+ * points stand on it), the still water in whole rows of both spacings (so
+ * that the two free surfaces meet), the explosion's crater clear of the
+ * fine level's band when the explosion refines. */
+static const char *refine_problem(const struct wl_scenario *s, const struct wl_plan *p, double xf,
+                                  int explosion_refines, char *why, size_t n) {
   struct wl_vres_opts vo = {0};
+  vo.overlap = WL_PLAN_REFINE_OVERLAP_BANDS;
   struct wl_vres_layout lay;
-  wl_vres_layout(p->refine_from, p->dp_coarse, p->dp, p->h_sml / p->dp, 1, &vo, &lay);
-  p->refine_overlap = lay.overlap;
-  p->refine_band[0] = lay.band[0], p->refine_band[1] = lay.band[1];
-  /* the bed under both levels' water around the interface, and their
-   * kernels' reach beyond it */
-  const double lo = lay.water_lo[1] - 2.0 * wl_sph_smoothing_length(p->coefh, 2, p->dp_coarse);
-  const double hi = lay.water_hi[0] + 2.0 * wl_sph_smoothing_length(p->coefh, 2, p->dp_coarse);
-  const double z_if = wl_scenario_bed_z(s, p->refine_from);
+  wl_vres_layout(xf, p->dp_coarse, p->dp, p->h_sml / p->dp, 1, &vo, &lay);
+  const double reach = 2.0 * wl_sph_smoothing_length(p->coefh, 2, p->dp_coarse);
+  const double lo = lay.water_lo[1] - reach, hi = lay.water_hi[0] + reach;
+  const double z_if = wl_scenario_bed_z(s, xf);
   const double x_left = fmin(p->solitary.present ? p->solitary.x_left : INFINITY,
-                             p->explosion.present ? p->explosion.x_left : INFINITY);
-  if (lo <= x_left || hi >= s->wall.x.q.si)
-    return wl_error_set(err, WL_EINPUT,
-                        "%s%s: resolution.refine.from: %g m leaves no room for the two levels' "
-                        "overlap and bands (%.3g to %.3g m at dp = %.3g m); expected a position "
-                        "between %.3g and %.3g m",
-                        s->path, where(rf, rbuf), p->refine_from, lo, hi, p->dp,
-                        x_left + (p->refine_from - lo), s->wall.x.q.si - (hi - p->refine_from));
+                             p->explosion.present && explosion_refines ? p->explosion.x_left
+                                                                        : INFINITY);
+  if (lo <= x_left || hi >= s->wall.x.q.si) {
+    snprintf(why, n,
+             "%g m leaves no room for the two levels' overlap and bands (%.3g to %.3g m at dp = "
+             "%.3g m); expected a position between %.3g and %.3g m",
+             xf, lo, hi, p->dp, x_left + (xf - lo), s->wall.x.q.si - (hi - xf));
+    return why;
+  }
   for (int i = 0; i < s->n_bed; i++) {
     const double xb = s->bed[i].from.q.si;
     if (xb > lo && xb < hi && fabs(wl_scenario_bed_z(s, xb + 1e-9) - z_if) +
                                       fabs(wl_scenario_bed_z(s, hi) - z_if) +
-                                      fabs(wl_scenario_bed_z(s, lo) - z_if) > 1e-9)
-      return wl_error_set(err, WL_EINPUT,
-                          "%s%s: resolution.refine.from: the bed changes at %g m (bathymetry[%d]), "
-                          "within the two levels' overlap and bands (%.3g to %.3g m); the "
-                          "interface needs a flat bed there: expected `from` at least %.3g m "
-                          "from every change of slope",
-                          s->path, where(rf, rbuf), xb, i, lo, hi,
-                          fmax(p->refine_from - lo, hi - p->refine_from));
+                                      fabs(wl_scenario_bed_z(s, lo) - z_if) > 1e-9) {
+      snprintf(why, n,
+               "the bed changes at %g m (bathymetry[%d]), within the two levels' overlap and "
+               "bands (%.3g to %.3g m); the interface needs a flat bed there: expected `from` at "
+               "least %.3g m from every change of slope",
+               xb, i, lo, hi, fmax(xf - lo, hi - xf));
+      return why;
+    }
   }
-  if (p->explosion.present) {
-    const double reach = p->explosion.x_center + 2.0 * p->explosion.r0; /* the lip within 2 r0 */
-    if (reach > lo)
-      return wl_error_set(err, WL_EINPUT,
-                          "%s%s: resolution.refine.from: the explosion's crater and lip reach "
-                          "%.3g m, into the fine level's band (from %.3g m); expected `from` "
-                          "beyond %.3g m",
-                          s->path, where(rf, rbuf), reach, lo, reach + (p->refine_from - lo));
+  if (p->explosion.present && explosion_refines) {
+    const double rim = p->explosion.x_center + 2.0 * p->explosion.r0; /* the lip within 2 r0 */
+    if (rim > lo) {
+      snprintf(why, n,
+               "the explosion's crater and lip reach %.3g m, into the fine level's band (from "
+               "%.3g m); expected `from` beyond %.3g m",
+               rim, lo, rim + (xf - lo));
+      return why;
+    }
   }
-  const double zf = wl_scenario_bed_z(s, p->refine_from), z_min = wl_plan_bed_min(s);
-  const double dc = wl_plan_modelled_depth(p->h, z_min, zf, p->dp_coarse);
-  const double df = wl_plan_modelled_depth(p->h, z_min, zf, p->dp);
-  if (fabs(dc - df) > 1e-9 * p->h)
-    return wl_error_set(err, WL_EINPUT,
-                        "%s%s: resolution.refine.from: at dp = %g m the still water at the "
-                        "interface is %.4g m in the fine level and %.4g m in the coarse one "
-                        "(2 dp): the two free surfaces would not meet; expected %s a dp that "
-                        "divides the depth %.4g m into an even number of rows",
-                        s->path, where(rf, rbuf), p->dp, df, dc,
-                        s->resolution.dp.is_auto
-                            ? "(no spacing near the one particles_per_height asks models both) "
-                            : "dp: auto (it picks a spacing that models both) or",
-                        p->h - zf);
+  const double z_min = wl_plan_bed_min(s);
+  const double dc = wl_plan_modelled_depth(p->h, z_min, z_if, p->dp_coarse);
+  const double df = wl_plan_modelled_depth(p->h, z_min, z_if, p->dp);
+  if (fabs(dc - df) > 1e-9 * p->h) {
+    snprintf(why, n,
+             "at dp = %g m the still water at the interface is %.4g m in the fine level and "
+             "%.4g m in the coarse one (2 dp): the two free surfaces would not meet; expected %s "
+             "a dp that divides the depth %.4g m into an even number of rows",
+             p->dp, df, dc,
+             s->resolution.dp.is_auto
+                 ? "(no spacing near the one particles_per_height asks models both) "
+                 : "dp: auto (it picks a spacing that models both) or",
+             p->h - z_if);
+    return why;
+  }
+  return NULL;
+}
+
+/* resolution.refine: the two levels' layout (vres.h wl_vres_layout) and
+ * which cases run it. An interface the scenario gives must pass
+ * refine_problem (else the error names the key); `from: auto` places one
+ * for the solitary case, WL_PLAN_REFINE_TOE_DEPTHS still-water depths
+ * seaward of the first change of the bed (the slope's toe, where shoaling
+ * begins; the wall on a flat bed, less the wave's half-length there so that
+ * it reflects whole in the fine level) and the layout's reach, and keeps one
+ * resolution, with a note saying why, where the coupling would not carry
+ * the wave (3D, the GPU, a coarse level under WL_PLAN_REFINE_COARSE_PPH_MIN
+ * particles a wave height, no flat bed, too short a coarse stretch). The
+ * explosion keeps one resolution under auto: its short waves lose a quarter
+ * of their impulse crossing the coarse level (docs/variable-resolution.md). */
+static enum wl_status plan_refine(const struct wl_scenario *s, struct wl_plan *p,
+                                  struct wl_error *err) {
+  p->refine = p->refine_auto = 0;
+  p->solitary.refine = p->explosion.refine = 0;
+  if (!s->resolution.refine.present) return WL_OK;
+  const struct wl_scenario_value *rf = &s->resolution.refine.from;
+  const int is_auto = rf->is_auto;
+  char rbuf[32], why[400];
+  p->dp_coarse = 2.0 * p->dp;
+  if (!is_auto) {
+    if (p->dims != 2)
+      return wl_error_set(err, WL_EINPUT,
+                          "%s%s: resolution.refine.from: two resolutions run in 2D only, and this "
+                          "scenario plans 3D (%s); expected domain.dimensions: 2 or no "
+                          "resolution.refine",
+                          s->path, where(rf, rbuf), p->dims_reason);
+    if (refine_problem(s, p, rf->q.si, 1, why, sizeof why))
+      return wl_error_set(err, WL_EINPUT, "%s%s: resolution.refine.from: %s", s->path,
+                          where(rf, rbuf), why);
+    p->refine_from = rf->q.si;
+    p->solitary.refine = p->solitary.present;
+    p->explosion.refine = p->explosion.present;
+  } else {
+    const char *none = NULL;
+    double xf = 0.0;
+    if (!p->solitary.present) none = "the scenario has no solitary case";
+    else if (p->dims != 2) none = "two resolutions run in 2D only and this scenario plans 3D";
+    else if (s->resolution.refine.gpu) none = "this run takes the GPU, where two resolutions do not run yet";
+    else if (p->solitary.wave.H / p->dp_coarse < WL_PLAN_REFINE_COARSE_PPH_MIN) {
+      snprintf(why, sizeof why,
+               "the coarse level (dp = %.4g m) would hold %.1f particles over the solitary wave's "
+               "height, under the %g that carry it within 2 %%",
+               p->dp_coarse, p->solitary.wave.H / p->dp_coarse, WL_PLAN_REFINE_COARSE_PPH_MIN);
+      none = why;
+    } else {
+      const double x_left = p->solitary.x_left, xw = s->wall.x.q.si;
+      const double x_change = first_bed_change(s, x_left);
+      double margin = WL_PLAN_REFINE_TOE_DEPTHS * (p->h - wl_scenario_bed_z(s, x_left));
+      if (x_change >= xw) { /* a flat bed to the wall: the wave's half-length (to 1 % of H) */
+        const double H = p->solitary.wave.H, d = p->h - wl_scenario_bed_z(s, x_left);
+        margin = fmax(margin, acosh(10.0) / sqrt(3.0 * H / (4.0 * d * d * d)));
+      }
+      struct wl_vres_opts vo = {0};
+      vo.overlap = WL_PLAN_REFINE_OVERLAP_BANDS;
+      struct wl_vres_layout lay;
+      wl_vres_layout(0.0, p->dp_coarse, p->dp, p->h_sml / p->dp, 1, &vo, &lay);
+      const double beyond = lay.water_hi[0] + 2.0 * wl_sph_smoothing_length(p->coefh, 2, p->dp_coarse);
+      xf = x_change - margin - beyond;
+      if (xf - x_left < WL_PLAN_REFINE_COARSE_SHARE_MIN * (xw - x_left)) {
+        snprintf(why, sizeof why,
+                 "the interface would stand at %.3g m, leaving the coarse level %.2g m of the "
+                 "%.3g m modelled: too little to save time",
+                 xf, fmax(0.0, xf - x_left), xw - x_left);
+        none = why;
+      } else if (refine_problem(s, p, xf, 0, why, sizeof why)) {
+        none = why;
+      }
+    }
+    if (none) {
+      note(p, "resolution.refine.from: auto: one resolution: %s", none);
+      return WL_OK;
+    }
+    p->refine_from = xf;
+    p->refine_auto = 1;
+    p->solitary.refine = 1;
+    if (p->explosion.present)
+      note(p, "resolution.refine.from: auto: the explosion runs at dp everywhere (its short waves "
+              "lose height crossing a coarse level: docs/variable-resolution.md)");
+  }
+  p->refine = 1;
+  struct wl_vres_opts vo = {0};
+  vo.overlap = WL_PLAN_REFINE_OVERLAP_BANDS;
+  struct wl_vres_layout lay;
+  wl_vres_layout(p->refine_from, p->dp_coarse, p->dp, p->h_sml / p->dp, 1, &vo, &lay);
+  p->refine_overlap = lay.overlap;
+  p->refine_band[0] = lay.band[0], p->refine_band[1] = lay.band[1];
+  if (p->solitary.refine && p->solitary.wave.H / p->dp_coarse < WL_PLAN_REFINE_COARSE_PPH_MIN)
+    note(p, "resolution.refine: the coarse level (dp = %.4g m) holds %.1f particles over the "
+            "solitary wave's height; below %g the wave it hands to the fine level is off by more "
+            "than 2 %% (docs/variable-resolution.md): a smaller dp, or no refine",
+         p->dp_coarse, p->solitary.wave.H / p->dp_coarse, WL_PLAN_REFINE_COARSE_PPH_MIN);
+  if (p->explosion.refine)
+    note(p, "resolution.refine: the explosion's short waves cross the coarse level and lose "
+            "height there (seawall.yaml: a quarter of the positive impulse at the wall; "
+            "docs/variable-resolution.md); for design loads run the explosion at dp everywhere");
   return WL_OK;
 }
 
@@ -766,7 +872,7 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
   if (p->solitary.present) {
     struct wl_plan_solitary *ps = &p->solitary;
     if (!s->run.end_time.is_auto) ps->end_time = s->run.end_time.q.si;
-    case_cost(s, p, p->refine, ps->x_left, ps->end_time, ps->wave.H, ps->dt, &ps->n_fluid, &ps->n_boundary,
+    case_cost(s, p, ps->refine, ps->x_left, ps->end_time, ps->wave.H, ps->dt, &ps->n_fluid, &ps->n_boundary,
               &ps->particle_steps);
     p->particle_steps += ps->particle_steps;
     if (ps->n_fluid + ps->n_boundary > n_max) n_max = ps->n_fluid + ps->n_boundary;
@@ -775,7 +881,7 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
   if (p->explosion.present) {
     struct wl_plan_explosion *px = &p->explosion;
     if (!s->run.end_time.is_auto) px->end_time = s->run.end_time.q.si;
-    case_cost(s, p, p->refine, px->x_left, px->end_time, 2.0 * px->eta0, px->dt, &px->n_fluid,
+    case_cost(s, p, px->refine, px->x_left, px->end_time, 2.0 * px->eta0, px->dt, &px->n_fluid,
               &px->n_boundary, &px->particle_steps);
     p->particle_steps += px->particle_steps;
     if (px->n_fluid + px->n_boundary > n_max)
@@ -1118,8 +1224,10 @@ void wl_plan_write(const struct wl_plan *p, FILE *out) {
           p->memory_bytes / 1048576.0, p->gpu_memory_bytes / 1048576.0);
   fprintf(out, "  %-36s %12.4g\n", "particle-steps, all cases", p->particle_steps);
   if (p->refine) {
-    fprintf(out, "  %-36s %12.5g m      (seaward of x = %.4g m; dp from there to the wall)\n",
-            "coarse level's spacing", p->dp_coarse, p->refine_from);
+    fprintf(out, "  %-36s %12.5g m      (seaward of x = %.4g m%s; dp from there to the wall%s)\n",
+            "coarse level's spacing", p->dp_coarse, p->refine_from,
+            p->refine_auto ? ", placed by the plan" : "",
+            p->explosion.present && !p->explosion.refine ? "; the solitary case only" : "");
     fprintf(out, "  %-36s %12.4g m      (either side of the interface; bands %.3g m coarse, "
                  "%.3g m fine)\n",
             "levels' overlap", p->refine_overlap, p->refine_band[0], p->refine_band[1]);
@@ -1181,6 +1289,10 @@ enum wl_status wl_plan_choose(struct wl_scenario *s, const struct wl_plan_machin
                               struct wl_plan_choice *c, struct wl_error *err) {
   memset(c, 0, sizeof *c);
   c->machine = *m;
+  /* resolution.refine.from: auto keeps one resolution where the run takes
+   * the GPU (the coupling edits particles on the host between steps) */
+  s->resolution.refine.gpu = s->resolution.refine.present && s->resolution.refine.from.is_auto &&
+                             m->device_bytes > 0;
   struct wl_scenario_value *v = &s->resolution.particles_per_height;
   if (!v->is_auto || !s->resolution.dp.is_auto) return WL_OK;
   c->is_auto = 1;

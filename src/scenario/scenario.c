@@ -805,7 +805,8 @@ static enum wl_status check_rules(struct ctx *c, struct wl_scenario *s) {
       return at_value(c, &s->resolution.levels[i], key,
                       "levels must decrease (each one finer than the one before)");
   }
-  if (s->resolution.refine.present) {
+  if (s->resolution.refine.present && !s->resolution.refine.from.is_auto) {
+    /* from: auto is placed, or declined with a note, by the plan */
     const struct wl_scenario_value *rf = &s->resolution.refine.from;
     const double xf = rf->q.si;
     if (!(xf > 0 && xf < xw)) {

@@ -123,10 +123,12 @@ static const struct wl_key loads_keys[] = {
     {0}};
 
 static const struct wl_key refine_keys[] = {
-    {"from", KT_QTY, WL_DIM_LENGTH, OFF(resolution.refine.from), NULL, 0, NONE, 1, 0, NULL, NULL,
-     NO_FLAG, 1,
+    {"from", KT_QTY_OR_AUTO, WL_DIM_LENGTH, OFF(resolution.refine.from), NULL, 0, NONE, 1, 0,
+     NULL, NULL, NO_FLAG, 1,
      "where the fine level begins, from the paddle, over a flat bed: from here to the wall the "
-     "water is at dp, seaward of it at 2 dp"},
+     "water is at dp, seaward of it at 2 dp; or auto (the plan places it two depths seaward of "
+     "the first change of the bed, for the solitary case, where the coarse level holds 4 "
+     "particles a wave height; the explosion and GPU runs keep one resolution)"},
     {0}};
 
 static const struct wl_key resolution_keys[] = {
