@@ -126,6 +126,18 @@ static void refine_auto(void) {
               "the interface a half-length of the wave and the reach before the wall (by hand)");
   }
   wl_scenario_clear(&s);
+  /* test_solitary_wall's flume: the crest starts 0.75 L = 1.90 m before
+   * the wall, and the interface by the rule above (1.77 m from the paddle)
+   * would stand where the initial wave is half its height (over 10 %
+   * up to 1.39 + acosh(sqrt 10) / k = 2.16 m): one resolution, said */
+  const char *near = "scenario: t\nwater: {depth: 0.2 m}\ndomain: {length: 3.79 m}\n"
+                     "wall: {x: 3.289 m, height: 0.6 m}\n"
+                     "loads: {solitary: {height: 0.06 m, generation: initial, at: 1.392 m}}\n"
+                     "resolution: {dp: 0.0066667 m, refine: {from: auto}}\n";
+  if (make(near, &s, &p))
+    CHECK_TRUE(!p.refine && has_note(&p, "under the initial wave"),
+               "from: auto keeps an initial wave out of the interface: one resolution, said");
+  wl_scenario_clear(&s);
 }
 
 int main(void) {

@@ -49,7 +49,9 @@
 #define REFINE_DP (0.2 / 30)
 
 /* The run of eps at dp into *cr (refine > 0: two resolutions, dp from
- * x0 + refine (0.75 L) to the wall, 2 dp seaward); its checks against the
+ * x0 + refine (0.75 L) to the wall, 2 dp seaward, where the initial wave
+ * stands at 4 % of H; `from: auto` would put the interface under the wave
+ * here and keeps one resolution, test_plan); its checks against the
  * references above. Returns 0 when it ran. */
 static int run(double eps, double I_table, double dp, int quick, int verlet, double refine,
                struct wl_case_result *cr) {
@@ -111,7 +113,9 @@ static int run(double eps, double I_table, double dp, int quick, int verlet, dou
   CHECK_REL(cr->loads.runup, R_ref, RUNUP_TOL, "maximum run-up, Su & Mirie (1980)");
   CHECK_REL(imp_p, I2, IMPULSE_TOL, "probe impulse = 2 I (REFERENCES 4.2 and 3.4)");
   if (refine > 0)
-    printf("  two resolutions: the water they own changed by %+.3f %%\n", 100 * cr->water_change);
+    printf("  two resolutions: interface at %.4g m (the wall at %.4g m); the water they own "
+           "changed by %+.3f %%\n",
+           cr->x_interface, xw, 100 * cr->water_change);
   wl_scenario_clear(&s);
   return st != WL_OK;
 }

@@ -190,6 +190,7 @@ struct wl_plan {
  * modelled flume. */
 #define WL_PLAN_REFINE_TOE_DEPTHS 2.0
 #define WL_PLAN_REFINE_COARSE_SHARE_MIN 0.2
+#define WL_PLAN_REFINE_INITIAL_ETA_MAX 0.1
 
 #define WL_PLAN_COEFH_2D 1.2
 #define WL_PLAN_COEFH_3D 1.0

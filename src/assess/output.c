@@ -619,6 +619,12 @@ void wl_assess_results_plan(const struct wl_scenario *s, const struct wl_plan *p
     struct wl_results_setting *o = &r->settings[r->n_settings++];
     snprintf(o->key, sizeof o->key, "%s", key);
     snprintf(o->value, sizeof o->value, "%s", !v ? "?" : v->text[0] ? v->text : "none");
+    if (v && v->is_auto && !strcmp(key, "resolution.refine.from")) { /* what the plan made of it */
+      if (plan->refine)
+        snprintf(o->value, sizeof o->value, "auto: %.4g m (the solitary case)", plan->refine_from);
+      else
+        snprintf(o->value, sizeof o->value, "auto: one resolution (check's notes say why)");
+    }
     o->given = v && v->given;
   }
 
