@@ -50,12 +50,13 @@
  *
  * The force loops run the shared loop bodies of sph/gather.h and differ
  * only in how they find each particle's candidates:
- *  - k_gather_lanes (2D): WL_GATHER_LANES threads per particle, each
- *    wl_sph_gather_range over its share of every row, their sums added;
+ *  - k_gather_lanes (2D, and 3D runs under WL_LANES_MAX_PARTICLES_3D):
+ *    WL_GATHER_LANES threads per particle, each wl_sph_gather_range over
+ *    its share of every row, their sums added;
  *  - k_gather (3D with double wl_real): wl_sph_gather_block itself, one
  *    thread per particle, with the cut-off skip (a candidate beyond 2h is
  *    not evaluated; the same bits as without it);
- *  - k_gather_split (3D): the warp stages its particles' candidates in
+ *  - k_gather_split (larger 3D runs): the warp stages its particles' candidates in
  *    shared memory, marks those inside each particle's support, and splits
  *    the marked pairs evenly over its 32 lanes; each pair is
  *    wl_sph_pair_sum, the mirror planes' rows wl_sph_gather_mirrors, the
@@ -119,26 +120,39 @@ enum { MODE_REF = 0, MODE_FAST = 1, MODE_SPLIT = 2, MODE_LANES = 3 };
 #ifndef WL_LANES_MAX_PARTICLES
 #define WL_LANES_MAX_PARTICLES 262144
 #endif
+/* The same in 3D, against the split loop, whose warps of 32 particles
+ * leave a small flume's GPU as idle: lanes ran the 3D dam break at 2.06,
+ * 1.50, 1.14 and 0.90 times split's force evaluations/s at 64 k, 110 k,
+ * 156 k and 205 k particles (H100, 2026-11-27, BENCHMARKS.md "CUDA
+ * backend, H100"); the crossing, about 180 k, is the bound. */
+#ifndef WL_LANES_MAX_PARTICLES_3D
+#define WL_LANES_MAX_PARTICLES_3D 180000
+#endif
 
-/* The product's loop of dimension dim for n particles: split in 3D, where
- * staging pays (cells of ~30 particles); in 2D, where a cell holds ~8 and
+/* The product's loop of dimension dim for n particles: in 3D lanes for a
+ * small run (WL_LANES_MAX_PARTICLES_3D), else split, where staging pays
+ * (cells of ~30 particles); in 2D, where a cell holds ~8 and
  * the warp's rows are too short for split (split ran at half the rate of
  * fast there on the H100, docs/history/BENCHMARKS-history.md), lanes or
  * fast by size (WL_LANES_MAX_PARTICLES); fast in a 3D build with double
  * wl_real, which split's float staging would narrow. */
 static constexpr int default_mode(int dim, int n) {
   return dim == 2 ? (n < WL_LANES_MAX_PARTICLES ? MODE_LANES : MODE_FAST)
-                  : !WL_REAL_DOUBLE ? MODE_SPLIT : MODE_FAST;
+                  : n < WL_LANES_MAX_PARTICLES_3D ? MODE_LANES
+                  : !WL_REAL_DOUBLE              ? MODE_SPLIT
+                                                 : MODE_FAST;
 }
 
 /* Whether this build has loop `mode` for dimension dim. The product has
- * its default loops and, in both dimensions, fast: the one that runs the
- * residual viscosity (its pair term and gradients go through the shared
- * wl_sph_gather_block, which the lanes and split loops do not call). */
+ * its default loops (3D: lanes and split) and, in both dimensions, fast:
+ * the one that runs the residual viscosity (its pair term and gradients
+ * go through the shared wl_sph_gather_block, which the lanes and split
+ * loops do not call). */
 static constexpr bool loop_built(int mode, int dim) {
   return WL_CUDA_TEST_LOOPS ? mode != MODE_SPLIT || !WL_REAL_DOUBLE
          : dim == 2         ? mode == MODE_LANES || mode == MODE_FAST
-                            : mode == default_mode(dim, 0) || mode == MODE_FAST;
+                            : mode == MODE_LANES || mode == default_mode(dim, 1 << 30) ||
+                                  mode == MODE_FAST;
 }
 
 /* Threads per particle of the lanes loop and the 2D wall condition (a
@@ -715,8 +729,8 @@ template <int R> static __device__ __forceinline__ void lanes_share(int j0, int 
   *c1 = j0 + (len * (q + 1)) / R;
 }
 
-/* The lanes force loop (2D default): R consecutive threads per particle,
- * each summing its share of every row (wl_sph_gather_range with the
+/* The lanes force loop (2D, and small 3D runs): R consecutive threads per
+ * particle, each summing its share of every row (wl_sph_gather_range with the
  * cut-off skip, the rows in wl_sph_gather_block's order), then the R
  * partial sums added (lanes_sum) and the particle finished by its first
  * thread (wl_sph_finish); the mirror planes' rows (3D) by the first thread
@@ -786,8 +800,9 @@ __global__ void __launch_bounds__(THREADS)
 /* Candidates a warp stages in shared memory per batch (one 64-bit mask). */
 enum { TILE = 64 };
 
-/* The split force loop (3D default). A warp's particles are split into
- * segments of equal cell row (iy, iz) and group; for each segment the warp
+/* The split force loop (3D runs of WL_LANES_MAX_PARTICLES_3D or more). A
+ * warp's particles are split into segments of equal cell row (iy, iz) and
+ * group; for each segment the warp
  * walks the union of its particles' neighbour rows (cells min ix - 1 .. max
  * ix + 1 of each row), fluid rows then boundary rows as wl_sph_gather_block
  * does, 32 candidates at a time: each lane loads one, coalesced, and keeps
@@ -1218,35 +1233,23 @@ __global__ void __launch_bounds__(WL_SPLIT_THREADS, WL_SPLIT_MIN_BLOCKS)
   block_max3<WL_SPLIT_THREADS>(a2, v2, vmax, st);
 }
 
-/* The wall condition (sph/wall.h), one thread per boundary particle:
- * its density and pressure from the fluid's, before the fluid's force
- * loop reads them; the moving bodies' accelerations [m/s^2] from the
- * plan. */
+/* The wall condition's outputs (sph/wall.h: the boundary particles'
+ * density and pressure from the fluid's, before the fluid's force loop
+ * reads them) and what picks a moving body's acceleration [m/s^2] from
+ * the plan. */
 struct wallin {
   const unsigned char *kind, *body;
   wl_real *rho, *press;
 };
-template <int DIM>
-__global__ void __launch_bounds__(THREADS)
-    k_wall(const struct wl_sph_const kp, const struct wl_sph_grid gp, const struct wl_sph_eval ep,
-           int nb, const struct wallin w, const struct dstats *st) {
-  pdl_begin();
-  const struct wl_sph_const k = kp;
-  const struct wl_sph_grid g = gp;
-  const struct wl_sph_eval e = ep;
-  const int i = tid();
-  if (i >= nb || st->plan.stop) return;
-  const double *aw = w.kind[i] == WL_KIND_MOVING ? st->plan.body_acc[w.body[i]] : NULL;
-  wl_sph_wall_sample(DIM, &k, &g, &e, aw, i, w.rho, w.press);
-}
-
-/* The wall condition in 2D with R consecutive threads per boundary
- * particle: each sums its share of every fluid row (wl_sph_wall_range),
- * the R sums are added (lanes_sum) and the first thread stores the result
- * (wl_sph_wall_store): wl_sph_wall_sample's terms, associated in R runs. A
- * wall particle walks ~70 candidates; one thread each leaves a flume's few
- * thousand wall particles on a few dozen of the GPU's SMs. */
-template <int R>
+/* The wall condition with R consecutive threads per boundary particle:
+ * each sums its share of every fluid row, the mirror planes' rows too in
+ * 3D (wl_sph_wall_range), the R sums are added (lanes_sum) and the first
+ * thread stores the result (wl_sph_wall_store): wl_sph_wall_sample's
+ * terms, associated in R runs. A wall particle walks ~70 candidates in
+ * 2D and ~250 in 3D; one thread each leaves a flume's few thousand (3D:
+ * tens of thousands) wall particles on a fraction of the GPU's threads,
+ * each walking its candidates one after the other. */
+template <int DIM, int R>
 __global__ void __launch_bounds__(THREADS)
     k_wall_lanes(const struct wl_sph_const kp, const struct wl_sph_grid gp,
                  const struct wl_sph_eval ep, int nb, const struct wallin w,
@@ -1259,22 +1262,33 @@ __global__ void __launch_bounds__(THREADS)
   const int t = tid(), q = t & (R - 1), i = t / R;
   const bool active = i < nb;
   const int il = active ? i : nb - 1;
+  const int cell = (int)e.key[il];
   int first[9], last[9];
-  const int nr = wl_sph_cell_rows(2, &g, (int)e.key[il], 0, first, last);
+  const int nr = wl_sph_cell_rows(DIM, &g, cell, 0, first, last);
   const int *const bf = e.begin + g.n_cells;
-  const double xi[3] = {e.pos[0][il], 0.0, e.pos[1][il]};
+  const double xi[3] = {e.pos[0][il], DIM == 3 ? e.pos[1][il] : 0.0, e.pos[DIM - 1][il]};
   wl_real ga[3];
-  wl_sph_wall_ga(2, &k, w.kind[il] == WL_KIND_MOVING ? st->plan.body_acc[w.body[il]] : NULL, ga);
+  wl_sph_wall_ga(DIM, &k, w.kind[il] == WL_KIND_MOVING ? st->plan.body_acc[w.body[il]] : NULL, ga);
   struct wl_sph_wall_acc s = {0, 0};
-  if (active)
+  if (active) {
+    int c0, c1;
     for (int r = 0; r < nr; r++) {
-      int c0, c1;
       lanes_share<R>(bf[first[r]], bf[last[r] + 1], q, &c0, &c1);
-      wl_sph_wall_range(2, &k, &e, xi, ga, c0, c1, 0, &s);
+      wl_sph_wall_range(DIM, &k, &e, xi, ga, c0, c1, 0, &s);
     }
+    if (DIM == 3 && k.mirror) {
+      int mfirst[2][6], mlast[2][6], nm[2] = {0, 0};
+      wl_sph_cell_rows_mirrors(&g, k.mirror, cell, 0, mfirst, mlast, nm);
+      for (int side = 0; side < 2; side++)
+        for (int r = 0; r < nm[side]; r++) {
+          lanes_share<R>(bf[mfirst[side][r]], bf[mlast[side][r] + 1], q, &c0, &c1);
+          wl_sph_wall_range(DIM, &k, &e, xi, ga, c0, c1, side + 1, &s);
+        }
+    }
+  }
   s.sw = lanes_sum<R>(s.sw);
   s.spw = lanes_sum<R>(s.spw);
-  if (active && q == 0) wl_sph_wall_store(2, &k, &e, &s, i, w.rho, w.press);
+  if (active && q == 0) wl_sph_wall_store(DIM, &k, &e, &s, i, w.rho, w.press);
 }
 
 /* Predictor (sph/integrate.h) and the pressure of the half-step density. */
@@ -1789,9 +1803,10 @@ static enum wl_status evaluate(struct gpu *c, double *const *pos, wl_real *const
     w.rho = rho;
     w.press = c->press;
     if (c->dim == 3)
-      launch(c, k_wall<3>, blocks(nb), THREADS, s, c->k, c->grid, e, nb, w, c->stats);
+      launch(c, k_wall_lanes<3, WL_GATHER_LANES>, blocks(nb * WL_GATHER_LANES), THREADS, s, c->k,
+             c->grid, e, nb, w, c->stats);
     else
-      launch(c, k_wall_lanes<WL_GATHER_LANES>, blocks(nb * WL_GATHER_LANES), THREADS, s, c->k,
+      launch(c, k_wall_lanes<2, WL_GATHER_LANES>, blocks(nb * WL_GATHER_LANES), THREADS, s, c->k,
              c->grid, e, nb, w, c->stats);
     CKL("wall");
   }
