@@ -155,11 +155,22 @@ static constexpr bool loop_built(int mode, int dim) {
                                   mode == MODE_FAST;
 }
 
-/* Threads per particle of the lanes loop and the 2D wall condition (a
- * power of two, at most 32): each takes a contiguous share of every row
- * of candidates. */
+/* Threads per particle of the lanes loop (a power of two, at most 32):
+ * each takes a contiguous share of every row of candidates. */
 #ifndef WL_GATHER_LANES
 #define WL_GATHER_LANES 4
+#endif
+/* The same for the wall condition's boundary particles, by dimension: a
+ * 2D flume's few thousand of them walk ~70 candidates each, and 16 lanes
+ * took seawall.yaml's solitary step (dp = 0.012 m, 21 k particles) from
+ * 42-44 to 39-40 us (8: 42 us); a 3D flume's tens of thousands fill the GPU
+ * at 4 (16 was 3-5 % slower at 64-156 k particles; H100, 2026-11-27,
+ * BENCHMARKS.md "CUDA backend: small 3D runs"). */
+#ifndef WL_WALL_LANES_2D
+#define WL_WALL_LANES_2D 16
+#endif
+#ifndef WL_WALL_LANES_3D
+#define WL_WALL_LANES_3D 4
 #endif
 
 /* ---- error checking ----------------------------------------------------- */
@@ -1803,11 +1814,11 @@ static enum wl_status evaluate(struct gpu *c, double *const *pos, wl_real *const
     w.rho = rho;
     w.press = c->press;
     if (c->dim == 3)
-      launch(c, k_wall_lanes<3, WL_GATHER_LANES>, blocks(nb * WL_GATHER_LANES), THREADS, s, c->k,
-             c->grid, e, nb, w, c->stats);
+      launch(c, k_wall_lanes<3, WL_WALL_LANES_3D>, blocks(nb * WL_WALL_LANES_3D), THREADS, s,
+             c->k, c->grid, e, nb, w, c->stats);
     else
-      launch(c, k_wall_lanes<2, WL_GATHER_LANES>, blocks(nb * WL_GATHER_LANES), THREADS, s, c->k,
-             c->grid, e, nb, w, c->stats);
+      launch(c, k_wall_lanes<2, WL_WALL_LANES_2D>, blocks(nb * WL_WALL_LANES_2D), THREADS, s,
+             c->k, c->grid, e, nb, w, c->stats);
     CKL("wall");
   }
   if (n == i0) return WL_OK;
