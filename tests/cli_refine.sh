@@ -54,4 +54,13 @@ PY
 out=$("$bin" assess refine.yaml --quiet --end-time 0.01 --backend cuda -o cuda-try 2>&1); rc=$?
 [ $rc = 2 ] && grep -q "resolution.refine" <<<"$out" && ok "the CUDA backend refused by name (exit 2)" ||
   bad "backend cuda: exit $rc: $out"
+# from: auto: the plan places the interface (test_plan checks the rule by
+# hand) and says so; an explosion beside it keeps one resolution, said
+# (dp = 0.0075 m: the coarse level at 4 particles a wave height; check only)
+sed -e 's/refine: { from: 2.3 m }/refine: { from: auto }/' -e "s/dp: $dp m/dp: 0.0075 m/" \
+  -e 's/^loads: .*$/loads: { solitary: { height: 0.06 m, generation: initial, at: 0.9 m } }/' \
+  -e 's/length: 3.8 m/length: 5.8 m/' -e 's/x: 3.3 m/x: 5.3 m/' refine.yaml >auto.yaml
+out=$(env WL_CPU_SPEED=1 "$bin" check auto.yaml 2>&1); rc=$?
+[ $rc = 0 ] && grep -q "placed by the plan" <<<"$out" && ok "check places the interface (from: auto)" ||
+  bad "from: auto: exit $rc: $out"
 exit $fail
