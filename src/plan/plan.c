@@ -620,8 +620,8 @@ static double first_bed_change(const struct wl_scenario *s, double x0) {
   return x_change;
 }
 
-/* What rules an interface at xf out (NULL: none; else the reason, in
- * `why`, with `fix`, what to change): room for both levels' water seaward
+/* What rules an interface at xf out (NULL: none; else `why`, the reason
+ * and what to change, n bytes at most): room for both levels' water seaward
  * and landward (lo..hi, the layout's reach), a flat bed there (the flux
  * points stand on it), the still water in whole rows of both spacings (so
  * that the two free surfaces meet), the explosion's crater clear of the
@@ -725,7 +725,8 @@ static enum wl_status plan_refine(const struct wl_scenario *s, struct wl_plan *p
     double xf = 0.0;
     if (!p->solitary.present) none = "the scenario has no solitary case";
     else if (p->dims != 2) none = "two resolutions run in 2D only and this scenario plans 3D";
-    else if (s->resolution.refine.gpu) none = "this run takes the GPU, where two resolutions do not run yet";
+    else if (s->resolution.refine.gpu)
+      none = "this run takes the GPU, where two resolutions do not run yet";
     else if (p->solitary.wave.H / p->dp_coarse < WL_PLAN_REFINE_COARSE_PPH_MIN) {
       snprintf(why, sizeof why,
                "the coarse level (dp = %.4g m) would hold %.1f particles over the solitary wave's "
@@ -735,25 +736,24 @@ static enum wl_status plan_refine(const struct wl_scenario *s, struct wl_plan *p
     } else {
       const double x_left = p->solitary.x_left, xw = s->wall.x.q.si;
       const double x_change = first_bed_change(s, x_left);
-      double margin = WL_PLAN_REFINE_TOE_DEPTHS * (p->h - wl_scenario_bed_z(s, x_left));
-      if (x_change >= xw) { /* a flat bed to the wall: the wave's half-length (to 1 % of H) */
-        const double H = p->solitary.wave.H, d = p->h - wl_scenario_bed_z(s, x_left);
-        margin = fmax(margin, acosh(10.0) / sqrt(3.0 * H / (4.0 * d * d * d)));
-      }
+      /* the wave's first-order profile H sech^2(k x) on the offshore depth */
+      const double d0 = p->h - wl_scenario_bed_z(s, x_left);
+      const double k0 = sqrt(3.0 * p->solitary.wave.H / (4.0 * d0 * d0 * d0));
+      double margin = WL_PLAN_REFINE_TOE_DEPTHS * d0;
+      if (x_change >= xw) /* a flat bed to the wall: the wave's half-length (to 1 % of H) */
+        margin = fmax(margin, acosh(10.0) / k0);
       struct wl_vres_opts vo = {0};
       vo.overlap = WL_PLAN_REFINE_OVERLAP_BANDS;
       struct wl_vres_layout lay;
       wl_vres_layout(0.0, p->dp_coarse, p->dp, p->h_sml / p->dp, 1, &vo, &lay);
-      const double beyond = lay.water_hi[0] + 2.0 * wl_sph_smoothing_length(p->coefh, 2, p->dp_coarse);
+      const double beyond =
+          lay.water_hi[0] + 2.0 * wl_sph_smoothing_length(p->coefh, 2, p->dp_coarse);
       xf = x_change - margin - beyond;
       /* an initial wave starts in the coarse level: at the interface it
-       * stands at most WL_PLAN_REFINE_INITIAL_ETA_MAX of H (first-order
-       * profile H sech^2(k x)); seawall.yaml's interface at 15.5 m (4 %)
-       * and test_solitary_wall's 0.95 m from its wall (4 %) gave the
-       * uniform run's peaks within 1.7 %, one at half the crest's height
-       * 2-4 % low */
-      const double d0 = p->h - wl_scenario_bed_z(s, x_left);
-      const double k0 = sqrt(3.0 * p->solitary.wave.H / (4.0 * d0 * d0 * d0));
+       * stands at most WL_PLAN_REFINE_INITIAL_ETA_MAX of H; seawall.yaml's
+       * interface at 15.5 m (4 %) and test_solitary_wall's 0.95 m from its
+       * wall (4 %) gave the uniform run's peaks within 1.7 %, one at half
+       * the crest's height 2-4 % low */
       const double front = p->solitary.paddle
                                ? -INFINITY
                                : p->solitary.crest_x0 +
