@@ -56,11 +56,11 @@
  *  - k_gather (3D with double wl_real): wl_sph_gather_block itself, one
  *    thread per particle, with the cut-off skip (a candidate beyond 2h is
  *    not evaluated; the same bits as without it);
- *  - k_gather_split (larger 3D runs): the warp stages its particles' candidates in
- *    shared memory, marks those inside each particle's support, and splits
- *    the marked pairs evenly over its 32 lanes; each pair is
- *    wl_sph_pair_sum, the mirror planes' rows wl_sph_gather_mirrors, the
- *    end wl_sph_finish. The same terms in the same order per particle,
+ *  - k_gather_split (larger 3D runs): the warp stages its particles'
+ *    candidates in shared memory, marks those inside each particle's
+ *    support, and splits the marked pairs evenly over its 32 lanes; each
+ *    pair is wl_sph_pair_sum, the mirror planes' rows
+ *    wl_sph_gather_mirrors, the end wl_sph_finish. The same terms in the same order per particle,
  *    summed in runs: equal to the reference loop to float rounding.
  * The reference loop (k_gather without the skip, wl_sph_gather) and the
  * loops of the other dimension are built only in the tests' build of this
@@ -124,7 +124,7 @@ enum { MODE_REF = 0, MODE_FAST = 1, MODE_SPLIT = 2, MODE_LANES = 3 };
  * leave a small flume's GPU as idle: lanes ran the 3D dam break at 2.06,
  * 1.50, 1.14 and 0.90 times split's force evaluations/s at 64 k, 110 k,
  * 156 k and 205 k particles (H100, 2026-11-27, BENCHMARKS.md "CUDA
- * backend, H100"); the crossing, about 180 k, is the bound. */
+ * backend: small 3D runs"); the crossing, about 180 k, is the bound. */
 #ifndef WL_LANES_MAX_PARTICLES_3D
 #define WL_LANES_MAX_PARTICLES_3D 180000
 #endif
@@ -741,8 +741,8 @@ template <int R> static __device__ __forceinline__ void lanes_share(int j0, int 
 }
 
 /* The lanes force loop (2D, and small 3D runs): R consecutive threads per
- * particle, each summing its share of every row (wl_sph_gather_range with the
- * cut-off skip, the rows in wl_sph_gather_block's order), then the R
+ * particle, each summing its share of every row (wl_sph_gather_range with
+ * the cut-off skip, the rows in wl_sph_gather_block's order), then the R
  * partial sums added (lanes_sum) and the particle finished by its first
  * thread (wl_sph_finish); the mirror planes' rows (3D) by the first thread
  * alone. The same terms as the reference loop, associated in R runs: equal
@@ -811,12 +811,11 @@ __global__ void __launch_bounds__(THREADS)
 /* Candidates a warp stages in shared memory per batch (one 64-bit mask). */
 enum { TILE = 64 };
 
-/* The split force loop (3D runs of WL_LANES_MAX_PARTICLES_3D or more). A
- * warp's particles are split into segments of equal cell row (iy, iz) and
- * group; for each segment the warp
- * walks the union of its particles' neighbour rows (cells min ix - 1 .. max
- * ix + 1 of each row), fluid rows then boundary rows as wl_sph_gather_block
- * does, 32 candidates at a time: each lane loads one, coalesced, and keeps
+/* The split force loop (3D runs of WL_LANES_MAX_PARTICLES_3D or more):
+ * a warp's particles are split into segments of equal cell row (iy, iz)
+ * and group; for each segment the warp walks the union of its particles'
+ * neighbour rows (cells min ix - 1 .. max ix + 1 of each row), fluid rows
+ * then boundary rows as wl_sph_gather_block does, 32 candidates at a time: each lane loads one, coalesced, and keeps
  * it if it lies within 2h of the segment's bounding box (a candidate
  * outside it is outside every segment particle's support: about 40 % of
  * a row's candidates go here). The kept ones are staged in shared memory,
