@@ -205,16 +205,16 @@ int main(void) {
   wl_scenario_clear(&s);
   /* The GPU runtime estimate of `check` against what scenarios/seawall.yaml
    * (Verlet integrator) took on the H100 (BENCHMARKS.md "CUDA backend: the
-   * cost of a step", 2026-11-26, 01de198: its two cases side by side, the
-   * solitary's 2.01 s within the explosion's 4.70 s): a measurement, not
-   * this code's output. Within 25 %: an estimate, not a prediction to the
-   * second. */
+   * cost of a step", 2026-11-27, 28af3ea: its two cases side by side, the
+   * solitary's 1.72-1.76 s within the explosion's 3.87-3.89 s): a
+   * measurement, not this code's output. Within 25 %: an estimate, not a
+   * prediction to the second. */
   {
     struct wl_scenario sw;
     struct wl_plan pw;
     /* at the spacing those runs had (dp auto now picks 0.012 m, below) */
     if (plan_seawall(0.0125, &sw, &pw)) {
-      CHECK_REL(pw.gpu_seconds, 4.70, 0.25,
+      CHECK_REL(pw.gpu_seconds, 3.88, 0.25,
                 "GPU runtime estimate of seawall.yaml vs its H100 run (BENCHMARKS.md)");
     }
     wl_scenario_clear(&sw);
@@ -314,23 +314,22 @@ int main(void) {
   }
   /* Runs side by side on one GPU (plan.h wl_plan_gpu_side_by_side) against
    * the measured sweep of seawall-sweep.yaml (BENCHMARKS.md, "Sweeps", H100,
-   * 2026-11-26T22:31Z, code 1693b54): its 16 cases alone took these times
-   * one after the other (84.46 s) and 16.92 s side by side. The force
-   * loops' work of the 16 at the full rate (8.91 s, their plans') is the
-   * model's input; within 10 % of the measured sweep. (The 64-case sweep of
-   * the same call, 62.36 s, is 35.5 s of work: the model gives 64.5 s.) */
+   * 2026-11-27T17:28Z, code 28af3ea's GPU loops): its 16 cases alone took
+   * these times one after the other (70.56 s) and 17.54 s side by side. The
+   * force loops' work of the 16 at the full rate (9.51 s, their plans') is
+   * the model's input; within 10 % of the measured sweep. */
   {
-    static const double alone[16] = {5.01, 5.47, 5.86, 6.42, 4.69, 5.02, 5.55, 6.25,
-                                     4.52, 4.88, 5.50, 5.81, 4.24, 4.80, 5.04, 5.40};
+    static const double alone[16] = {4.03, 4.50, 5.00, 5.41, 3.91, 4.23, 4.86, 5.23,
+                                     3.64, 4.01, 4.38, 4.82, 3.61, 3.99, 4.29, 4.65};
     struct wl_plan_cost runs[16];
     for (int i = 0; i < 16; i++) {
       memset(&runs[i], 0, sizeof runs[i]);
       runs[i].gpu_seconds = alone[i];
-      runs[i].gpu_work_seconds = 8.91 / 16;
+      runs[i].gpu_work_seconds = 9.51 / 16;
     }
-    CHECK_REL(wl_plan_gpu_side_by_side(runs, 16, 1), 84.46, 1e-12,
+    CHECK_REL(wl_plan_gpu_side_by_side(runs, 16, 1), 70.56, 1e-12,
               "one at a time: the cases' times added");
-    CHECK_REL(wl_plan_gpu_side_by_side(runs, 16, 16), 16.92, 0.10,
+    CHECK_REL(wl_plan_gpu_side_by_side(runs, 16, 16), 17.54, 0.10,
               "16 side by side vs the measured sweep (BENCHMARKS.md, Sweeps)");
     /* processor sharing by hand (cost 0.064 a run beside): runs of 1 s and
      * 3 s alone share the GPU for 1 s of the first's (1.064 s), then the
@@ -344,24 +343,24 @@ int main(void) {
     two[0].gpu_seconds = two[1].gpu_seconds = 2.0;
     CHECK_REL(wl_plan_gpu_side_by_side(two, 2, 2), 2.128, 1e-12, "two equal runs of 2 s");
     CHECK_REL(wl_plan_gpu_side_by_side(two, 2, 1), 4.0, 1e-12, "one at a time: 4 s");
-    /* the 64-case sweep of the same call: 62.36 s, 16 at a time; its force
-     * loops' work 35.5 s (the plans'); each case alone taken as the 16's
-     * mean, 5.28 s (the 64 were not run alone) */
+    /* the 64-case sweep of the same call: 66.00 s, 16 at a time; its force
+     * loops' work 37.9 s (the plans'); each case alone taken as the 16's
+     * mean, 4.41 s (the 64 were not run alone) */
     {
       struct wl_plan_cost r64[64];
       for (int i = 0; i < 64; i++) {
         memset(&r64[i], 0, sizeof r64[i]);
-        r64[i].gpu_seconds = 5.28;
-        r64[i].gpu_work_seconds = 35.5 / 64;
+        r64[i].gpu_seconds = 4.41;
+        r64[i].gpu_work_seconds = 37.9 / 64;
       }
-      CHECK_REL(wl_plan_gpu_side_by_side(r64, 64, 16), 62.36, 0.10,
+      CHECK_REL(wl_plan_gpu_side_by_side(r64, 64, 16), 66.00, 0.10,
                 "64 cases 16 at a time vs the measured sweep (BENCHMARKS.md, Sweeps)");
     }
     /* never below the force loops' work: small (latency-bound) runs at
-     * 0.77 k / (k + 6.3) of the full rate together (k = 16 here), large
-     * runs at the full rate */
+     * 0.68 k / (k + 4) of the full rate together (k = 16 here), large runs
+     * at the full rate */
     for (int i = 0; i < 16; i++) runs[i].gpu_seconds = 10.0, runs[i].gpu_work_seconds = 9.0;
-    CHECK_REL(wl_plan_gpu_side_by_side(runs, 16, 16), 16 * 9.0 / (0.77 * 16 / (16 + 6.3)), 1e-12,
+    CHECK_REL(wl_plan_gpu_side_by_side(runs, 16, 16), 16 * 9.0 / (0.68 * 16 / (16 + 4.0)), 1e-12,
               "latency-bound runs: their work at the shared efficiency");
     for (int i = 0; i < 16; i++) runs[i].gpu_seconds = runs[i].gpu_work_seconds = 9.0;
     CHECK_REL(wl_plan_gpu_side_by_side(runs, 16, 16), 16 * 9.0, 1e-12,

@@ -225,15 +225,16 @@ static inline void wl_plan_default_numerics(struct wl_sph_params *prm) {
 /* The CUDA backend on an H100 (BENCHMARKS.md, "CUDA backend: the cost of a
  * step"): a small flume's step costs a fixed time whatever its size (seven
  * latency-bound kernels, the outputs overlapped with the next steps); large
- * runs go at the force loop's rate (the 2D dam break of 0.89M particles,
- * the 3D one of 1.03M with the split loop). A run alone takes the larger of
- * the two times; runs side by side (a scenario's cases, a ladder's levels,
- * a sweep's cases) are priced by wl_plan_gpu_side_by_side. The Verlet step
- * is seawall.yaml's solitary case alone at dp = 0.012 m; the symplectic
- * step that times the ratio of the two integrators' steps measured beside
- * each other at dp = 0.0125 m. */
-#define WL_PLAN_GPU_STEP_S 7.3e-5
-#define WL_PLAN_GPU_STEP_S_VERLET 4.6e-5
+ * runs go at the force loop's rate (the 2D dam break of 0.89M particles).
+ * A run alone takes the larger of the two times; runs side by side (a
+ * scenario's cases, a ladder's levels, a sweep's cases) are priced by
+ * wl_plan_gpu_side_by_side. The Verlet step is seawall.yaml's solitary
+ * case alone at dp = 0.012 m (2026-11-27, 28af3ea: 38.4-38.9 us on one
+ * H100, 41.1-41.3 us on another); the symplectic step that times the ratio
+ * of the two integrators' steps measured beside each other at dp = 0.0125 m
+ * (1.61). */
+#define WL_PLAN_GPU_STEP_S 6.4e-5
+#define WL_PLAN_GPU_STEP_S_VERLET 4.0e-5
 #define WL_PLAN_GPU_RATE 2.70e9
 /* 3D: scenarios/seawall3d.yaml's rate (99 584 particles, a third of them
  * wall, a symmetry plane, outputs every 0.01 s: 1.05e9 Verlet force
@@ -326,12 +327,13 @@ enum wl_status wl_plan_ladder_cost(const struct wl_scenario *s, const struct wl_
  * alone, counts its work at the full rate). Fitted on the H100
  * (BENCHMARKS.md, "Sweeps" and "The main job on this machine"): the cost to
  * the main job's finest explosion level of its ladder's five other runs
- * beside it; the share that seawall-sweep.yaml's cases reach one alone
- * (0.105, a whole `assess` each) and 16 side by side (0.53; its 64 cases
- * 16 at a time, 0.57). test_plan holds the model to these runs. */
+ * beside it (2026-11-26); the share that seawall-sweep.yaml's cases reach
+ * one alone (0.135, a whole `assess` each) and 16 side by side (0.54; its
+ * 64 cases 16 at a time, 0.57), 2026-11-27 with the 2D wall condition at
+ * 16 threads. test_plan holds the model to these runs. */
 #define WL_PLAN_GPU_SHARE_COST 0.064
-#define WL_PLAN_GPU_SHARED_RATE 0.77
-#define WL_PLAN_GPU_SHARED_HALF 6.3
+#define WL_PLAN_GPU_SHARED_RATE 0.68
+#define WL_PLAN_GPU_SHARED_HALF 4.0
 
 /* The share of the force loop's rate on one large run that `width`
  * latency-bound runs side by side reach together (above). */
