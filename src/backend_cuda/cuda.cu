@@ -740,13 +740,46 @@ template <int R> static __device__ __forceinline__ void lanes_share(int j0, int 
   *c1 = j0 + (len * (q + 1)) / R;
 }
 
+/* wl_sph_gather_mirrors' rows (3D, the mirror planes' images) shared by
+ * the R threads of a particle as its own rows are: one thread alone made
+ * every warp beside a symmetry plane wait for it. */
+template <int DIM, int LAM, int R>
+static __device__ __forceinline__ void lanes_mirrors(const struct wl_sph_const *k,
+                                                     const struct wl_sph_grid *g,
+                                                     const struct wl_sph_eval *e,
+                                                     const struct wl_sph_lanes *in, int fluid,
+                                                     int cell, int q, struct wl_sph_acc *f,
+                                                     struct wl_sph_acc *b) {
+  if (DIM != 3 || !k->mirror) return;
+  const int *const bf = e->begin + g->n_cells, *const bb = e->begin;
+  int mf[2][6], ml[2][6], nm[2] = {0, 0}, c0, c1;
+  wl_sph_cell_rows_mirrors(g, k->mirror, cell, 0, mf, ml, nm);
+  for (int side = 0; side < 2; side++)
+    for (int r = 0; r < nm[side]; r++) {
+      lanes_share<R>(bf[mf[side][r]], bf[ml[side][r] + 1], q, &c0, &c1);
+      if (fluid)
+        wl_sph_gather_range(DIM, LAM, 1, 1, 1, 1, k, e, in, c0, c1, k->av_ff, k->lam_ff, side + 1,
+                            f, 0);
+      else
+        wl_sph_gather_range(DIM, LAM, 0, 0, 1, 1, k, e, in, c0, c1, k->av_fb, k->lam_fb, side + 1,
+                            f, 0);
+    }
+  if (fluid)
+    for (int side = 0; side < 2; side++)
+      for (int r = 0; r < nm[side]; r++) {
+        lanes_share<R>(bb[mf[side][r]], bb[ml[side][r] + 1], q, &c0, &c1);
+        wl_sph_gather_range(DIM, LAM, 1, 0, 1, 1, k, e, in, c0, c1, k->av_fb, k->lam_fb, side + 1,
+                            b, 0);
+      }
+}
+
 /* The lanes force loop (2D, and small 3D runs): R consecutive threads per
  * particle, each summing its share of every row (wl_sph_gather_range with
  * the cut-off skip, the rows in wl_sph_gather_block's order), then the R
  * partial sums added (lanes_sum) and the particle finished by its first
- * thread (wl_sph_finish); the mirror planes' rows (3D) by the first thread
- * alone. The same terms as the reference loop, associated in R runs: equal
- * to it to float rounding, and the same bits on every run. */
+ * thread (wl_sph_finish); the mirror planes' rows (3D) shared the same way
+ * (lanes_mirrors). The same terms as the reference loop, associated in R
+ * runs: equal to it to float rounding, and the same bits on every run. */
 template <int DIM, int LAM, int R>
 __global__ void __launch_bounds__(THREADS)
     k_gather_lanes(const struct wl_sph_const kp, const struct wl_sph_grid gp,
@@ -788,13 +821,13 @@ __global__ void __launch_bounds__(THREADS)
         lanes_share<R>(bb[first[r]], bb[last[r] + 1], q, &c0, &c1);
         wl_sph_gather_range(DIM, LAM, 1, 0, 1, 1, &k, &e, &in, c0, c1, k.av_fb, k.lam_fb, 0, &b, 0);
       }
-      if (q == 0) wl_sph_gather_mirrors(DIM, LAM, 1, 1, &k, &g, &e, &in, 1, cell, 0, &f, &b);
+      lanes_mirrors<DIM, LAM, R>(&k, &g, &e, &in, 1, cell, q, &f, &b);
     } else {
       for (int r = 0; r < nr; r++) {
         lanes_share<R>(bf[first[r]], bf[last[r] + 1], q, &c0, &c1);
         wl_sph_gather_range(DIM, LAM, 0, 0, 1, 1, &k, &e, &in, c0, c1, k.av_fb, k.lam_fb, 0, &f, 0);
       }
-      if (q == 0) wl_sph_gather_mirrors(DIM, LAM, 1, 1, &k, &g, &e, &in, 0, cell, 0, &f, &f);
+      lanes_mirrors<DIM, LAM, R>(&k, &g, &e, &in, 0, cell, q, &f, &f);
     }
   }
   lanes_acc<R>(&f);
