@@ -236,12 +236,12 @@ static inline void wl_plan_default_numerics(struct wl_sph_params *prm) {
 #define WL_PLAN_GPU_STEP_S 6.4e-5
 #define WL_PLAN_GPU_STEP_S_VERLET 4.0e-5
 #define WL_PLAN_GPU_RATE 2.70e9
-/* 3D: scenarios/seawall3d.yaml's rate (99 584 particles, a third of them
- * wall, a symmetry plane, outputs every 0.01 s: 1.05e9 Verlet force
- * evaluations in 4.6 s on the H100, 2026-11-27; the 1.03M-particle dam
- * break's 7.67e8 had priced it at 1.2 s). Larger 3D runs fill the GPU
- * better (5.8e8 at 205 k particles without outputs, 7.7e8 at 1 M), so the
- * estimate is conservative there. */
+/* 3D: scenarios/seawall3d.yaml's (99 584 particles, a third of them wall,
+ * a symmetry plane, outputs every 0.01 s): its planned 9.15e8 particle-
+ * steps (Verlet) over the 3.9 s its case took on the H100, 2026-11-27; the
+ * 1.03M-particle dam break's 7.67e8 had priced it at 1.2 s. Larger 3D runs
+ * fill the GPU better (5.8e8 at 205 k particles without outputs, 7.7e8 at
+ * 1 M), so the estimate is conservative there. */
 #define WL_PLAN_GPU_RATE_3D 2.3e8
 
 /* Whole rows of still water. The scene lays fluid rows at z_min + (j +
