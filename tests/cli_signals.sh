@@ -119,15 +119,27 @@ judge() {
 # already exited. A run that has exited but is not yet reaped (a zombie,
 # state Z) still takes a kill without error, and it can exit between any
 # look and the kill: so it is looked at before and after. A run that reads
-# as a zombie right after the kill and then exits 0 had finished before
-# the signal came (a handled signal ends a run with 1, the default action
-# with 128 + SIG, neither within the microseconds between kill and look).
+# as a zombie within 30 ms of the kill and then exits 0 had finished, or
+# was inside its exit, before the signal came (a handled signal ends a run
+# with 1, the default action with 128 + SIG, never 0).
 signal_run() {
   sent=1
-  [ "$(awk '{print $3}' /proc/$pid/stat 2>/dev/null)" = Z ] && sent=0
+  # the state read by bash's own `read` (no fork between the look and the
+  # kill: an awk there took milliseconds, longer than the results take to
+  # write, and the aimed kills missed that phase ten times running)
+  local st=""
+  { read -r _ _ st _ </proc/$pid/stat; } 2>/dev/null
+  [ "$st" = Z ] && sent=0
   [ $sent = 1 ] && { kill -s "$1" $pid 2>/dev/null || sent=0; }
-  after_kill=$(awk '{print $3}' /proc/$pid/stat 2>/dev/null)
-  [ "$after_kill" = Z ] && maybe_before=1 || maybe_before=0
+  # after the kill there is time to look: a run caught inside its exit (the
+  # kernel no longer delivers signals there) reads Z a moment later
+  st=""
+  for _ in 1 2 3; do
+    { read -r _ _ st _ </proc/$pid/stat; } 2>/dev/null
+    [ "$st" = Z ] && break
+    sleep 0.01
+  done
+  [ "$st" = Z ] && maybe_before=1 || maybe_before=0
 }
 
 # stop_at LABEL SIG DELAY: a run signalled after DELAY seconds
