@@ -317,7 +317,10 @@ int main(void) {
    * 2026-11-27T17:28Z, code 28af3ea's GPU loops): its 16 cases alone took
    * these times one after the other (70.56 s) and 17.54 s side by side. The
    * force loops' work of the 16 at the full rate (9.51 s, their plans') is
-   * the model's input; within 10 % of the measured sweep. */
+   * the model's input; within 10 % of the measured sweep. plan.h's shared
+   * efficiency was fitted to these 16 (alone and side by side), so this
+   * check holds the fit; the 64-case sweep below and seawall.yaml's pair
+   * above are runs the fit did not use. */
   {
     static const double alone[16] = {4.03, 4.50, 5.00, 5.41, 3.91, 4.23, 4.86, 5.23,
                                      3.64, 4.01, 4.38, 4.82, 3.61, 3.99, 4.29, 4.65};

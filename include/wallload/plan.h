@@ -414,10 +414,27 @@ struct wl_plan_choice {
   struct wl_plan_machine machine; /* the machine it was planned for (also when not auto) */
 };
 
+/* resolution.refine's two levels laid out at x_if for plan p (vres.h
+ * wl_vres_layout, the fine level landward, WL_PLAN_REFINE_OVERLAP_BANDS of
+ * overlap set in *vo; vo may be NULL): the layout the plan checks and
+ * prices and the run builds. */
+struct wl_vres_opts;
+struct wl_vres_layout;
+void wl_plan_refine_layout(const struct wl_plan *p, double x_if, struct wl_vres_opts *vo,
+                           struct wl_vres_layout *lay);
+
+/* resolution.refine.from: auto in s for machine m: one resolution where
+ * the run takes the GPU (m->device_bytes > 0; the coupling edits particles
+ * on the host between steps), s->resolution.refine.gpu. wl_plan_choose
+ * calls it; a sweep, which plans its cases without wl_plan_choose, for
+ * each case. */
+void wl_plan_refine_machine(struct wl_scenario *s, const struct wl_plan_machine *m);
+
 /* Resolves resolution.particles_per_height: auto in s for machine m (the
  * value goes to s->resolution.particles_per_height.q.si; is_auto stays, so
- * the listing still says auto). Leaves a written value alone (c->is_auto
- * 0). WL_OK, or the status of a plan that cannot be made. */
+ * the listing still says auto), and resolution.refine.from: auto
+ * (wl_plan_refine_machine). Leaves a written value alone (c->is_auto 0).
+ * WL_OK, or the status of a plan that cannot be made. */
 enum wl_status wl_plan_choose(struct wl_scenario *s, const struct wl_plan_machine *m,
                               struct wl_plan_choice *c, struct wl_error *err);
 

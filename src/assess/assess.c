@@ -528,10 +528,14 @@ enum wl_status assess_case(const struct wl_scenario *s, const struct wl_plan *pl
   const struct wl_backend_ops *ops = NULL;
   if ((st = pick_backend(s, opts, &ops, err))) return st;
   struct case_levels *lv = NULL;
-  /* two levels on the CPU backend; from: auto on the GPU (a sweep's case,
-   * planned without the machine) runs one */
-  if ((load == WL_CASE_SOLITARY ? plan->solitary.refine : plan->explosion.refine) &&
-      ops == &wl_backend_cpu_ops) {
+  if (load == WL_CASE_SOLITARY ? plan->solitary.refine : plan->explosion.refine) {
+    /* a plan made without the machine (wl_plan_refine_machine) */
+    if (ops != &wl_backend_cpu_ops)
+      return wl_error_set(err, WL_EUSAGE,
+                          "%s: resolution.refine.from: auto was planned for the CPU backend, and "
+                          "this run takes the %s backend; use --backend cpu, or let `wallload "
+                          "assess` plan it for this machine",
+                          s->path, ops->name);
     if (!(lv = calloc(1, sizeof *lv))) return wl_error_set(err, WL_ENOMEM, "no memory");
     if ((st = levels_build(s, plan, load, &c->flume, &lv->coarse, lv->spec, &lv->vo, err))) {
       wl_flume_clear(&lv->coarse);

@@ -59,9 +59,8 @@ enum wl_status levels_build(const struct wl_scenario *s, const struct wl_plan *p
   enum wl_status st = wl_flume_build(s, &pc, load, coarse, err);
   if (st) return st;
   memset(vo, 0, sizeof *vo);
-  vo->overlap = WL_PLAN_REFINE_OVERLAP_BANDS;
   struct wl_vres_layout lay;
-  wl_vres_layout(plan->refine_from, plan->dp_coarse, plan->dp, plan->h_sml / plan->dp, 1, vo, &lay);
+  wl_plan_refine_layout(plan, plan->refine_from, vo, &lay); /* the layout plan priced */
   struct wl_flume *lv[2] = {coarse, fine};
   const double z_walls = fine->cfg.hi[1]; /* the walls' top, below the parking bands */
   for (int l = 0; l < 2 && !st; l++) {

@@ -605,6 +605,15 @@ double wl_plan_level_dp(const struct wl_scenario *s, const struct wl_plan *p, do
                                   : p->dp * factor;
 }
 
+/* plan.h */
+void wl_plan_refine_layout(const struct wl_plan *p, double x_if, struct wl_vres_opts *vo,
+                           struct wl_vres_layout *lay) {
+  struct wl_vres_opts own = {0};
+  if (!vo) vo = &own;
+  vo->overlap = WL_PLAN_REFINE_OVERLAP_BANDS;
+  wl_vres_layout(x_if, p->dp_coarse, p->dp, p->h_sml / p->dp, 1, vo, lay);
+}
+
 /* The first x seaward of the wall where the bed departs from the bed at
  * x0 (a slope begins or a step): the toe of the structure's fore slope;
  * the wall's x for a flat bed. */
@@ -628,10 +637,8 @@ static double first_bed_change(const struct wl_scenario *s, double x0) {
  * fine level's band when the explosion refines. */
 static const char *refine_problem(const struct wl_scenario *s, const struct wl_plan *p, double xf,
                                   int explosion_refines, char *why, size_t n) {
-  struct wl_vres_opts vo = {0};
-  vo.overlap = WL_PLAN_REFINE_OVERLAP_BANDS;
   struct wl_vres_layout lay;
-  wl_vres_layout(xf, p->dp_coarse, p->dp, p->h_sml / p->dp, 1, &vo, &lay);
+  wl_plan_refine_layout(p, xf, NULL, &lay);
   const double reach = 2.0 * wl_sph_smoothing_length(p->coefh, 2, p->dp_coarse);
   const double lo = lay.water_lo[1] - reach, hi = lay.water_hi[0] + reach;
   const double z_if = wl_scenario_bed_z(s, xf);
@@ -742,10 +749,8 @@ static enum wl_status plan_refine(const struct wl_scenario *s, struct wl_plan *p
       double margin = WL_PLAN_REFINE_TOE_DEPTHS * d0;
       if (x_change >= xw) /* a flat bed to the wall: the wave's half-length (to 1 % of H) */
         margin = fmax(margin, acosh(10.0) / k0);
-      struct wl_vres_opts vo = {0};
-      vo.overlap = WL_PLAN_REFINE_OVERLAP_BANDS;
       struct wl_vres_layout lay;
-      wl_vres_layout(0.0, p->dp_coarse, p->dp, p->h_sml / p->dp, 1, &vo, &lay);
+      wl_plan_refine_layout(p, 0.0, NULL, &lay);
       const double beyond =
           lay.water_hi[0] + 2.0 * wl_sph_smoothing_length(p->coefh, 2, p->dp_coarse);
       xf = x_change - margin - beyond;
@@ -787,10 +792,8 @@ static enum wl_status plan_refine(const struct wl_scenario *s, struct wl_plan *p
               "lose height crossing a coarse level: docs/variable-resolution.md)");
   }
   p->refine = 1;
-  struct wl_vres_opts vo = {0};
-  vo.overlap = WL_PLAN_REFINE_OVERLAP_BANDS;
   struct wl_vres_layout lay;
-  wl_vres_layout(p->refine_from, p->dp_coarse, p->dp, p->h_sml / p->dp, 1, &vo, &lay);
+  wl_plan_refine_layout(p, p->refine_from, NULL, &lay);
   p->refine_overlap = lay.overlap;
   p->refine_band[0] = lay.band[0], p->refine_band[1] = lay.band[1];
   if (p->solitary.refine && p->solitary.wave.H / p->dp_coarse < WL_PLAN_REFINE_COARSE_PPH_MIN)
@@ -1304,14 +1307,16 @@ static int fits_memory(const struct wl_plan_cost *cost, const struct wl_plan_mac
   return !(m->device_bytes > 0 && cost->device_bytes > m->device_bytes);
 }
 
+void wl_plan_refine_machine(struct wl_scenario *s, const struct wl_plan_machine *m) {
+  s->resolution.refine.gpu = s->resolution.refine.present && s->resolution.refine.from.is_auto &&
+                             m->device_bytes > 0;
+}
+
 enum wl_status wl_plan_choose(struct wl_scenario *s, const struct wl_plan_machine *m,
                               struct wl_plan_choice *c, struct wl_error *err) {
   memset(c, 0, sizeof *c);
   c->machine = *m;
-  /* resolution.refine.from: auto keeps one resolution where the run takes
-   * the GPU (the coupling edits particles on the host between steps) */
-  s->resolution.refine.gpu = s->resolution.refine.present && s->resolution.refine.from.is_auto &&
-                             m->device_bytes > 0;
+  wl_plan_refine_machine(s, m);
   struct wl_scenario_value *v = &s->resolution.particles_per_height;
   if (!v->is_auto || !s->resolution.dp.is_auto) return WL_OK;
   c->is_auto = 1;

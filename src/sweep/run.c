@@ -225,6 +225,11 @@ enum wl_status sweep_run_case(struct wl_sweep *sw, int i, const char *dir, const
   wl_error_clear(&e);
   const double t0 = now_s();
   st = wl_sweep_case_scenario(sw, i, cs, &e);
+  if (st == WL_OK && cs->resolution.refine.present && cs->resolution.refine.from.is_auto) {
+    struct wl_plan_machine m; /* from: auto, planned for the backend the case runs on */
+    wl_assess_machine(cs, opts, &m);
+    wl_plan_refine_machine(cs, &m);
+  }
   if (st == WL_OK) st = wl_plan_make(cs, plan, &e);
   if (st == WL_OK) {
     struct wl_assess_opts o = *opts;
