@@ -165,6 +165,38 @@ int main(void) {
       CHECK_ABS(wl_loads_positive_impulse(t2, up, 3, base), 0.5 * 3 * 1.5, 1e-15,
                 "crossing up over 2 s to +3: 1/2 x 3 x 1.5");
       CHECK_ABS(wl_loads_positive_impulse(t2, below, 3, base), 0.0, 0.0, "below the base: 0");
+      /* the time above the base, by hand: 0.5 s of the fall, 1.5 s of the
+       * rise, none */
+      CHECK_ABS(wl_loads_time_above(t2, down, 3, base), 0.5, 1e-15, "time above, crossing down");
+      CHECK_ABS(wl_loads_time_above(t2, up, 3, base), 1.5, 1e-15, "time above, crossing up");
+      CHECK_ABS(wl_loads_time_above(t2, below, 3, base), 0.0, 0.0, "time above, below: 0");
+    }
+    /* the time above is minus the positive impulse's derivative in its
+     * base: a central difference of the train's positive impulse (a second
+     * computation through wl_loads_positive_impulse) */
+    {
+      const double db = 1e-4 * A;
+      const double slope = (wl_loads_positive_impulse(ts, xs, (size_t)m, base - db) -
+                            wl_loads_positive_impulse(ts, xs, (size_t)m, base + db)) /
+                           (2 * db);
+      CHECK_REL(wl_loads_time_above(ts, xs, (size_t)m, base), slope, 1e-6,
+                "time above = -d(positive impulse)/d(base)");
+    }
+    /* how well a window fixes a mean: a step from 1 to 3 halfway, and a
+     * ramp x = t over [0, 1] (halves' means 0.25 and 0.75), by hand */
+    {
+      double tw[101], step[101], ramp[101];
+      for (int k = 0; k <= 100; k++) {
+        tw[k] = 0.01 * k;
+        step[k] = tw[k] < 0.5 ? 1.0 : 3.0;
+        ramp[k] = tw[k];
+      }
+      CHECK_ABS(wl_loads_halves_spread(tw, ramp, 101, 0.0, 1.0), 0.25, 1e-12,
+                "halves' spread of a ramp: (0.75 - 0.25) / 2");
+      CHECK_ABS(wl_loads_halves_spread(tw, step, 101, 0.0, 1.0), 1.0, 0.02,
+                "halves' spread of a step: (3 - 1) / 2 (one interval straddles it)");
+      CHECK_TRUE(isnan(wl_loads_halves_spread(tw, ramp, 101, 0.0, 0.05)),
+                 "halves of under 4 samples: NaN");
     }
     /* a phase that is still positive at the record's end ends there */
     wl_loads_positive_phase(xs, 200, base, pp.index, &i0, &i1); /* 0 .. 0.398 s */

@@ -4,7 +4,9 @@
  *  - the gauge at the face reads the still-water level h (the height the
  *    particles' volume fills, n_rows dp), i.e. eta = 0;
  *  - probes deeper than one kernel support below the surface read
- *    rho0 g (h - z); probes at and above the surface read 0 (dry face);
+ *    rho0 g (h - z); probes at and above the surface read 0 (dry face:
+ *    their Shepard sum under half of what the same lattice gives them with
+ *    water standing over them);
  *  - the probe profile integrates to rho0 g h^2/2 and its moment about the
  *    toe to rho0 g h^3/6;
  *  - the fluid's potential energy above the floor is rho0 g L h^2/2 per
@@ -27,6 +29,7 @@
 #define G 9.81
 #define DP 0.01
 #define N_ROWS 30 /* h = 0.3 m */
+#define N_ROWS_DEEP 55 /* water over every probe, by more than a kernel support */
 #define U 0.125   /* uniform horizontal velocity [m/s], exact in float */
 
 /* The gauge reads where the Shepard sum crosses 0.5 (sph/probe.h): on a
@@ -46,21 +49,22 @@
  * a float (sph/params.h wl_real), 1e-7 relative. */
 #define SUM_TOL 1e-6
 
-/* Fill p with a hydrostatic fluid lattice of nx x ny x N_ROWS particles
+/* Fill p with a hydrostatic fluid lattice of nx x ny x rows particles
  * (ny 1 in 2D) from x = 0, y = 0, z = 0, moving at U along x. */
-static int column(struct wl_particles *p, int dim, int nx, int ny, const struct wl_sph_const *k) {
+static int column(struct wl_particles *p, int dim, int nx, int ny, int rows,
+                  const struct wl_sph_const *k) {
   struct wl_error err;
   wl_error_clear(&err);
-  const int n = nx * ny * N_ROWS;
+  const int n = nx * ny * rows;
   if (wl_particles_alloc(p, dim, n, 0, &err)) {
     printf("FAIL particles: %s\n", err.msg);
     return 0;
   }
-  const double h = N_ROWS * DP;
+  const double h = rows * DP;
   int i = 0;
   for (int a = 0; a < nx; a++)
     for (int b = 0; b < ny; b++)
-      for (int c = 0; c < N_ROWS; c++, i++) {
+      for (int c = 0; c < rows; c++, i++) {
         const double z = (c + 0.5) * DP;
         p->pos[0][i] = (a + 0.5) * DP;
         if (dim == 3) p->pos[1][i] = (b + 0.5) * DP;
@@ -115,11 +119,32 @@ static void run(int dim) {
   f->gauge_bed[0] = 0.0;
   struct wl_particles p;
   memset(&p, 0, sizeof p);
+  /* The wetness rule's reference (flume.h probe_shepard_full): the Shepard
+   * sum each probe reads with still water standing over it, here from the
+   * same lattice 55 rows deep, summed by the probe module directly. */
+  struct wl_sph_probe *deep_probe = NULL;
+  if (!column(&p, dim, nx, ny, N_ROWS_DEEP, &k) ||
+      wl_sph_probe_alloc(&deep_probe, &f->cfg, &err) ||
+      wl_sph_probe_index(deep_probe, &p, &err)) {
+    printf("FAIL the deep column: %s\n", err.msg);
+    wl_test_failures++;
+  }
+  for (int i = 0; deep_probe && i < f->n_probes; i++) {
+    double sum = 0.0;
+    const int n_y = dim == 3 ? f->n_probe_y : 1;
+    for (int j = 0; j < n_y; j++) {
+      double x[3] = {f->probe_x, dim == 3 ? f->probe_y[j] : f->probe_z[i], f->probe_z[i]};
+      sum += wl_sph_probe_shepard(deep_probe, x);
+    }
+    f->probe_shepard_full[i] = sum / n_y;
+  }
+  wl_sph_probe_free(deep_probe);
+  wl_particles_clear(&p);
   struct wl_sample *s = NULL;
   struct wl_record r;
   memset(&r, 0, sizeof r);
   r.n_gauges = f->n_gauges, r.n_probes = f->n_probes;
-  if (!column(&p, dim, nx, ny, &k) || wl_sample_alloc(&s, f, &err) ||
+  if (!column(&p, dim, nx, ny, N_ROWS, &k) || wl_sample_alloc(&s, f, &err) ||
       wl_sample_state(s, &p, &k, f->cfg.hi[dim - 1], 0.25, &r, &err)) {
     printf("FAIL sampling the %dD column: %s\n", dim, err.msg);
     wl_test_failures++;
@@ -156,8 +181,11 @@ static void run(int dim) {
               "potential energy rho0 g L h^2/2 (rows at (k + 1/2) dp)");
     CHECK_REL(r.kinetic[0], 0.5 * RHO0 * L * h * U * U, SUM_TOL, "kinetic energy rho0 L h u^2/2");
     CHECK_REL(r.momentum[0], RHO0 * L * h * U, SUM_TOL, "momentum rho0 L h u");
-    /* the toe above the water: nothing loads the face */
+    /* the toe above the water, the probes on the face above it: nothing
+     * loads the face */
     f->z_toe = h + DP;
+    for (int i = 0; i < f->n_probes; i++)
+      f->probe_z[i] = f->z_toe + (i + 0.5) * (f->z_crest - f->z_toe) / f->n_probes;
     if (wl_sample_state(s, &p, &k, f->cfg.hi[dim - 1], 0.5, &r, &err)) {
       printf("FAIL second row: %s\n", err.msg);
       wl_test_failures++;

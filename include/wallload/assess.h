@@ -85,6 +85,10 @@ struct wl_case_loads {
   double impulse_positive;  /* int max(0, F_filtered - F_rest) dt from peak_from on, probes
                                (loads.h wl_loads_positive_impulse) [N s/m] */
   double impulse_positive_bound; /* the same from the boundary particles [N s/m] */
+  /* How far the force at rest is fixed by its window, and what that does
+   * to the positive impulse (loads.h wl_loads_halves_spread, probes; times
+   * wl_loads_time_above) [N/m], [N s/m]; NaN without a rest window */
+  double rest_force_spread, impulse_positive_rest_error;
   double impulse_peak_from, impulse_peak_to; /* that phase [s] */
   double runup;             /* max eta at the wall face [m] */
   double runup_time;        /* [s] */
@@ -131,6 +135,12 @@ struct wl_case_result {
    * (4, 8) say the same files were moved into place by this run. */
   int snapshot_files;
 };
+
+/* A case's caution names the force at rest when it alone leaves the
+ * positive impulse uncertain by more than this share (wl_case_loads
+ * impulse_positive_rest_error): a wave that lifts the wall's force by a
+ * few per cent of a deep water's force at rest (seawall3d.yaml: 3 %) [-]. */
+#define WL_ASSESS_REST_CAUTION 0.10
 
 enum { WL_ASSESS_MAX_LEVELS = WL_SCENARIO_MAX_LEVELS };
 

@@ -80,6 +80,11 @@ struct wl_flume {
   int n_probes;
   double probe_x;                  /* [m] */
   double probe_z[WL_FLUME_MAX_PROBES];
+  /* Shepard sum S a probe at each height would read under still water
+   * standing above it: the settled lattice in front of the face, down to
+   * the toe (wl_sample's wetness rule: a probe is wet where S reaches half
+   * of it) [-] */
+  double probe_shepard_full[WL_FLUME_MAX_PROBES];
   int n_probe_y;                   /* 3D: probe positions across the width (0 in 2D) */
   double probe_y[WL_FLUME_MAX_PROBES_Y]; /* [m] */
   double gauge_y;                  /* 3D: y of every gauge [m] (width/2) */

@@ -121,6 +121,21 @@ double wl_loads_positive_phase_impulse(const double *t, const double *xf, const 
  * part of the raw force would rectify the acoustic ringing into a bias. */
 double wl_loads_positive_impulse(const double *t, const double *xf, size_t n, double base);
 
+/* The time [s] the filtered force xf spends above base, each interval
+ * exact for the linear interpolant as in wl_loads_positive_impulse: minus
+ * the derivative of the positive impulse with respect to its base, so an
+ * error dF in the force at rest moves the positive impulse by this times
+ * dF. */
+double wl_loads_time_above(const double *t, const double *xf, size_t n, double base);
+
+/* How well the window [t0, t1] fixes the mean of x: half the difference
+ * between the means of its two halves (wl_loads_mean of each). The rest
+ * window holds a few acoustic periods of ringing, and in a scene whose
+ * wave lifts the wall's force by a few per cent the uncertainty of the
+ * force at rest decides the positive impulse (wl_loads_time_above). NaN
+ * when a half holds fewer than 4 samples. */
+double wl_loads_halves_spread(const double *t, const double *x, size_t n, double t0, double t1);
+
 /* ---- convergence over a resolution ladder --------------------------------- */
 
 /* Meaningful observed orders: outside [MIN, MAX] the three levels are not in

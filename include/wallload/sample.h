@@ -9,15 +9,18 @@
  *    below WL_SPH_SURFACE_SHEPARD (sph/probe.h); the flume's last gauge is
  *    the one at the wall face;
  *  - wall pressure probes: the Shepard-interpolated pressure half a spacing
- *    seaward of the face, 0 at and above the water level at the face (the
- *    last gauge): just above the surface the interpolation would still
- *    report the pressure of the water below. 3D: each height's pressure is
- *    the mean over the probes across the width, so that it integrates to
- *    the force per metre;
- *  - the probe force and moment about the toe: the wet profile (the probes
- *    below the surface, closed by (min(surface, crest), 0)) integrated by
- *    loads.h wl_loads_profile; a single wet probe under a thin layer is a
- *    triangle; a dry face (or the surface at or below the toe) is 0;
+ *    seaward of the face where the probe is wet, 0 where it is dry. A probe
+ *    is wet where its Shepard sum reaches half of what still water standing
+ *    over it would give (flume.h probe_shepard_full): the gauges' surface
+ *    rule at the face, where the wall cuts the kernel, so the water on the
+ *    face itself decides (a slam or a film above the run-up gauge's level
+ *    counts). 3D: each height's pressure is the mean over the probes across
+ *    the width (a dry one 0), so that it integrates to the force per metre;
+ *  - the probe force and moment about the toe: the profile of every probe
+ *    up to the highest wet one, closed by 0 where the wettest probe across
+ *    falls through the half on the way to the next probe (or at the crest),
+ *    integrated by loads.h wl_loads_profile; a single wet probe is a
+ *    triangle; a dry face is 0;
  *  - the force of the fluid on the wall's boundary particles and its moment
  *    about the toe, computed by the backend with the solver's own pair term
  *    (sph.h wl_sph_sim_wall_load); 3D: per metre of the modelled wall;

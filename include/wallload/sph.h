@@ -270,6 +270,10 @@ enum wl_status wl_sph_probe_index(struct wl_sph_probe *pr, const struct wl_parti
 /* Shepard sum S(x) = sum_j V_j W(x - x_j) over fluid particles at x [m]. */
 double wl_sph_probe_shepard(const struct wl_sph_probe *pr, const double *x);
 
+/* Shepard sum S(x) [-], and into *p the Shepard-normalised pressure [Pa]
+ * at x [m] (0 where no fluid particle is within 2h): one pass for both. */
+double wl_sph_probe_pressure(const struct wl_sph_probe *pr, const double *x, double *p);
+
 /* Shepard-normalised velocity [m/s] and pressure [Pa] at x [m]. Returns 1,
  * or 0 (outputs zero) where no fluid particle is within 2h. v or p may be
  * NULL. */

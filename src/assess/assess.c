@@ -497,7 +497,9 @@ void wl_assess_result_clear(struct wl_assess_result *res) {
  * the filtered peak force falls in the last tenth of the searched record
  * the load may still be rising (seawall.yaml's explosion at 8 m peaked
  * 0.5 s before its end), and the result says so rather than passing the
- * record's last maximum off as the peak. */
+ * record's last maximum off as the peak. A positive impulse that the
+ * force at rest's own uncertainty moves by more than WL_ASSESS_REST_CAUTION
+ * is named too. */
 static void case_caution(struct wl_case_result *c) {
   c->caution[0] = '\0';
   const double t0 = c->peak_from, t1 = c->t_reached, tp = c->loads.force_peak.time;
@@ -507,6 +509,16 @@ static void case_caution(struct wl_case_result *c) {
              "the peak force comes at t = %.3g s, in the last tenth of the record (%.3g to %.3g "
              "s): a larger load may follow; run longer (run.end_time)",
              tp, t0, t1);
+  const struct wl_case_loads *l = &c->loads;
+  const double share = l->impulse_positive_rest_error / l->impulse_positive;
+  if (share > WL_ASSESS_REST_CAUTION) {
+    const size_t used = strlen(c->caution);
+    snprintf(c->caution + used, sizeof c->caution - used,
+             "%sthe positive impulse is uncertain by %.2g %% from the force at rest alone (its "
+             "window fixes it to %.2g N/m; the wave lifts the force by %.2g %% of it)",
+             used ? "; " : "", 100.0 * share, l->rest_force_spread,
+             100.0 * (l->force_peak.value - l->rest_force) / l->rest_force);
+  }
 }
 
 enum wl_status wl_assess_case(const struct wl_scenario *s, const struct wl_plan *plan,

@@ -281,6 +281,12 @@ static enum wl_status write_summary(const struct wl_scenario *s, const struct wl
          "every wave, pressure probes", 0);
     jval(&t, "impulse_positive_boundary", l->impulse_positive_bound, "N s/m",
          "the same from the boundary particles", 0);
+    jval(&t, "rest_force_spread", l->rest_force_spread, "N/m",
+         "half the difference of the raw force's means over the rest window's two halves: how "
+         "well the window fixes the force at rest (null: no rest window)", 0);
+    jval(&t, "impulse_positive_rest_uncertainty", l->impulse_positive_rest_error, "N s/m",
+         "rest_force_spread times the time the filtered force spends above rest_force: what "
+         "that uncertainty does to impulse_positive", 0);
     jval(&t, "peak_moment", l->moment_peak.value, "N m/m", filt, 0);
     jval(&t, "max_runup", l->runup, "m", "water level at the wall face above still water", 0);
     struct wl_load_units u;

@@ -85,6 +85,11 @@ enum wl_status case_loads_compute(struct wl_case_result *c, struct wl_error *err
                                                   l->rest_force);
   l->impulse_positive_bound = wl_loads_positive_impulse(r->t + k0, l->force_bound_filtered + k0,
                                                         n - k0, l->rest_force_bound);
+  l->rest_force_spread =
+      l->rest_measured ? wl_loads_halves_spread(r->t, r->force, n, l->rest_from, l->rest_to) : NAN;
+  l->impulse_positive_rest_error =
+      l->rest_force_spread *
+      wl_loads_time_above(r->t + k0, l->force_filtered + k0, n - k0, l->rest_force);
   /* run-up: the last gauge is the one at the wall face */
   int gw = r->n_gauges - 1;
   l->runup = -INFINITY;

@@ -163,6 +163,25 @@ void wl_loads_peak(const double *t, const double *x, size_t n, double base, stru
   }
 }
 
+double wl_loads_time_above(const double *t, const double *xf, size_t n, double base) {
+  double sum = 0;
+  for (size_t k = 0; k + 1 < n; k++) {
+    const double a = xf[k] - base, b = xf[k + 1] - base, dt = t[k + 1] - t[k];
+    if (a >= 0 && b >= 0)
+      sum += dt;
+    else if (a > 0)
+      sum += dt * a / (a - b);
+    else if (b > 0)
+      sum += dt * b / (b - a);
+  }
+  return sum;
+}
+
+double wl_loads_halves_spread(const double *t, const double *x, size_t n, double t0, double t1) {
+  const double tm = 0.5 * (t0 + t1);
+  return 0.5 * fabs(wl_loads_mean(t, x, n, t0, tm) - wl_loads_mean(t, x, n, tm, t1));
+}
+
 double wl_loads_positive_impulse(const double *t, const double *xf, size_t n, double base) {
   double sum = 0;
   for (size_t k = 0; k + 1 < n; k++) {

@@ -7,6 +7,7 @@
 
 #include "wallload/loads.h"
 #include "wallload/sample.h"
+#include "wallload/sph/probe.h"
 
 struct wl_sample {
   const struct wl_flume *f;
@@ -44,44 +45,64 @@ void wl_sample_free(struct wl_sample *s) {
   free(s);
 }
 
-/* Probe pressures of row `row` (dry at and above z_surface) into r, and
- * the force and moment they integrate to. */
-static void sample_probes(struct wl_sample *s, double z_surface, struct wl_record *r, size_t row) {
+/* Probe pressures of row `row` into r, and the force and moment they
+ * integrate to. A probe is wet where its Shepard sum reaches half of what
+ * still water standing over it gives (the flume's probe_shepard_full): the
+ * open water's surface rule (WL_SPH_SURFACE_SHEPARD) at the face, where
+ * the wall cuts the kernel. The face's own water decides, not the run-up
+ * gauge's surface 2h off the face: a slam or a film running up the face
+ * wets probes above that surface (seawall.yaml's explosion: the probes read
+ * 9 % under the boundary particles when they stopped at it). In 3D a
+ * height's pressure is the mean over the probes across, a dry one counting
+ * 0. The profile holds every probe up to the highest wet one and ends where
+ * the wettest probe across falls through the half between that height and
+ * the next, or at the crest. */
+static void sample_probes(struct wl_sample *s, struct wl_record *r, size_t row) {
   const struct wl_flume *f = s->f;
   double *pr = &r->pressure[row * (size_t)r->n_probes];
-  int n_wet = 0;
+  const int ny = f->dims == 3 ? f->n_probe_y : 1;
+  const int az = f->dims - 1;
+  double wettest[WL_FLUME_MAX_PROBES];
+  int top_k = -1;
   for (int k = 0; k < f->n_probes; k++) {
-    double x[2] = {f->probe_x, f->probe_z[k]}, pk = 0.0;
-    if (f->dims == 3) {
-      for (int j = 0; j < f->n_probe_y && f->probe_z[k] < z_surface; j++) {
-        double x3[3] = {f->probe_x, f->probe_y[j], f->probe_z[k]}, pj = 0.0;
-        if (wl_sph_probe_interp(s->probe, x3, NULL, &pj)) pk += pj / f->n_probe_y;
-      }
-    } else if (f->probe_z[k] >= z_surface || !wl_sph_probe_interp(s->probe, x, NULL, &pk)) {
-      pk = 0.0;
+    double psum = 0.0, rmax = 0.0;
+    for (int j = 0; j < ny; j++) {
+      double x[3] = {f->probe_x, f->dims == 3 ? f->probe_y[j] : 0.0, 0.0};
+      x[az] = f->probe_z[k];
+      double pj = 0.0;
+      const double ratio = wl_sph_probe_pressure(s->probe, x, &pj) / f->probe_shepard_full[k];
+      if (ratio >= WL_SPH_SURFACE_SHEPARD) psum += pj;
+      if (ratio > rmax) rmax = ratio;
     }
-    pr[k] = pk;
-    if (f->probe_z[k] < z_surface) {
-      s->prof_z[n_wet] = f->probe_z[k];
-      s->prof_p[n_wet++] = pk;
-    }
+    pr[k] = psum / ny;
+    wettest[k] = rmax;
+    if (rmax >= WL_SPH_SURFACE_SHEPARD) top_k = k;
   }
-  if (z_surface <= f->z_toe || n_wet == 0) {
+  if (top_k < 0) {
     r->force[row] = r->moment[row] = 0.0;
     return;
   }
-  /* the profile ends at (surface, 0), or at the crest when overtopped */
-  double top = fmin(z_surface, f->z_crest);
-  if (top > s->prof_z[n_wet - 1]) {
-    s->prof_z[n_wet] = top;
-    s->prof_p[n_wet++] = 0.0;
+  int n = 0;
+  for (int k = 0; k <= top_k; k++) {
+    s->prof_z[n] = f->probe_z[k];
+    s->prof_p[n++] = pr[k];
   }
-  if (n_wet == 1) { /* one probe under a thin layer: a triangle */
+  double top = f->z_crest;
+  if (top_k + 1 < f->n_probes) { /* where the wettest probe across crosses the half */
+    const double z0 = f->probe_z[top_k], z1 = f->probe_z[top_k + 1];
+    const double r0 = wettest[top_k], r1 = wettest[top_k + 1];
+    top = z0 + (z1 - z0) * (r0 - WL_SPH_SURFACE_SHEPARD) / (r0 - r1);
+  }
+  if (top > s->prof_z[n - 1]) {
+    s->prof_z[n] = top;
+    s->prof_p[n++] = 0.0;
+  }
+  if (n == 1) { /* one probe under a thin layer: a triangle */
     s->prof_z[1] = s->prof_z[0];
     s->prof_p[1] = s->prof_p[0];
-    n_wet = 2;
+    n = 2;
   }
-  wl_loads_profile(s->prof_z, s->prof_p, (size_t)n_wet, f->z_toe, top, &r->force[row],
+  wl_loads_profile(s->prof_z, s->prof_p, (size_t)n, f->z_toe, top, &r->force[row],
                    &r->moment[row]);
 }
 
@@ -100,10 +121,7 @@ enum wl_status wl_sample_state(struct wl_sample *s, const struct wl_particles *p
                                       f->gauge_bed[g], z_top, 0.0);
     r->eta[row * (size_t)r->n_gauges + (size_t)g] = z - f->depth;
   }
-  /* the water level at the face: the last gauge's */
-  const double z_surface =
-      f->depth + r->eta[row * (size_t)r->n_gauges + (size_t)(f->n_gauges - 1)];
-  sample_probes(s, z_surface, r, row);
+  sample_probes(s, r, row);
   r->force_bound[row] = r->moment_bound[row] = 0.0;
   double kin = 0.0, pot = 0.0, mom = 0.0;
   const int az = p->dim - 1;

@@ -124,6 +124,12 @@ static struct wl_sph_point_sums sums(const struct wl_sph_probe *pr, const double
 
 double wl_sph_probe_shepard(const struct wl_sph_probe *pr, const double *x) { return sums(pr, x).s; }
 
+double wl_sph_probe_pressure(const struct wl_sph_probe *pr, const double *x, double *p) {
+  const struct wl_sph_point_sums s = sums(pr, x);
+  *p = s.s > 0 ? s.p / s.s : 0.0;
+  return s.s;
+}
+
 int wl_sph_probe_interp(const struct wl_sph_probe *pr, const double *x, double *v, double *p) {
   const struct wl_sph_point_sums s = sums(pr, x);
   const int ok = s.s > 0;
