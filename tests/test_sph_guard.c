@@ -3,6 +3,7 @@
  * prescribed trajectory; output and progress callbacks.
  * References: the contracts in sph.h, backend.h, scene.h and sph/guard.h,
  * and for the paddle the prescribed X(t) itself. */
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -225,8 +226,42 @@ static void guard_after_limiter(void) {
   wl_particles_clear(&p);
 }
 
+/* The tension floor's contract (sph/params.h tension_max): a density at
+ * the floor reads a pressure of at most tension_max rho0 g h_max of
+ * tension in the solver's own (float) equation of state, and no more than
+ * four of that equation's rounding steps near rho0 (7 B FLT_EPSILON each:
+ * dp/drho = 7 B / rho0 at rho0, times rho0's float spacing) inside it. At
+ * coefsound 10 and 20 and several depths (the double inverse's rounding
+ * to float falls either way). */
+static void tension_floor(void) {
+  const double depths[4] = {0.3, 0.55, 0.6, 1.7}, sounds[2] = {10, 20};
+  int kept = 0, tight = 0, n = 0;
+  for (int a = 0; a < 4; a++)
+    for (int b = 0; b < 2; b++) {
+      struct wl_sph_config cfg;
+      wl_sph_config_default(&cfg, 2, DP, depths[a]);
+      cfg.prm.coefsound = sounds[b];
+      struct wl_sph_const k;
+      struct wl_error err;
+      wl_error_clear(&err);
+      if (wl_sph_const_make(&cfg.prm, &k, &err)) {
+        printf("FAIL constants: %s\n", err.msg);
+        wl_test_failures++;
+        return;
+      }
+      const double limit = -cfg.prm.tension_max * cfg.prm.rho0 * cfg.prm.g * cfg.prm.h_max;
+      const double p_floor = (double)wl_sph_eos_p(&k, k.rho_floor);
+      n++;
+      kept += p_floor >= limit;
+      tight += p_floor - limit <= 4 * 7 * (double)k.B * FLT_EPSILON;
+    }
+  CHECK_TRUE(kept == n, "the floor's pressure keeps the tension limit (float equation of state)");
+  CHECK_TRUE(tight == n, "and lies within four rounding steps of it");
+}
+
 int main(void) {
   struct wl_error err;
+  tension_floor();
   depth_rules();
   guard_after_limiter();
 

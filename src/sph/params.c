@@ -175,6 +175,17 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
                                ? wl_sph_eos_rho_of_p(prm->rho0, (double)k->B,
                                                      -prm->tension_max * prm->rho0 * prm->g * prm->h_max)
                                : 0.0);
+  /* The floor's contract is a tension of at most tension_max rho0 g h_max,
+   * and the pressure the solver and the probes read is the float equation of
+   * state's: the double inverse above rounds to a float density whose float
+   * pressure can lie a rounding step (0.1 Pa at coefsound 20) beyond it.
+   * Raised to the first density whose pressure keeps the contract. */
+  if (k->rho_floor > 0) {
+    const double cap = -prm->tension_max * prm->rho0 * prm->g * prm->h_max;
+    while ((double)wl_sph_eos_p(k, k->rho_floor) < cap)
+      k->rho_floor = WL_REAL_DOUBLE ? (wl_real)nextafter(k->rho_floor, INFINITY)
+                                    : (wl_real)nextafterf((float)k->rho_floor, INFINITY);
+  }
   k->rho_max = prm->rho_max_factor * prm->rho0;
   k->penetration = prm->penetration * prm->dp;
   k->shift_coef = prm->shift_coef;
