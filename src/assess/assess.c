@@ -514,8 +514,9 @@ static void case_caution(struct wl_case_result *c) {
   if (share > WL_ASSESS_REST_CAUTION) {
     const size_t used = strlen(c->caution);
     snprintf(c->caution + used, sizeof c->caution - used,
-             "%sthe positive impulse is uncertain by %.2g %% from the force at rest alone (its "
-             "window fixes it to %.2g N/m; the wave lifts the force by %.2g %% of it)",
+             "%sthe positive impulse is uncertain by %.2g %% from the force at rest alone: "
+             "that force is known to about +-%.2g N/m (the halves of its window differ by twice "
+             "that) and the wave lifts the force by only %.2g %% of it",
              used ? "; " : "", 100.0 * share, l->rest_force_spread,
              100.0 * (l->force_peak.value - l->rest_force) / l->rest_force);
   }

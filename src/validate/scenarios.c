@@ -258,8 +258,7 @@ enum wl_status wl_val_run_solitary_wall(const struct wl_val_case *c, const struc
       }
       dmom = cr.rec.momentum[i0] - cr.rec.momentum[i1];
     }
-    wl_val_rel(&lv->m[4], "fluid momentum change (2I)", "N s/m", dmom, I2,
-               NAN);
+    wl_val_rel(&lv->m[4], "fluid momentum change (2I)", "N s/m", dmom, I2, NAN);
     lv->n_metrics = 5;
   }
   wl_assess_case_clear(&cr);
