@@ -49,6 +49,44 @@ static int has_note(const struct wl_plan *p, const char *what) {
   return 0;
 }
 
+/* The Mach rule of a 3D crater's collapse (plan.h collapse_speed,
+ * docs/numerics.md): a cavity eta0 = 0.45 m deep with no lip (shape
+ * quadratic: its rim is the still level) in 0.5 m of water. Written out by
+ * hand: the depth's c0 is 10 sqrt(9.81 x 0.5) = 22.147 m/s; water falling
+ * from the rim to the floor reaches sqrt(2 x 9.81 x 0.45) = 2.9714 m/s, so
+ * in 3D c0 = 29.714 m/s; in 2D the depth's. The solver's c0 is the plan's
+ * (the flume hands it the speed). */
+static void crater_mach(void) {
+  for (int dims = 2; dims <= 3; dims++) {
+    char text[600];
+    snprintf(text, sizeof text,
+             "scenario: mach\nwater: {depth: 0.5 m}\n"
+             "domain: {dimensions: %d, length: 6 m, width: 2 m}\n"
+             "wall: {x: 5 m, height: 1.5 m}\n"
+             "loads: {explosion: {eta0: 0.45 m, r0: 1.0 m, shape: quadratic, at: 2.5 m}}\n"
+             "resolution: {dp: 0.1 m}\n",
+             dims);
+    struct wl_scenario s;
+    struct wl_plan p;
+    if (!make(text, &s, &p)) continue;
+    const double want = dims == 3 ? 29.714 : 22.147;
+    CHECK_REL(p.explosion.collapse_speed, 2.9714, 1e-4, "the crater's collapse speed, by hand");
+    CHECK_REL(p.explosion.c0, want,  1e-4,
+              dims == 3 ? "3D crater: c0 = 10 x its collapse speed" : "2D crater: the depth's c0");
+    struct wl_flume f;
+    struct wl_sph_const k;
+    struct wl_error err;
+    wl_error_clear(&err);
+    memset(&f, 0, sizeof f);
+    const int ok = wl_flume_build(&s, &p, WL_CASE_EXPLOSION, &f, &err) == WL_OK &&
+                   wl_sph_const_make(&f.cfg.prm, &k, &err) == WL_OK;
+    CHECK_TRUE(ok && k.c0_d == p.explosion.c0, "the crater flume's c0 is the plan's, bit for bit");
+    if (!ok) printf("  %s\n", err.msg);
+    wl_flume_clear(&f);
+    wl_scenario_clear(&s);
+  }
+}
+
 /* resolution.refine.from: auto, against the rule written out by hand
  * (plan.h): the interface 2 still-water depths seaward of the bed's first
  * change (on a flat bed, the solitary wave's half-length to 1 % of H,
@@ -143,6 +181,7 @@ static void refine_auto(void) {
 int main(void) {
   gsl_set_error_handler_off();
   refine_auto();
+  crater_mach();
   struct wl_scenario s;
   struct wl_plan p;
   const char *per_width = "scenario: t\nwater: {depth: 0.36 m}\ndomain: {length: 36 m}\n"

@@ -84,6 +84,10 @@ struct wl_plan_explosion {
   double arrival_time;              /* leading wave at the wall, estimated [s] */
   double quiet_until;               /* the wall's force at rest until then [s] (below) */
   double h_max;                     /* still water plus the lip's crest: sets c0 [m] */
+  double collapse_speed;            /* sqrt(2 g (rise + eta0)): water falling from the lip's
+                                       crest to the crater's floor [m/s]; in 3D c0 is at
+                                       least WL_SPH_MACH_FACTOR times it (the solver's
+                                       expected_speed, sph/params.h; docs/numerics.md) */
   double c0, dt;                    /* as the solitary case's */
   double end_time;                  /* simulated time of this case [s] */
   double x_left;                    /* the modelled flume starts here [m] */

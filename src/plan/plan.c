@@ -882,7 +882,15 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
   if (p->explosion.present) {
     struct wl_plan_explosion *px = &p->explosion;
     px->h_max = p->h + px->rise;
-    px->c0 = wl_sph_sound_speed(coefsound, p->g, px->h_max, 0.0);
+    /* the Mach rule for a 3D crater's collapse (docs/numerics.md, "the
+     * Mach rule"): its cavity converges on the axis, where the inflow from
+     * every side collides; at the depth's c0 a deep crater's collision
+     * compressed water past the guard's 1300 kg/m^3. A plane (2D) crater's
+     * two fronts meet without that focusing, and the depth's c0 holds them
+     * (measured up to 4 times the stability matrix's resolution) */
+    px->collapse_speed = sqrt(2.0 * p->g * (px->rise + px->eta0));
+    px->c0 = wl_sph_sound_speed(coefsound, p->g, px->h_max,
+                                p->dims == 3 ? px->collapse_speed : 0.0);
     px->dt = cfl * p->h_sml / px->c0;
     p->c0 = fmax(p->c0, px->c0), p->dt = fmin(p->dt, px->dt);
   }
@@ -1212,6 +1220,10 @@ void wl_plan_write(const struct wl_plan *p, FILE *out) {
     fprintf(out, "    %-34s %12.5g s\n", "wall's force at rest read until", px->quiet_until);
     fprintf(out, "    %-34s %12.5g m/s    (time step at rest %.4g s)\n", "speed of sound c0", px->c0,
             px->dt);
+    if (p->dims == 3 && px->c0 <= WL_SPH_MACH_FACTOR * px->collapse_speed * (1 + 1e-12))
+      fprintf(out, "    %-34s %12.5g m/s    (c0 is %g times it: the cavity collapses on its "
+                   "axis)\n",
+              "crater's collapse speed", px->collapse_speed, WL_SPH_MACH_FACTOR);
     if (px->absorber > 0)
       fprintf(out, "    %-34s %12.5g m      (x = %.4g to %.4g m: the seaward end absorbs)\n",
               "absorbing zone", px->absorber, px->x_left, px->x_left + px->absorber);
