@@ -18,7 +18,9 @@
  * solitary_wall, reference/RESULTS.md) are printed beside them. Not in the
  * default suite: an accuracy test (scripts/test.sh --accuracy), failing on
  * the boundary particles' impulse (2026-11-26: -46 %; probes +2.1 %, run-up
- * -0.1 %; docs/isph.md). */
+ * -0.1 %; docs/isph.md) and on the wall force's noise after the reflection
+ * (2026-11-27: 97 N/m, the bar 3.9): the probes' whole-record impulse
+ * (-0.3 % that day) integrates that noise and passes by chance. */
 #include <gsl/gsl_errno.h>
 #include <math.h>
 #include <stdlib.h>
@@ -120,6 +122,19 @@ int main(void) {
       printf("  t = %.3f s: force probes %.2f, boundary %.2f N/m\n", r->t[i], r->force[i],
              r->force_bound[i]);
   const double I2 = 2 * I_table * rho * h * h * sqrt(g * h);
+  /* The wall force's noise over the record's last 30 %, after the
+   * reflection: the rms of F_i - (F_{i-1} + F_{i+1})/2 at the 5 ms outputs.
+   * A force record the wave makes is smooth at that spacing (the first
+   * 1.7 s read 1.9 N/m); issue 22 asks for wall pressure quoted without a
+   * filter, so the noise is held to 2 % of the force at rest. 2026-11-27:
+   * 97 N/m, the projection's pressure degrading after 1.8 s (docs/isph.md). */
+  double noise = 0;
+  size_t n_noise = 0;
+  for (size_t i = (size_t)(0.7 * (double)r->n) + 1; i + 1 < r->n; i++, n_noise++) {
+    const double d = r->force[i] - 0.5 * (r->force[i - 1] + r->force[i + 1]);
+    noise += d * d;
+  }
+  noise = n_noise ? sqrt(noise / (double)n_noise) : NAN;
   const double R_ref = h * (2 * eps + eps * eps / 2 + 0.75 * eps * eps * eps);
   printf("ISPH, eps = %.2f, dp = %g m: %ld steps to t = %.3f s; force at rest %.2f (probes), "
          "%.2f (boundary) N/m (rho g h^2/2 = %.2f); impulse probes %.2f, boundary %.2f N s/m "
@@ -129,6 +144,9 @@ int main(void) {
          100 * (runup / R_ref - 1));
   printf("  (WCSPH on the same scene, validate solitary_wall at dp = 0.01 m: probes -1.7 %%, "
          "boundary -2.7 %%, run-up -1.8 %%; reference/RESULTS.md)\n");
+  printf("  wall force noise over the last 30 %% of the record: %.2f N/m (bar: 2 %% of the force "
+         "at rest, %.2f N/m)\n", noise, 0.02 * rest_p);
+  CHECK_TRUE(noise < 0.02 * rest_p, "the wall force after the reflection is not noise");
   CHECK_REL(imp_p, I2, 0.05, "ISPH probe impulse = 2 I (REFERENCES 4.2 and 3.4)");
   CHECK_REL(imp_b, I2, 0.05, "ISPH boundary impulse = 2 I (REFERENCES 4.2 and 3.4)");
   CHECK_REL(runup, R_ref, 0.05, "ISPH maximum run-up (the wall gauge), Su & Mirie (1980)");
