@@ -12,8 +12,10 @@
 #    refinement ratios), with the uncertainty bands of loads.h;
 #  - the report PDF (rendered by `wallload report` from results.h5 alone)
 #    holds the ladder table with summary.json's peak forces as printed;
-#  - resolution.target_error: 20 % stops the same ladder after level 2
-#    (its last change is well under 20 %) and says so.
+#  - resolution.target_error: 40 % stops the same ladder after level 2
+#    (the estimate after two levels, 24.5 % at dp 0.025 m, is governed by
+#    the peak force's part above the force at rest; on the whole peak it
+#    would read about 15 %) and says so.
 set -u
 bin=$1; src=$2
 fail=0
@@ -78,7 +80,8 @@ report(all(same(l['dp'], dp0 * f) for l, f in zip(lv, (1, 0.71, 0.5))),
        "level dp = %g m x 1, 0.71, 0.5: %s" % (dp0, [l['dp'] for l in lv]))
 rows = [r for r in csv.DictReader(open(sys.argv[2])) if r['case'] == 'solitary']
 keys = [('dp', 'dp_m'), ('particles', 'particles'), ('steps', 'steps'), ('runtime', 'runtime_s'),
-        ('peak_force', 'peak_force_N_per_m'), ('impulse', 'impulse_Ns_per_m'),
+        ('peak_force', 'peak_force_N_per_m'), ('rest_force', 'rest_force_N_per_m'),
+        ('impulse', 'impulse_Ns_per_m'),
         ('impulse_positive_phase', 'impulse_positive_phase_Ns_per_m'),
         ('impulse_positive', 'impulse_positive_Ns_per_m'),
         ('peak_moment', 'peak_moment_Nm_per_m'), ('max_runup', 'max_runup_m'),
@@ -123,9 +126,11 @@ def celik(h, f):
     return p, ext, u / abs(f1), basis
 
 h = [l['dp'] for l in lv]
-errs = []
-for q, key in (('peak_force', 'peak_force'), ('impulse_positive', 'impulse_positive')):
-    f = [l[key] for l in lv]
+errs = {}
+for q, key in (('peak_force', 'peak_force'), ('peak_force_dynamic', None),
+               ('impulse_positive', 'impulse_positive')):
+    # peak_force_dynamic: the peak less the level's force at rest (the wave's part)
+    f = [l[key] for l in lv] if key else [l['peak_force'] - l['rest_force'] for l in lv]
     p, ext, err, basis = celik(h, f)
     st = cv[q]
     d1, d2 = f[0] - f[1], f[1] - f[2]
@@ -144,9 +149,11 @@ for q, key in (('peak_force', 'peak_force'), ('impulse_positive', 'impulse_posit
     if ext is not None:
         good = good and same(ext, st['extrapolated'], 1e-6)
     report(good, what)
-    errs.append(err)
-report(same(max(errs), cv['error_estimate'], 1e-6),
-       "case error estimate = the larger of the two: %.6g (stored %.6g)" % (max(errs), cv['error_estimate']))
+    errs[q] = err
+case = max(errs['peak_force_dynamic'], errs['impulse_positive'])
+report(same(case, cv['error_estimate'], 1e-6),
+       "case error estimate = the larger of the peak's part above the force at rest and the "
+       "positive impulse: %.6g (stored %.6g)" % (case, cv['error_estimate']))
 report(same(cv['target'], 0.05) and cv['target_given'] is False and cv['target_met'] == (cv['error_estimate'] <= 0.05),
        "no target_error written: default 5 %% reported, met = %s, no early stop" % cv['target_met'])
 sys.exit(fails)
@@ -184,18 +191,18 @@ sys.exit(fails)
 PY
 fail=$((fail+$?))
 
-# target_error: the same ladder stops once the estimate is under 20 %.
-sed 's/convergence: \[1, 0.71, 0.5\]}/convergence: [1, 0.71, 0.5], target_error: 20 %}/' ladder.yaml > target.yaml
+# target_error: the same ladder stops once the estimate is under 40 %.
+sed 's/convergence: \[1, 0.71, 0.5\]}/convergence: [1, 0.71, 0.5], target_error: 40 %}/' ladder.yaml > target.yaml
 "$bin" assess target.yaml -o tgt --quiet --threads 1 --end-time 0.3 >tout.txt 2>&1; rc=$?
 [ $rc = 0 ] && ok "assess with target_error (exit 0)" || bad "assess target exit $rc: $(cat tout.txt)"
 python3 - tgt/summary.json <<'PY'
 import json, sys
 cv = json.load(open(sys.argv[1]))['cases']['solitary']['convergence']
 n = len(cv['levels'])
-good = (cv['target_given'] is True and abs(cv['target'] - 0.2) < 1e-12 and cv['stopped_early'] is True
-        and n == 2 and cv['error_estimate'] <= 0.2 and cv['target_met'] is True
+good = (cv['target_given'] is True and abs(cv['target'] - 0.4) < 1e-12 and cv['stopped_early'] is True
+        and n == 2 and cv['error_estimate'] <= 0.4 and cv['target_met'] is True
         and 'stopped refining after level 2 of 3' in cv['note'])
-print("%s target_error 20 %%: %d of 3 levels run, estimate %.4g, stopped early: %s; note: %s"
+print("%s target_error 40 %%: %d of 3 levels run, estimate %.4g, stopped early: %s; note: %s"
       % ("PASS" if good else "FAIL", n, cv['error_estimate'] or float('nan'), cv['stopped_early'], cv['note']))
 sys.exit(0 if good else 1)
 PY

@@ -156,13 +156,16 @@ struct wl_assess_level {
   double t_reached;         /* [s] */
   double peak_force;        /* filtered, pressure probes [N/m] */
   double peak_force_bound;  /* filtered, boundary particles [N/m] */
+  double rest_force;        /* the probes' force at rest, the model's [N/m] (assess.h
+                               wl_case_loads.rest_force) */
   double impulse;           /* int (F - F_static) dt, probes, whole record [N s/m] */
   double impulse_phase;     /* the same over the peak's positive phase (loads.h) [N s/m] */
   double impulse_positive;  /* int max(0, F_filtered - F_rest) dt, probes (loads.h) [N s/m] */
   double peak_moment;       /* filtered, about the toe [N m/m] */
   double runup;             /* max water level at the wall above still water [m] */
-  double error;             /* estimated relative error of this level: the larger of peak
-                               force and positive impulse, |f_k - f_ref|/|f_ref| with f_ref the
+  double error;             /* estimated relative error of this level: the larger of the peak
+                               force's part above the force at rest and the positive impulse,
+                               |f_k - f_ref|/|f_ref| with f_ref the
                                Richardson value when the order is meaningful, else the
                                finest level run; the finest level gets the case's uncertainty */
 };
@@ -177,7 +180,12 @@ struct wl_assess_convergence {
    * the peak's positive phase changes crest between resolutions (loads.h
    * wl_loads_positive_impulse) */
   struct wl_loads_convergence force, impulse_pos;
-  double error_estimate;    /* max(force.error, impulse_pos.error) [-]; NaN: none */
+  /* of the peak force less the force at rest, the wave's part: where the
+   * wave lifts a large force at rest a little (deep water), the peak force's
+   * relative uncertainty is small beside it, and that part is what the
+   * resolution decides (docs/convergence.md) */
+  struct wl_loads_convergence force_dynamic;
+  double error_estimate;    /* max(force_dynamic.error, impulse_pos.error) [-]; NaN: none */
   double target;            /* resolution.target_error [-] (its default when not given) */
   int target_given;         /* 1: written in the scenario: the ladder may stop early */
   int target_met;           /* error_estimate <= target */

@@ -256,6 +256,7 @@ struct wl_results_convergence {
   double runtime[WL_RESULTS_MAX_LEVELS], rate[WL_RESULTS_MAX_LEVELS];    /* [s], [1/s] */
   double time_reached[WL_RESULTS_MAX_LEVELS];                            /* [s] */
   double peak_force[WL_RESULTS_MAX_LEVELS], peak_force_b[WL_RESULTS_MAX_LEVELS]; /* [N/m] */
+  double rest_force[WL_RESULTS_MAX_LEVELS]; /* the probes' force at rest [N/m] */
   double impulse[WL_RESULTS_MAX_LEVELS];       /* whole record [N s/m] */
   double impulse_phase[WL_RESULTS_MAX_LEVELS]; /* the peak's positive phase [N s/m] */
   double impulse_pos[WL_RESULTS_MAX_LEVELS];   /* the positive impulse [N s/m] */
@@ -266,8 +267,10 @@ struct wl_results_convergence {
   double levels_planned, levels_run, ratio;
   double force_order, force_order_ok, force_extrapolated, force_error;
   double pos_order, pos_order_ok, pos_extrapolated, pos_error; /* positive impulse */
+  /* the peak force less the force at rest (the wave's part) */
+  double dyn_order, dyn_order_ok, dyn_extrapolated, dyn_error;
   double error_estimate, target, target_given, target_met, stopped_early;
-  char force_basis[32], pos_basis[32]; /* wl_loads_estimate_name: "GCI", "3 x range", ... */
+  char force_basis[32], pos_basis[32], dyn_basis[32]; /* wl_loads_estimate_name: "GCI", ... */
   char note[WL_RESULTS_TEXT_MAX];      /* how the ladder ended */
 };
 

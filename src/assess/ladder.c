@@ -29,6 +29,7 @@ static double rel_change(double f, double ref) { return fabs(f - ref) / fabs(ref
 
 void ladder_estimate(struct wl_assess_convergence *cv) {
   double h[WL_ASSESS_MAX_LEVELS], fo[WL_ASSESS_MAX_LEVELS], im[WL_ASSESS_MAX_LEVELS];
+  double fd[WL_ASSESS_MAX_LEVELS]; /* the peak force's part above the force at rest */
   int idx[WL_ASSESS_MAX_LEVELS], m = 0;
   /* only complete levels: a stopped run's peaks are not the event's */
   for (int k = 0; k < cv->n_levels; k++) {
@@ -36,22 +37,24 @@ void ladder_estimate(struct wl_assess_convergence *cv) {
     if (cv->lv[k].status != WL_OK) continue;
     h[m] = cv->lv[k].dp;
     fo[m] = cv->lv[k].peak_force;
+    fd[m] = cv->lv[k].peak_force - cv->lv[k].rest_force;
     im[m] = cv->lv[k].impulse_positive;
     idx[m++] = k;
   }
   wl_loads_convergence(h, fo, m, &cv->force);
+  wl_loads_convergence(h, fd, m, &cv->force_dynamic);
   wl_loads_convergence(h, im, m, &cv->impulse_pos);
-  cv->error_estimate = (isnan(cv->force.error) || isnan(cv->impulse_pos.error))
+  cv->error_estimate = (isnan(cv->force_dynamic.error) || isnan(cv->impulse_pos.error))
                            ? NAN
-                           : fmax(cv->force.error, cv->impulse_pos.error);
+                           : fmax(cv->force_dynamic.error, cv->impulse_pos.error);
   cv->target_met = isfinite(cv->error_estimate) && cv->error_estimate <= cv->target;
   if (m < 2) return;
   /* each coarser level against the best value known: Richardson's when the
    * order is meaningful, else the finest complete level */
-  double ref_f = cv->force.order_ok ? cv->force.extrapolated : fo[m - 1];
+  double ref_f = cv->force_dynamic.order_ok ? cv->force_dynamic.extrapolated : fd[m - 1];
   double ref_i = cv->impulse_pos.order_ok ? cv->impulse_pos.extrapolated : im[m - 1];
   for (int j = 0; j + 1 < m; j++)
-    cv->lv[idx[j]].error = fmax(rel_change(fo[j], ref_f), rel_change(im[j], ref_i));
+    cv->lv[idx[j]].error = fmax(rel_change(fd[j], ref_f), rel_change(im[j], ref_i));
   cv->lv[idx[m - 1]].error = cv->error_estimate;
 }
 
@@ -66,6 +69,7 @@ static void level_from_case(struct wl_assess_level *lv, const struct wl_case_res
   lv->t_reached = c->t_reached;
   lv->peak_force = have ? l->force_peak.value : NAN;
   lv->peak_force_bound = have ? l->force_bound_peak.value : NAN;
+  lv->rest_force = have ? l->rest_force : NAN;
   lv->impulse = have ? l->impulse_total : NAN;
   lv->impulse_phase = have ? l->impulse_peak : NAN;
   lv->impulse_positive = have ? l->impulse_positive : NAN;
@@ -88,7 +92,7 @@ static void ladder_note(struct wl_assess_convergence *cv, const char *stop_word)
   pct(cv->target, t, sizeof t);
   /* the basis of the larger of the two quantities' bands */
   const struct wl_loads_convergence *gov =
-      !(cv->impulse_pos.error > cv->force.error) ? &cv->force : &cv->impulse_pos;
+      !(cv->impulse_pos.error > cv->force_dynamic.error) ? &cv->force_dynamic : &cv->impulse_pos;
   const char *basis = wl_loads_estimate_name(gov->basis);
   const struct wl_assess_level *last = &cv->lv[cv->n_levels - 1];
   if (stop_word)

@@ -80,6 +80,7 @@ static void ladder_columns(const struct wl_assess_convergence *cv,
     out->runtime[l] = lv->runtime_s, out->rate[l] = lv->rate;
     out->time_reached[l] = lv->t_reached;
     out->peak_force[l] = lv->peak_force, out->peak_force_b[l] = lv->peak_force_bound;
+    out->rest_force[l] = lv->rest_force;
     out->impulse[l] = lv->impulse, out->impulse_phase[l] = lv->impulse_phase;
     out->impulse_pos[l] = lv->impulse_positive, out->peak_moment[l] = lv->peak_moment;
     out->runup[l] = lv->runup, out->error[l] = lv->error;
@@ -89,6 +90,10 @@ static void ladder_columns(const struct wl_assess_convergence *cv,
   out->ratio = cv->force.r32;
   out->force_order = cv->force.order, out->force_order_ok = cv->force.order_ok;
   out->force_extrapolated = cv->force.extrapolated, out->force_error = cv->force.error;
+  out->dyn_order = cv->force_dynamic.order, out->dyn_order_ok = cv->force_dynamic.order_ok;
+  out->dyn_extrapolated = cv->force_dynamic.extrapolated, out->dyn_error = cv->force_dynamic.error;
+  snprintf(out->dyn_basis, sizeof out->dyn_basis, "%s",
+           wl_loads_estimate_name(cv->force_dynamic.basis));
   out->pos_order = cv->impulse_pos.order, out->pos_order_ok = cv->impulse_pos.order_ok;
   out->pos_extrapolated = cv->impulse_pos.extrapolated, out->pos_error = cv->impulse_pos.error;
   out->error_estimate = cv->error_estimate, out->target = cv->target;
@@ -153,6 +158,7 @@ static void json_convergence(struct wl_text *t, const struct wl_assess_convergen
   jnum(t, cv->impulse_pos.order);
   wl_text_put(t, " },\n");
   json_estimate(t, "peak_force", &cv->force, 0);
+  json_estimate(t, "peak_force_dynamic", &cv->force_dynamic, 0);
   json_estimate(t, "impulse_positive", &cv->impulse_pos, 0);
   wl_text_put(t, "        \"error_estimate\": ");
   jnum(t, cv->error_estimate);

@@ -407,10 +407,12 @@ static void print_convergence(const struct wl_case_result *c,
            lv->status == WL_OK ? "" : "  (stopped)");
   }
   printf("    observed order: peak force %.3g%s, positive impulse %.3g%s; uncertainty: peak "
-         "force %.3g %% (%s), positive impulse %.3g %% (%s)\n",
+         "force %.3g %% (%s), its part above the force at rest %.3g %% (%s), positive impulse "
+         "%.3g %% (%s)\n",
          cv->force.order, cv->force.order_ok ? "" : " (not meaningful)", cv->impulse_pos.order,
          cv->impulse_pos.order_ok ? "" : " (not meaningful)", 100 * cv->force.error,
-         wl_loads_estimate_name(cv->force.basis), 100 * cv->impulse_pos.error,
+         wl_loads_estimate_name(cv->force.basis), 100 * cv->force_dynamic.error,
+         wl_loads_estimate_name(cv->force_dynamic.basis), 100 * cv->impulse_pos.error,
          wl_loads_estimate_name(cv->impulse_pos.basis));
   printf("    %s: %s\n", c->name, cv->note);
 }

@@ -221,8 +221,9 @@ static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
     const struct wl_results_convergence *cv = &r->conv[i];
     if (!cv->present || cv->n_levels < 1)
       continue;
-    char ef[64], ei[64], dpf[64];
+    char ef[64], ed[64], ei[64], dpf[64];
     wl_report_fmt(100.0 * cv->force_error, SHARE_DIGITS, ef, sizeof ef);
+    wl_report_fmt(100.0 * cv->dyn_error, SHARE_DIGITS, ed, sizeof ed);
     wl_report_fmt(100.0 * cv->pos_error, SHARE_DIGITS, ei, sizeof ei);
     wl_report_fmt(cv->dp[cv->n_levels - 1], 3, dpf, sizeof dpf);
     if (!isfinite(cv->error_estimate))
@@ -234,8 +235,10 @@ static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
     else
       put(&b,
           "Convergence ladder of the %s case (%d levels, finest dp = %s m): uncertainty of the "
-          "resolution +-%s %% of the peak force (%s) and +-%s %% of the positive impulse (%s)%s. ",
-          wl_store_results_case_name(i), cv->n_levels, dpf, ef, cv->force_basis, ei, cv->pos_basis,
+          "resolution +-%s %% of the peak force (%s), +-%s %% of its part above the force at "
+          "rest (%s), and +-%s %% of the positive impulse (%s)%s. ",
+          wl_store_results_case_name(i), cv->n_levels, dpf, ef, cv->force_basis, ed, cv->dyn_basis,
+          ei, cv->pos_basis,
           !isfinite(cv->target)     ? ""
           : cv->target_met > 0      ? ", within the target"
                                     : ", above the target");
@@ -603,7 +606,7 @@ static enum wl_status convergence_summary_table(struct wl_report_ctx *c, int dg,
       {"target", "%", WL_REPORT_ALIGN_AUTO, 2},
       {"met", NULL, WL_REPORT_ALIGN_LEFT, 0},
   };
-  enum { NC = 8, ROWS = 3 };
+  enum { NC = 8, ROWS = 4 };
   struct wl_report_column cols[NC];
   memcpy(cols, cols0, sizeof cols);
   cols[3].sig = dg;
@@ -614,7 +617,7 @@ static enum wl_status convergence_summary_table(struct wl_report_ctx *c, int dg,
     const struct wl_results_convergence *cv = &r->conv[i];
     if (!cv->present)
       continue;
-    struct wl_report_cell *a = &cells[rows * NC], *b = a + NC, *e = b + NC;
+    struct wl_report_cell *a = &cells[rows * NC], *d = a + NC, *b = d + NC, *e = b + NC;
     for (int k = 0; k < ROWS * NC; k++)
       a[k] = blank;
     a[0] = (struct wl_report_cell){wl_store_results_case_name(i), 0};
@@ -623,6 +626,12 @@ static enum wl_status convergence_summary_table(struct wl_report_ctx *c, int dg,
     a[3] = (struct wl_report_cell){NULL, cv->force_extrapolated / KILO};
     a[4] = (struct wl_report_cell){NULL, 100.0 * cv->force_error};
     a[5] = (struct wl_report_cell){cv->force_basis[0] ? cv->force_basis : "?", 0};
+    /* the wave's part: the peak less the force at rest (the case's estimate takes it) */
+    d[1] = (struct wl_report_cell){"peak less force at rest [kN/m]", 0};
+    d[2] = (struct wl_report_cell){NULL, cv->dyn_order};
+    d[3] = (struct wl_report_cell){NULL, cv->dyn_extrapolated / KILO};
+    d[4] = (struct wl_report_cell){NULL, 100.0 * cv->dyn_error};
+    d[5] = (struct wl_report_cell){cv->dyn_basis[0] ? cv->dyn_basis : "?", 0};
     b[1] = (struct wl_report_cell){"positive impulse [kN s/m]", 0};
     b[2] = (struct wl_report_cell){NULL, cv->pos_order};
     b[3] = (struct wl_report_cell){NULL, cv->pos_extrapolated / KILO};

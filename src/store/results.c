@@ -164,6 +164,8 @@ const struct wl_results_column wl_store_results_levels[] = {
     LC(time_reached, "time_reached", "s", "simulated time reached"),
     LC(peak_force, "peak_force", "N/m", "peak of the filtered pressure-probe force"),
     LC(peak_force_b, "peak_force_boundary", "N/m", "peak of the filtered boundary-particle force"),
+    LC(rest_force, "rest_force", "N/m",
+       "the probes' force at rest, the model's (peak_force less it is the wave's part)"),
     LC(impulse, "impulse", "N s/m", "integral of (probe force - static force) dt to the end"),
     LC(impulse_phase, "impulse_positive_phase", "N s/m",
        "integral of (probe force - static force) dt over the peak's positive phase"),
@@ -172,7 +174,8 @@ const struct wl_results_column wl_store_results_levels[] = {
     LC(peak_moment, "peak_moment", "N m/m", "peak of the filtered overturning moment about the toe"),
     LC(runup, "max_runup", "m", "highest water level at the wall face above still water"),
     LC(error, "estimated_error", "1",
-       "relative error of the level: larger of peak force and positive impulse, against "
+       "relative error of the level: larger of the peak force's part above the force at rest "
+       "and the positive impulse, against "
        "the Richardson value (or the finest level); the finest level's is the case's "
        "uncertainty (loads.h)"),
     LC(status, "status", "",
@@ -189,7 +192,7 @@ enum { STATUS_COLUMN = sizeof wl_store_results_levels / sizeof wl_store_results_
 static const size_t LEVEL_OFFSET[] = {
     LM(factor),     LM(dp),           LM(particles),     LM(steps),
     LM(runtime),    LM(rate),         LM(time_reached),  LM(peak_force),
-    LM(peak_force_b), LM(impulse),    LM(impulse_phase), LM(impulse_pos),
+    LM(peak_force_b), LM(rest_force), LM(impulse),    LM(impulse_phase), LM(impulse_pos),
     LM(peak_moment), LM(runup),       LM(error),         LM(status),
 };
 #undef LM
@@ -221,6 +224,10 @@ static const struct key CONV_KEYS[] = {
     KD(wl_results_convergence, pos_order_ok, "impulse_positive_order_meaningful", "1", 0),
     KD(wl_results_convergence, pos_extrapolated, "impulse_positive_extrapolated", "N s/m", 0),
     KD(wl_results_convergence, pos_error, "impulse_positive_error_estimate", "1", 0),
+    KD(wl_results_convergence, dyn_order, "peak_force_dynamic_order", "1", 0),
+    KD(wl_results_convergence, dyn_order_ok, "peak_force_dynamic_order_meaningful", "1", 0),
+    KD(wl_results_convergence, dyn_extrapolated, "peak_force_dynamic_extrapolated", "N/m", 0),
+    KD(wl_results_convergence, dyn_error, "peak_force_dynamic_error_estimate", "1", 0),
     KD(wl_results_convergence, error_estimate, "error_estimate", "1", 0),
     KD(wl_results_convergence, target, "target", "1", 0),
     KD(wl_results_convergence, target_given, "target_given", "1", 0),
@@ -228,6 +235,7 @@ static const struct key CONV_KEYS[] = {
     KD(wl_results_convergence, stopped_early, "stopped_early", "1", 0),
     KT(wl_results_convergence, force_basis, "peak_force_basis", 0),
     KT(wl_results_convergence, pos_basis, "impulse_positive_basis", 0),
+    KT(wl_results_convergence, dyn_basis, "peak_force_dynamic_basis", 0),
     KT(wl_results_convergence, note, "note", 0),
 };
 
