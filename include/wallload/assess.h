@@ -42,7 +42,8 @@
  *     three values when they oscillate), relative to |f3|; with two
  *     levels 3 |f3 - f2| / (r^2 - 1).
  *
- * The case's estimate is the larger of the two quantities'. When
+ * The case's estimate is the larger of the positive impulse's and that of
+ * the peak force less the level's force at rest (force_dynamic). When
  * resolution.target_error is written in the scenario, refining stops once
  * that estimate (available from the second level on) is below the target; the levels not run are listed as skipped. Without it the
  * whole ladder runs and the estimate is compared with the default target

@@ -48,7 +48,9 @@ struct wl_sweep_loads {
   double impulse_positive_phase;    /* the peak's positive phase, probes [N s/m] */
   double peak_moment;               /* filtered, about the toe [N m/m] */
   double max_runup;                 /* [m] */
-  double uncertainty;               /* the ladder's: larger of the two below [-]; NaN: none */
+  double uncertainty;               /* the ladder's error_estimate (assess.h): the larger of
+                                       uncertainty_impulse and that of the peak force less the
+                                       force at rest [-]; NaN: none */
   double uncertainty_force;         /* of peak_force [-] */
   double uncertainty_impulse;       /* of impulse_positive [-] */
 };

@@ -710,10 +710,10 @@ static enum wl_status convergence_plot(struct wl_report_ctx *c, struct wl_error 
   if (!st)
     st = wl_report_end_figure(
         c->doc,
-        "Speed against error: the relative error of each coarser level (the larger of peak "
-        "force and positive impulse, against the Richardson value where the order is "
-        "meaningful, else against the finest level) and the finest level's uncertainty, against "
-        "the wall-clock runtime of that level, log-log.",
+        "Speed against error: the relative error of each coarser level (the larger of the peak "
+        "force's part above the force at rest and the positive impulse, against the Richardson "
+        "value where the order is meaningful, else against the finest level) and the finest "
+        "level's uncertainty, against the wall-clock runtime of that level, log-log.",
         err);
   return st;
 }
@@ -742,10 +742,11 @@ enum wl_status wl_report_render_convergence(struct wl_report_ctx *c,
           "least 1.25 times the range of the three values; for a smaller p the smaller of "
           "1.25 |f3 - f_ext| and 3 times the range; where the values oscillate, 3 times their "
           "range; with two levels 3 |f3 - f2| / (r^2 - 1). It is given relative to f3. A case's "
-          "uncertainty is the larger of those of the peak force and the positive impulse (an "
-          "oscillating wave train's net impulse is too small a difference to converge, and "
-          "which crest carries its peak, whose positive phase would be integrated, changes "
-          "with resolution).",
+          "uncertainty is the larger of those of the peak force less the model's force at rest "
+          "(the wave's part: the whole peak's relative band is small where the wave adds little "
+          "to a large force at rest) and the positive impulse (an oscillating wave train's net "
+          "impulse is too small a difference to converge, and which crest carries its peak, "
+          "whose positive phase would be integrated, changes with resolution).",
           asked[0] ? " " : "", asked);
     for (int i = 0; !st && i < WL_RESULTS_N_CASES; i++)
       if (r->conv[i].present)
