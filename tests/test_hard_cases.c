@@ -137,7 +137,8 @@ static void run(const char *name, const char *text_in, int verlet, int quiet, do
  * at fine is 0.19-0.25 M particles, at finer 1.7 M), `gpu` (the CUDA
  * backend; exit 77, a skip, without a GPU). The 3D rows take 6-20 minutes a
  * thread on the CPU at their own dp and 1-3 s on an H100; at fine 6-28 s
- * there, which is where ctest runs them (hard_cases_gpu_*).
+ * there, which is where ctest runs them (hard_cases_gpu_*); the 2D rows
+ * run there at finer (50-110 k particles, 2-9 s).
  * Measured 2026-11-27 on the H100: at fine the 3D deep crater with the
  * depth's c0 (30.5 m/s) stopped at t = 1.43 s, a particle beside the axis
  * compressed to 1301.7 kg/m^3 (the guard's 1300) at 10 m/s, and at finer at
