@@ -255,7 +255,8 @@ static void test_storage(void) {
       same &= rc->dp[l] == lv->dp && rc->factor[l] == lv->factor &&
               rc->particles[l] == lv->n_particles && rc->steps[l] == (double)lv->steps &&
               rc->runtime[l] == lv->runtime_s && rc->peak_force[l] == lv->peak_force &&
-              rc->peak_force_b[l] == lv->peak_force_bound && rc->impulse[l] == lv->impulse &&
+              rc->peak_force_b[l] == lv->peak_force_bound && rc->rest_force[l] == lv->rest_force &&
+              rc->impulse[l] == lv->impulse &&
               rc->impulse_phase[l] == lv->impulse_phase && rc->impulse_pos[l] == lv->impulse_positive &&
               rc->peak_moment[l] == lv->peak_moment && rc->runup[l] == lv->runup &&
               close_rel(rc->error[l], lv->error, 0) && rc->status[l] == (int)lv->status;
@@ -270,6 +271,9 @@ static void test_storage(void) {
               close_rel(rc->pos_order, cv->impulse_pos.order, 0) &&
               close_rel(rc->pos_error, cv->impulse_pos.error, 0) && !strcmp(rc->pos_basis, wl_loads_estimate_name(cv->impulse_pos.basis)) &&
               close_rel(rc->force_extrapolated, cv->force.extrapolated, 0) &&
+              close_rel(rc->dyn_error, cv->force_dynamic.error, 0) &&
+              close_rel(rc->dyn_order, cv->force_dynamic.order, 0) &&
+              !strcmp(rc->dyn_basis, wl_loads_estimate_name(cv->force_dynamic.basis)) &&
               close_rel(rc->error_estimate, cv->error_estimate, 0) && rc->target == cv->target &&
               rc->target_met == cv->target_met && !strcmp(rc->note, cv->note),
           msg);
@@ -280,6 +284,15 @@ static void test_storage(void) {
     wl_loads_convergence(h, f, 3, &again);
     check(close_rel(again.error, rc->force_error, 1e-15),
           "the peak-force estimate recomputed from the stored levels equals the stored one");
+    /* and the wave's part, the peak less the force at rest, the case's
+     * estimate with the positive impulse's */
+    for (int l = 0; l < 3; l++) f[l] = rc->peak_force[l] - rc->rest_force[l];
+    wl_loads_convergence(h, f, 3, &again);
+    check(close_rel(again.error, rc->dyn_error, 1e-15) &&
+              close_rel(fmax(again.error, rc->pos_error), rc->error_estimate, 1e-15),
+          "the estimate of the peak's part above the force at rest, recomputed from the stored "
+          "levels, equals the stored one, and the case's is the larger of it and the positive "
+          "impulse's");
   }
   if (rr) {
     wl_store_results_clear(rr);
