@@ -85,9 +85,11 @@ struct wl_plan_explosion {
   double quiet_until;               /* the wall's force at rest until then [s] (below) */
   double h_max;                     /* still water plus the lip's crest: sets c0 [m] */
   double collapse_speed;            /* sqrt(2 g (rise + eta0)): water falling from the lip's
-                                       crest to the crater's floor [m/s]; in 3D c0 is at
-                                       least WL_SPH_MACH_FACTOR times it (the solver's
-                                       expected_speed, sph/params.h; docs/numerics.md) */
+                                       crest to the crater's floor [m/s] */
+  double expected_speed;            /* the largest flow speed the flume tells the solver
+                                       (sph/params.h; c0 is at least WL_SPH_MACH_FACTOR
+                                       times it): collapse_speed in 3D, 0 in 2D
+                                       (docs/numerics.md, the Mach rule) */
   double c0, dt;                    /* as the solitary case's */
   double end_time;                  /* simulated time of this case [s] */
   double x_left;                    /* the modelled flume starts here [m] */

@@ -263,8 +263,7 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
              : load == WL_CASE_EXPLOSION ? px->h_max
                                          : depth,
              &f->cfg);
-  if (load == WL_CASE_EXPLOSION && dim == 3) /* the plan's c0 (plan.h collapse_speed) */
-    f->cfg.prm.expected_speed = px->collapse_speed;
+  if (load == WL_CASE_EXPLOSION) f->cfg.prm.expected_speed = px->expected_speed; /* plan.h */
   if (s->domain.far_end.choice == WL_FAR_END_DAMPING && plan->land_length > 0) {
     /* over the far half of the land, at a rate that stops water arriving at
      * the long-wave speed within about a tenth of the zone's crossing time */

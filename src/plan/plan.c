@@ -889,8 +889,8 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
      * two fronts meet without that focusing, and the depth's c0 holds them
      * (measured up to 4 times the stability matrix's resolution) */
     px->collapse_speed = sqrt(2.0 * p->g * (px->rise + px->eta0));
-    px->c0 = wl_sph_sound_speed(coefsound, p->g, px->h_max,
-                                p->dims == 3 ? px->collapse_speed : 0.0);
+    px->expected_speed = p->dims == 3 ? px->collapse_speed : 0.0;
+    px->c0 = wl_sph_sound_speed(coefsound, p->g, px->h_max, px->expected_speed);
     px->dt = cfl * p->h_sml / px->c0;
     p->c0 = fmax(p->c0, px->c0), p->dt = fmin(p->dt, px->dt);
   }
@@ -1220,7 +1220,7 @@ void wl_plan_write(const struct wl_plan *p, FILE *out) {
     fprintf(out, "    %-34s %12.5g s\n", "wall's force at rest read until", px->quiet_until);
     fprintf(out, "    %-34s %12.5g m/s    (time step at rest %.4g s)\n", "speed of sound c0", px->c0,
             px->dt);
-    if (p->dims == 3 && px->c0 <= WL_SPH_MACH_FACTOR * px->collapse_speed * (1 + 1e-12))
+    if (px->expected_speed > 0 && px->c0 <= WL_SPH_MACH_FACTOR * px->expected_speed * (1 + 1e-12))
       fprintf(out, "    %-34s %12.5g m/s    (c0 is %g times it: the cavity collapses on its "
                    "axis)\n",
               "crater's collapse speed", px->collapse_speed, WL_SPH_MACH_FACTOR);
