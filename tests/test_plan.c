@@ -270,9 +270,10 @@ int main(void) {
    * (wl_plan_choose): on the 2-core machine the coarsest candidate, on an
    * H100 the finest; each choice's estimated ladder against the whole
    * `assess` measured on that machine (BENCHMARKS.md "The main job on this
-   * machine": 849.6 s on 2 cores for dp = 0.02, 0.015, 0.012 m; 59.7 s on
-   * the H100, 2026-11-26, for dp = 0.0086, 0.006, 0.0043 m at c081978, 55.1
-   * s at 9b43310), within 25 %. */
+   * machine": 849.6 s on 2 cores for dp = 0.02, 0.015, 0.012 m; 170.5 s on
+   * the H100, 2026-11-28, for dp = 0.0086, 0.006, 0.0043 m with the
+   * explosion's 4 realisations a level that auto plans on a GPU), within
+   * 25 %. */
   {
     struct wl_scenario sw;
     struct wl_plan pw;
@@ -283,7 +284,7 @@ int main(void) {
     gpu.device_bytes = WL_PLAN_GPU_BYTES;
     snprintf(gpu.device_name, sizeof gpu.device_name, "H100");
     const struct wl_plan_machine *machines[2] = {&cpu, &gpu};
-    const double want_pph[2] = {2.0, 5.66}, measured_s[2] = {849.6, 59.7};
+    const double want_pph[2] = {2.0, 5.66}, measured_s[2] = {849.6, 170.5};
     for (int k = 0; k < 2; k++) {
       if (!plan_seawall(0, &sw, &pw)) continue;
       struct wl_plan_choice c;
@@ -292,9 +293,32 @@ int main(void) {
                      wl_plan_choose(&sw, machines[k], &c, &err) == WL_OK && c.is_auto,
                  "seawall.yaml's particles_per_height auto resolves");
       CHECK_REL(c.ppH, want_pph[k], 1e-12, k ? "auto on an H100: 5.66" : "auto on 2 cores: 2");
+      /* resolution.realisations: auto: 4 explosion runs a level on a GPU, 1 on the CPU */
+      CHECK_TRUE(sw.resolution.realisations.is_auto &&
+                     sw.resolution.realisations.q.si == (k ? WL_PLAN_AUTO_REALISATIONS : 1),
+                 k ? "realisations auto on an H100: 4" : "realisations auto on 2 cores: 1");
       CHECK_TRUE(wl_plan_make(&sw, &pw, &err) == WL_OK &&
                      wl_plan_ladder_cost(&sw, &pw, 1, NULL, &cost, &err) == WL_OK,
                  "the chosen ladder plans");
+      CHECK_TRUE(pw.realisations == (k ? 4 : 1), "the plan runs the realisations chosen");
+      if (k) { /* the realisations' price: 3 more explosions at each level, by hand */
+        struct wl_plan_cost one;
+        double extra = 0.0;
+        sw.resolution.realisations.q.si = 1;
+        for (int l = 0; l < sw.resolution.n_levels; l++) {
+          struct wl_scenario sl = sw;
+          struct wl_plan pl;
+          sl.resolution.dp.is_auto = 0, sl.resolution.dp.given = 1;
+          sl.resolution.dp.q.si = wl_plan_level_dp(&sw, &pw, sw.resolution.levels[l].q.si);
+          if (wl_plan_make(&sl, &pl, &err) == WL_OK) extra += 3 * pl.explosion.particle_steps;
+        }
+        CHECK_TRUE(wl_plan_make(&sw, &pw, &err) == WL_OK && pw.realisations == 1 &&
+                       wl_plan_ladder_cost(&sw, &pw, 1, NULL, &one, &err) == WL_OK,
+                   "the same ladder with one realisation plans");
+        CHECK_REL(cost.cpu_seconds - one.cpu_seconds,
+                  extra * pw.evals_per_step / WL_PLAN_CPU_RATE, 1e-9,
+                  "4 realisations cost 3 more explosion runs a level (CPU price)");
+      }
       CHECK_REL(wl_plan_machine_seconds(&cost, machines[k]), measured_s[k], 0.25,
                 k ? "auto's ladder estimate vs its H100 run" : "auto's ladder estimate vs its 2-core run");
       CHECK_TRUE(c.seconds <= WL_PLAN_AUTO_SECONDS && (k == 1 || c.next_seconds > WL_PLAN_AUTO_SECONDS),
@@ -400,18 +424,25 @@ int main(void) {
     }
     /* never below the force loops' work: small (latency-bound) runs at
      * 0.68 k / (k + 4) of the full rate together (k = 16 here), large runs
-     * at the full rate */
+     * at 0.68 of it (a whole step is more than its force loop) */
     for (int i = 0; i < 16; i++) runs[i].gpu_seconds = 10.0, runs[i].gpu_work_seconds = 9.0;
     CHECK_REL(wl_plan_gpu_side_by_side(runs, 16, 16), 16 * 9.0 / (0.68 * 16 / (16 + 4.0)), 1e-12,
               "latency-bound runs: their work at the shared efficiency");
     for (int i = 0; i < 16; i++) runs[i].gpu_seconds = runs[i].gpu_work_seconds = 9.0;
-    CHECK_REL(wl_plan_gpu_side_by_side(runs, 16, 16), 16 * 9.0, 1e-12,
-              "rate-bound runs: their work added");
+    CHECK_REL(wl_plan_gpu_side_by_side(runs, 16, 16), 16 * 9.0 / 0.68, 1e-12,
+              "rate-bound runs: their work added, at the full GPU's share");
     /* how many fit: half of the GPU's memory */
     CHECK_TRUE(wl_plan_gpu_side_by_side_width(10e9, 80e9, 16) == 4, "4 runs of 10 GB in half of 80 GB");
     CHECK_TRUE(wl_plan_gpu_side_by_side_width(1e6, 80e9, 16) == 16, "at most the given width");
     CHECK_TRUE(wl_plan_gpu_side_by_side_width(60e9, 80e9, 16) == 1, "at least one");
   }
+  /* resolution.realisations: the crater moved by r dp / n (by hand), and
+   * never more than a ladder runs */
+  CHECK_REL(wl_plan_realisation_x(12.0, 0.004, 1, 4), 12.001, 1e-15, "realisation 2 of 4: + dp/4");
+  CHECK_REL(wl_plan_realisation_x(12.0, 0.004, 3, 4), 12.003, 1e-15, "realisation 4 of 4: + 3 dp/4");
+  CHECK_TRUE(wl_plan_realisation_x(12.0, 0.004, 0, 4) == 12.0 &&
+                 wl_plan_realisation_x(12.0, 0.004, 0, 1) == 12.0,
+             "the first realisation is the scenario's crater");
   /* Whole rows of still water (plan.h wl_plan_whole_rows_dp). seawall.yaml:
    * h = 0.36 m, a platform at z = 0.30 m (0.06 m of water at the wall), a
    * ladder from 0.025 m asked for (2 particles over the 0.05 m solitary

@@ -93,6 +93,10 @@ struct wl_case_loads {
   double impulse_peak_from, impulse_peak_to; /* that phase [s] */
   double runup;             /* max eta at the wall face [m] */
   double runup_time;        /* [s] */
+  /* Runs the scalar loads above are the mean of (resolution.realisations
+   * of a ladder's explosion: the finest level's, wl_assess_level), 1 for a
+   * single run; the series and the peaks' times stay the first's */
+  int realisations;
 };
 
 struct wl_case_result {
@@ -164,6 +168,13 @@ struct wl_assess_level {
   double impulse_positive;  /* int max(0, F_filtered - F_rest) dt, probes (loads.h) [N s/m] */
   double peak_moment;       /* filtered, about the toe [N m/m] */
   double runup;             /* max water level at the wall above still water [m] */
+  double impulse_positive_bound; /* as impulse_positive, boundary particles [N s/m] */
+  /* resolution.realisations (plan.h): the loads above are the mean of the
+   * level's complete realisations, `realisations` of them; the spread of
+   * the peak force (probes) and of the positive impulse is their sample
+   * standard deviation (NaN from one), and the least and largest peak */
+  int realisations;
+  double peak_force_sd, peak_force_min, peak_force_max, impulse_positive_sd;
   double error;             /* estimated relative error of this level: the larger of the peak
                                force's part above the force at rest and the positive impulse,
                                |f_k - f_ref|/|f_ref| with f_ref the

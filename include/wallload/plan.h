@@ -142,6 +142,13 @@ struct wl_plan {
   double gpu_work_seconds;          /* its force loops alone at WL_PLAN_GPU_RATE(_3D): the
                                        bound when runs share the GPU */
   int n_cases;                      /* the load cases the plan runs (1 or 2) */
+  /* resolution.realisations resolved: the explosion's runs at each level of
+   * its convergence ladder, the r-th with the crater's centre moved
+   * landward by r dp / realisations (wl_plan_realisation_x); 1
+   * without a ladder or an explosion. The collapse of a crater is chaotic:
+   * runs whose crater energies differ by 1e-7 part by 3-11 % at the wall
+   * (docs/convergence.md, "Realisations"), so one run's peak is one draw */
+  int realisations;
   double gpu_case_seconds[2];       /* each case alone on the GPU; gpu_seconds is
                                        the cases side by side, as assess runs them */
   double gpu_case_work_seconds[2];
@@ -329,8 +336,12 @@ enum wl_status wl_plan_ladder_cost(const struct wl_scenario *s, const struct wl_
  * reach only wl_plan_gpu_shared_efficiency(k) = WL_PLAN_GPU_SHARED_RATE k /
  * (k + WL_PLAN_GPU_SHARED_HALF) of the force loop's rate on one large run
  * (each runs its own sort and small kernels, and more of them fill more of
- * the GPU), which bounds the time from below (a large run, at that rate
- * alone, counts its work at the full rate). Fitted on the H100
+ * the GPU), which bounds the time from below; a large run counts its work
+ * at WL_PLAN_GPU_SHARED_RATE of the force loop's rate, what a full GPU
+ * reaches (a step is more than its force loop: seawall.yaml's finest
+ * explosion alone, 151 000 particles, runs at 1.3e9 particle-steps/s; its
+ * GPU ladder with 4 explosion realisations a level, 15 runs, took 170.5 s
+ * where the full rate priced 128 s, 2026-11-28). Fitted on the H100
  * (BENCHMARKS.md, "Sweeps" and "The main job on this machine"): the cost to
  * the main job's finest explosion level of its ladder's five other runs
  * beside it (2026-11-26); the share that seawall-sweep.yaml's cases reach
@@ -419,6 +430,19 @@ struct wl_plan_choice {
                           the machine's budget (--budget) where that is less */
   struct wl_plan_machine machine; /* the machine it was planned for (also when not auto) */
 };
+
+/* resolution.realisations: auto runs this many explosion realisations a
+ * level where the ladder goes to a GPU (wl_plan_choose), one elsewhere:
+ * seawall.yaml's explosion at dp = 0.0043 m, 8 sub-spacing placements on
+ * the H100, gave peak forces 32.4-35.5 N/m (sd 2.9 %); their mean moves
+ * by sd / 2 with 4, and 4 of the ladder's finest explosion take about
+ * 3 times one side by side (docs/convergence.md, "Realisations"). */
+#define WL_PLAN_AUTO_REALISATIONS 4
+
+/* The crater centre [m] of realisation r (0-based) of n at spacing dp:
+ * x_center + r dp / n, within one spacing of the scenario's, so every
+ * realisation is the same explosion on a lattice shifted against it. */
+double wl_plan_realisation_x(double x_center, double dp, int r, int n);
 
 /* resolution.refine's two levels laid out at x_if for plan p (vres.h
  * wl_vres_layout, the fine level landward, WL_PLAN_REFINE_OVERLAP_BANDS of

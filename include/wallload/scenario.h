@@ -23,6 +23,7 @@ enum {
   WL_SCENARIO_MAX_BED = 16,
   WL_SCENARIO_MAX_GAUGES = 32,
   WL_SCENARIO_MAX_LEVELS = 8,
+  WL_SCENARIO_MAX_REALISATIONS = 16, /* resolution.realisations */
   /* Reader limits (wl_scenario_parse): a scenario is a few kilobytes and
    * nests its collections 3 deep (loads.solitary; a list of maps under
    * bathymetry or gauges; resolution.convergence). libyaml has no limits of
@@ -137,6 +138,9 @@ struct wl_scenario {
   } explosion;
   struct {
     struct wl_scenario_value dp, particles_per_height, target_error;
+    /* explosion runs per ladder level, the crater moved by r dp / n for the
+     * r-th (plan.h wl_plan.realisations); auto: resolved by wl_plan_choose */
+    struct wl_scenario_value realisations;
     int n_levels;
     struct wl_scenario_value levels[WL_SCENARIO_MAX_LEVELS];
     int levels_given;

@@ -262,6 +262,11 @@ struct wl_results_convergence {
   double impulse_pos[WL_RESULTS_MAX_LEVELS];   /* the positive impulse [N s/m] */
   double peak_moment[WL_RESULTS_MAX_LEVELS];   /* [N m/m] */
   double runup[WL_RESULTS_MAX_LEVELS];         /* [m] */
+  /* resolution.realisations: runs per level whose mean the loads above are,
+   * and the spread over them (NaN from one run) */
+  double realisations[WL_RESULTS_MAX_LEVELS];
+  double peak_force_sd[WL_RESULTS_MAX_LEVELS], peak_force_min[WL_RESULTS_MAX_LEVELS];
+  double peak_force_max[WL_RESULTS_MAX_LEVELS], impulse_pos_sd[WL_RESULTS_MAX_LEVELS];
   double error[WL_RESULTS_MAX_LEVELS]; /* estimated relative error of each level [-] */
   int status[WL_RESULTS_MAX_LEVELS];   /* 0 complete, else the run's failure code */
   double levels_planned, levels_run, ratio;

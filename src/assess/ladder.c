@@ -2,7 +2,10 @@
  * the case run at dp x factor for each level, coarse to fine, its scalar
  * loads kept per level, the observed order, Richardson value and uncertainty
  * of peak force and impulse after each level (wl_loads_convergence),
- * and the early stop at resolution.target_error. Definitions in assess.h. */
+ * and the early stop at resolution.target_error. The explosion runs
+ * plan->realisations times a level, its crater moved by a fraction of the
+ * level's dp each time (plan.h wl_plan_realisation_x); the level's loads
+ * are their mean. Definitions in assess.h. */
 #include <math.h>
 #include <pthread.h>
 #include <stdio.h>
@@ -58,24 +61,97 @@ void ladder_estimate(struct wl_assess_convergence *cv) {
   cv->lv[idx[m - 1]].error = cv->error_estimate;
 }
 
-static void level_from_case(struct wl_assess_level *lv, const struct wl_case_result *c) {
+/* What a level keeps of one realisation's run. */
+struct real_loads {
+  enum wl_status status;
+  double peak_force, peak_force_bound, rest_force, impulse, impulse_phase, impulse_positive,
+      impulse_positive_bound, peak_moment, runup;
+};
+
+static struct real_loads real_of(const struct wl_case_result *c) {
   const struct wl_case_loads *l = &c->loads;
-  int have = c->rec.n > 0 && l->force_filtered;
+  const int have = c->rec.n > 0 && l->force_filtered;
+  return (struct real_loads){c->status,
+                             have ? l->force_peak.value : NAN,
+                             have ? l->force_bound_peak.value : NAN,
+                             have ? l->rest_force : NAN,
+                             have ? l->impulse_total : NAN,
+                             have ? l->impulse_peak : NAN,
+                             have ? l->impulse_positive : NAN,
+                             have ? l->impulse_positive_bound : NAN,
+                             have ? l->moment_peak.value : NAN,
+                             have ? l->runup : NAN};
+}
+
+/* Level lv from the run of its first realisation (c: particles, steps,
+ * runtime, status) and the loads of all n (rl[0] is c's): each scalar the
+ * mean over the complete ones, with the spread of the peak force and the
+ * positive impulse. A realisation that did not complete makes the level's
+ * status its own: the level then leaves the estimate (ladder_estimate),
+ * as a stopped single run does. */
+static void level_from_runs(struct wl_assess_level *lv, const struct wl_case_result *c,
+                            const struct real_loads *rl, int n) {
   lv->status = c->status;
   lv->n_particles = c->n_particles;
   lv->steps = c->steps;
   lv->runtime_s = c->runtime_s;
   lv->rate = c->runtime_s > 0 ? (double)c->n_particles * (double)c->steps / c->runtime_s : NAN;
   lv->t_reached = c->t_reached;
-  lv->peak_force = have ? l->force_peak.value : NAN;
-  lv->peak_force_bound = have ? l->force_bound_peak.value : NAN;
-  lv->rest_force = have ? l->rest_force : NAN;
-  lv->impulse = have ? l->impulse_total : NAN;
-  lv->impulse_phase = have ? l->impulse_peak : NAN;
-  lv->impulse_positive = have ? l->impulse_positive : NAN;
-  lv->peak_moment = have ? l->moment_peak.value : NAN;
-  lv->runup = have ? l->runup : NAN;
   lv->error = NAN;
+  struct real_loads sum = {WL_OK, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+  double sq_f = 0.0, sq_i = 0.0, lo = INFINITY, hi = -INFINITY;
+  int m = 0;
+  for (int r = 0; r < n; r++) {
+    if (rl[r].status != WL_OK) {
+      if (lv->status == WL_OK) lv->status = rl[r].status;
+      continue;
+    }
+    sum.peak_force += rl[r].peak_force, sum.peak_force_bound += rl[r].peak_force_bound;
+    sum.rest_force += rl[r].rest_force, sum.impulse += rl[r].impulse;
+    sum.impulse_phase += rl[r].impulse_phase, sum.impulse_positive += rl[r].impulse_positive;
+    sum.impulse_positive_bound += rl[r].impulse_positive_bound;
+    sum.peak_moment += rl[r].peak_moment, sum.runup += rl[r].runup;
+    lo = fmin(lo, rl[r].peak_force), hi = fmax(hi, rl[r].peak_force);
+    m++;
+  }
+  if (m == 0) { /* nothing complete: the first run's values, as a single run keeps them */
+    sum = rl[0];
+    m = 1;
+    lo = hi = rl[0].peak_force;
+  }
+  lv->realisations = n == 1 ? 1 : m;
+  lv->peak_force = sum.peak_force / m, lv->peak_force_bound = sum.peak_force_bound / m;
+  lv->rest_force = sum.rest_force / m, lv->impulse = sum.impulse / m;
+  lv->impulse_phase = sum.impulse_phase / m, lv->impulse_positive = sum.impulse_positive / m;
+  lv->impulse_positive_bound = sum.impulse_positive_bound / m;
+  lv->peak_moment = sum.peak_moment / m, lv->runup = sum.runup / m;
+  lv->peak_force_min = lo, lv->peak_force_max = hi;
+  for (int r = 0; r < n && m > 1; r++) {
+    if (rl[r].status != WL_OK) continue;
+    sq_f += (rl[r].peak_force - lv->peak_force) * (rl[r].peak_force - lv->peak_force);
+    sq_i += (rl[r].impulse_positive - lv->impulse_positive) *
+            (rl[r].impulse_positive - lv->impulse_positive);
+  }
+  lv->peak_force_sd = m > 1 ? sqrt(sq_f / (m - 1)) : NAN;
+  lv->impulse_positive_sd = m > 1 ? sqrt(sq_i / (m - 1)) : NAN;
+}
+
+/* With realisations, the case's scalar loads become the last level's means
+ * (assess.h wl_case_loads.realisations): what the summary and the report
+ * quote. The series, the peaks' times and the force at rest stay the first
+ * realisation's. */
+static void case_from_level(struct wl_case_result *c, const struct wl_assess_level *lv) {
+  struct wl_case_loads *l = &c->loads;
+  if (lv->realisations < 2 || !l->force_filtered) return;
+  l->realisations = lv->realisations;
+  l->force_peak.value = lv->peak_force;
+  l->force_bound_peak.value = lv->peak_force_bound;
+  l->impulse_total = lv->impulse;
+  l->impulse_peak = lv->impulse_phase;
+  l->impulse_positive = lv->impulse_positive;
+  l->impulse_positive_bound = lv->impulse_positive_bound;
+  l->moment_peak.value = lv->peak_moment;
+  l->runup = lv->runup;
 }
 
 static const char *pct(double v, char *buf, size_t size) {
@@ -123,6 +199,7 @@ static void ladder_note(struct wl_assess_convergence *cv, const char *stop_word)
 
 /* A coarser level run beside the finest (ladder_side_by_side). */
 struct level_job {
+  int level, real;      /* ladder level (0-based) and realisation */
   struct wl_scenario s; /* shallow copy with the level's dp; never cleared */
   struct wl_plan p;
   enum wl_load_case load;
@@ -138,14 +215,17 @@ static void *level_thread(void *arg) {
   return NULL;
 }
 
-/* Plan level k of the ladder into *ls, *lp (the scenario with the level's dp). */
+/* Plan realisation r of n_real of level k of the ladder into *ls, *lp (the
+ * scenario with the level's dp and, for r > 0, the crater moved by
+ * wl_plan_realisation_x). */
 static enum wl_status plan_level(const struct wl_scenario *s, const struct wl_assess_level *lv,
-                                 int k, int n, struct wl_scenario *ls, struct wl_plan *lp,
-                                 struct wl_error *err) {
+                                 int k, int n, int r, int n_real, struct wl_scenario *ls,
+                                 struct wl_plan *lp, struct wl_error *err) {
   *ls = *s; /* shallow: the text stays the caller's; ls is never cleared */
   ls->resolution.dp.is_auto = 0;
   ls->resolution.dp.given = 1;
   ls->resolution.dp.q.si = lv->dp;
+  ls->explosion.at.q.si = wl_plan_realisation_x(s->explosion.at.q.si, lv->dp, r, n_real);
   enum wl_status st = wl_plan_make(ls, lp, err);
   if (st) wl_error_prefix(err, "convergence level %d/%d (dp = %g m): ", k + 1, n, lv->dp);
   return st;
@@ -161,63 +241,85 @@ static enum wl_status plan_level(const struct wl_scenario *s, const struct wl_as
  * Returns 1 (with *st) when it ran the ladder, 0 when the levels do not
  * fit the GPU's memory together (or cannot be allocated) and the caller
  * runs them one after the other. */
-static int ladder_side_by_side(const struct wl_scenario *s, enum wl_load_case load,
+static int ladder_side_by_side(const struct wl_scenario *s, enum wl_load_case load, int n_real,
                                const struct wl_assess_opts *opts, double gpu_bytes,
                                const char *snapshots, int urgent, struct wl_case_result *c,
                                struct wl_assess_convergence *cv, enum wl_status *st_out,
                                struct wl_error *err) {
-  const int n = cv->n_planned;
-  struct level_job *jobs = calloc((size_t)n, sizeof *jobs);
-  if (!jobs) return 0;
+  const int n = cv->n_planned, n_jobs = n * n_real;
+  const int last = n_jobs - n_real; /* the finest level's first realisation: this thread's */
+  struct level_job *jobs = calloc((size_t)n_jobs, sizeof *jobs);
+  pthread_t *tid = calloc((size_t)n_jobs, sizeof *tid);
+  int *started = calloc((size_t)n_jobs, sizeof *started);
+  struct real_loads *rl = calloc((size_t)n_jobs, sizeof *rl);
+  if (!jobs || !tid || !started || !rl) {
+    free(jobs), free(tid), free(started), free(rl);
+    return 0;
+  }
   double bytes = 0;
   enum wl_status st = WL_OK;
-  for (int k = 0; k < n && !st; k++) {
-    st = plan_level(s, &cv->lv[k], k, n, &jobs[k].s, &jobs[k].p, err);
-    bytes += jobs[k].p.gpu_memory_bytes;
+  for (int j = 0; j < n_jobs && !st; j++) {
+    jobs[j].level = j / n_real, jobs[j].real = j % n_real;
+    st = plan_level(s, &cv->lv[jobs[j].level], jobs[j].level, n, jobs[j].real, n_real, &jobs[j].s,
+                    &jobs[j].p, err);
+    bytes += jobs[j].p.gpu_memory_bytes;
   }
   if (st || !(bytes <= WL_PLAN_GPU_SIDE_BY_SIDE_MEMORY * gpu_bytes)) {
-    free(jobs);
+    free(jobs), free(tid), free(started), free(rl);
     return 0; /* the sequential ladder plans again and says why a level fails */
   }
-  pthread_t tid[WL_ASSESS_MAX_LEVELS];
-  int started[WL_ASSESS_MAX_LEVELS] = {0};
-  for (int k = 0; k + 1 < n; k++) {
-    struct level_job *j = &jobs[k];
-    j->load = load;
-    j->opts = *opts;
-    j->opts.progress = NULL;
-    wl_error_clear(&j->err);
-    started[k] = pthread_create(&tid[k], NULL, level_thread, j) == 0;
+  for (int j = 0; j < n_jobs; j++) {
+    if (j == last) continue;
+    struct level_job *jb = &jobs[j];
+    jb->load = load;
+    jb->opts = *opts;
+    jb->opts.progress = NULL;
+    wl_error_clear(&jb->err);
+    started[j] = pthread_create(&tid[j], NULL, level_thread, jb) == 0;
   }
   struct ladder_progress lp = {opts, ""};
-  snprintf(lp.label, sizeof lp.label, "%s, level %d/%d, dp = %.4g m (levels 1-%d beside it)",
-           wl_flume_case_name(load), n, n, cv->lv[n - 1].dp, n - 1);
+  if (n_real > 1)
+    snprintf(lp.label, sizeof lp.label,
+             "%s, level %d/%d, dp = %.4g m (%d realisations a level, all levels side by side)",
+             wl_flume_case_name(load), n, n, cv->lv[n - 1].dp, n_real);
+  else
+    snprintf(lp.label, sizeof lp.label, "%s, level %d/%d, dp = %.4g m (levels 1-%d beside it)",
+             wl_flume_case_name(load), n, n, cv->lv[n - 1].dp, n - 1);
   struct wl_assess_opts lo = *opts;
   if (opts->progress) {
     lo.progress = ladder_on_progress;
     lo.user = &lp;
   }
-  st = assess_case(&jobs[n - 1].s, &jobs[n - 1].p, load, &lo, snapshots,
+  st = assess_case(&jobs[last].s, &jobs[last].p, load, &lo, snapshots,
                    ASSESS_DEFER | (urgent ? ASSESS_URGENT : 0), c, err);
-  for (int k = 0; k + 1 < n; k++) {
-    if (started[k])
-      pthread_join(tid[k], NULL);
+  for (int j = 0; j < n_jobs; j++) {
+    if (j == last) {
+      rl[j] = real_of(c);
+      continue;
+    }
+    if (started[j])
+      pthread_join(tid[j], NULL);
     else
-      level_thread(&jobs[k]); /* no thread to be had: here, after the finest */
-    level_from_case(&cv->lv[k], &jobs[k].c);
-    if (jobs[k].st != WL_OK && cv->lv[k].status == WL_OK) cv->lv[k].status = jobs[k].st;
-    wl_assess_case_clear(&jobs[k].c);
+      level_thread(&jobs[j]); /* no thread to be had: here, after the finest */
+    rl[j] = real_of(&jobs[j].c);
+    if (jobs[j].st != WL_OK && rl[j].status == WL_OK) rl[j].status = jobs[j].st;
   }
-  level_from_case(&cv->lv[n - 1], c);
+  for (int k = 0; k < n; k++) {
+    const struct wl_case_result *first = k == n - 1 ? c : &jobs[k * n_real].c;
+    level_from_runs(&cv->lv[k], first, rl + k * n_real, n_real);
+  }
+  for (int j = 0; j < n_jobs; j++)
+    if (j != last) wl_assess_case_clear(&jobs[j].c);
   cv->n_levels = n;
   ladder_estimate(cv);
+  case_from_level(c, &cv->lv[n - 1]);
   const char *stop_word = NULL;
   if (st && (c->rec.n > 0 || st == WL_EUNSTABLE || st == WL_EINTERRUPTED))
     stop_word = st == WL_EUNSTABLE      ? "went unstable"
                 : st == WL_EINTERRUPTED ? "was interrupted"
                                         : "failed";
   ladder_note(cv, stop_word);
-  free(jobs);
+  free(jobs), free(tid), free(started), free(rl);
   *st_out = st;
   return 1;
 }
@@ -230,6 +332,7 @@ enum wl_status ladder_run(const struct wl_scenario *s, const struct wl_plan *pla
   memset(c, 0, sizeof *c);
   int n = s->resolution.n_levels;
   if (n > WL_ASSESS_MAX_LEVELS) n = WL_ASSESS_MAX_LEVELS;
+  const int n_real = load == WL_CASE_EXPLOSION && plan->realisations > 1 ? plan->realisations : 1;
   cv->n_planned = n;
   cv->target = s->resolution.target_error.q.si;
   cv->target_given = s->resolution.target_error.given;
@@ -242,39 +345,65 @@ enum wl_status ladder_run(const struct wl_scenario *s, const struct wl_plan *pla
    * next level depends on the last) */
   const double gpu_bytes = cv->target_given || n < 2 ? 0.0 : assess_gpu_memory(s, opts);
   enum wl_status side_st;
-  if (gpu_bytes > 0 &&
-      ladder_side_by_side(s, load, opts, gpu_bytes, snapshots, urgent, c, cv, &side_st, err))
+  if (gpu_bytes > 0 && ladder_side_by_side(s, load, n_real, opts, gpu_bytes, snapshots, urgent, c,
+                                           cv, &side_st, err))
     return side_st;
   /* each level is the scenario with dp set to the level's (plan.h
-   * wl_plan_level_dp), planned again */
+   * wl_plan_level_dp), planned again; its realisations one after the other,
+   * the first into c (the finer level replaces the coarser one) */
   struct wl_scenario *sl = malloc(sizeof *sl);
   struct wl_plan *pl = malloc(sizeof *pl);
-  if (!sl || !pl) {
-    free(sl), free(pl);
+  struct wl_case_result *extra = malloc(sizeof *extra);
+  if (!sl || !pl || !extra) {
+    free(sl), free(pl), free(extra);
     return wl_error_set(err, WL_ENOMEM, "convergence ladder: no memory");
   }
   enum wl_status st = WL_OK;
   const char *stop_word = NULL;
   for (int k = 0; k < n; k++) {
     struct wl_assess_level *lv = &cv->lv[k];
-    if ((st = plan_level(s, lv, k, n, sl, pl, err))) break;
-    struct ladder_progress lp = {opts, ""};
-    snprintf(lp.label, sizeof lp.label, "%s, level %d/%d, dp = %.4g m", wl_flume_case_name(load),
-             k + 1, n, lv->dp);
-    struct wl_assess_opts lo = *opts;
-    if (opts->progress) {
-      lo.progress = ladder_on_progress;
-      lo.user = &lp;
+    struct real_loads rl[WL_SCENARIO_MAX_REALISATIONS];
+    int ran = 0, planned = 1;
+    for (int r = 0; r < n_real; r++) {
+      if ((st = plan_level(s, lv, k, n, r, n_real, sl, pl, err))) {
+        planned = 0;
+        break;
+      }
+      struct ladder_progress lp = {opts, ""};
+      if (n_real > 1)
+        snprintf(lp.label, sizeof lp.label, "%s, level %d/%d, dp = %.4g m, realisation %d/%d",
+                 wl_flume_case_name(load), k + 1, n, lv->dp, r + 1, n_real);
+      else
+        snprintf(lp.label, sizeof lp.label, "%s, level %d/%d, dp = %.4g m",
+                 wl_flume_case_name(load), k + 1, n, lv->dp);
+      struct wl_assess_opts lo = *opts;
+      if (opts->progress) {
+        lo.progress = ladder_on_progress;
+        lo.user = &lp;
+      }
+      struct wl_case_result *run = r == 0 ? c : extra;
+      if (r == 0 && k > 0) wl_assess_case_clear(c); /* the finer level replaces the coarser */
+      if (r > 0) memset(extra, 0, sizeof *extra);
+      /* every level writes the snapshots file (its first realisation); the
+       * last level run keeps it */
+      st = assess_case(sl, pl, load, &lo, r == 0 ? snapshots : NULL,
+                       ASSESS_DEFER | (urgent && r == 0 ? ASSESS_URGENT : 0), run, err);
+      const int no_run = st && run->rec.n == 0 && st != WL_EUNSTABLE && st != WL_EINTERRUPTED;
+      rl[r] = real_of(run);
+      if (st != WL_OK && rl[r].status == WL_OK) rl[r].status = st;
+      if (r > 0) wl_assess_case_clear(extra);
+      if (no_run) {
+        planned = 0;
+        break;
+      }
+      ran = r + 1;
+      if (st) break;
     }
-    if (k > 0) wl_assess_case_clear(c); /* the finer level replaces the coarser one */
-    /* every level writes the snapshots file; the last level run keeps it */
-    st = assess_case(sl, pl, load, &lo, snapshots, ASSESS_DEFER | (urgent ? ASSESS_URGENT : 0), c,
-                     err);
-    level_from_case(lv, c);
+    if (!planned && ran == 0) break; /* no run at this level */
+    level_from_runs(lv, c, rl, ran);
     cv->n_levels = k + 1;
     ladder_estimate(cv);
     if (st) {
-      if (c->rec.n == 0 && st != WL_EUNSTABLE && st != WL_EINTERRUPTED) break; /* no run */
       stop_word = st == WL_EUNSTABLE      ? "went unstable"
                   : st == WL_EINTERRUPTED ? "was interrupted"
                                           : "failed";
@@ -285,8 +414,10 @@ enum wl_status ladder_run(const struct wl_scenario *s, const struct wl_plan *pla
       break;
     }
   }
-  if (cv->n_levels) ladder_note(cv, stop_word);
-  free(sl);
-  free(pl);
+  if (cv->n_levels) {
+    case_from_level(c, &cv->lv[cv->n_levels - 1]);
+    ladder_note(cv, stop_word);
+  }
+  free(sl), free(pl), free(extra);
   return st;
 }

@@ -84,6 +84,9 @@ static void ladder_columns(const struct wl_assess_convergence *cv,
     out->impulse[l] = lv->impulse, out->impulse_phase[l] = lv->impulse_phase;
     out->impulse_pos[l] = lv->impulse_positive, out->peak_moment[l] = lv->peak_moment;
     out->runup[l] = lv->runup, out->error[l] = lv->error;
+    out->realisations[l] = lv->realisations > 0 ? lv->realisations : 1;
+    out->peak_force_sd[l] = lv->peak_force_sd, out->impulse_pos_sd[l] = lv->impulse_positive_sd;
+    out->peak_force_min[l] = lv->peak_force_min, out->peak_force_max[l] = lv->peak_force_max;
     out->status[l] = (int)lv->status;
   }
   out->levels_planned = cv->n_planned, out->levels_run = cv->n_levels;
@@ -251,6 +254,11 @@ static enum wl_status write_summary(const struct wl_scenario *s, const struct wl
     snprintf(filt, sizeof filt, "pressure probes, low-pass %.4g Hz", l->cutoff);
     char filt_b[96];
     snprintf(filt_b, sizeof filt_b, "boundary particles, low-pass %.4g Hz", l->cutoff);
+    jval(&t, "realisations", l->realisations > 1 ? l->realisations : 1, "1",
+         l->realisations > 1 ? "runs of the finest level whose mean every scalar load here is "
+                               "(resolution.realisations); the series, the peaks' times and the "
+                               "force at rest are the first run's"
+                             : "one run", 0);
     jval(&t, "peak_force", l->force_peak.value, "N/m", filt, 0);
     jval(&t, "peak_force_time", l->force_peak.time, "s", filt, 0);
     jval(&t, "peak_force_dynamic", l->force_peak.value - l->rest_force, "N/m",

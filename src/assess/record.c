@@ -31,6 +31,7 @@ enum wl_status case_loads_compute(struct wl_case_result *c, struct wl_error *err
   const struct wl_record *r = &c->rec;
   struct wl_case_loads *l = &c->loads;
   size_t n = r->n;
+  l->realisations = 1;
   if (n == 0) return WL_OK;
   double dt = n > 1 ? (r->t[n - 1] - r->t[0]) / (double)(n - 1) : 1.0;
   l->cutoff = wl_loads_cutoff(c->c0, c->depth_wall > 0 ? c->depth_wall : c->h, dt);

@@ -406,6 +406,13 @@ static void print_convergence(const struct wl_case_result *c,
            lv->impulse_phase / 1e3, 100 * lv->error,
            lv->status == WL_OK ? "" : "  (stopped)");
   }
+  const struct wl_assess_level *fin = &cv->lv[cv->n_levels - 1];
+  if (fin->realisations > 1)
+    printf("    each level the mean of %d realisations (resolution.realisations); at level %d "
+           "single runs peaked at %.5g to %.5g kN/m (sd %.2g %%), I+ sd %.2g %%\n",
+           fin->realisations, cv->n_levels, fin->peak_force_min / 1e3, fin->peak_force_max / 1e3,
+           100 * fin->peak_force_sd / fabs(fin->peak_force),
+           100 * fin->impulse_positive_sd / fabs(fin->impulse_positive));
   printf("    observed order: peak force %.3g%s, positive impulse %.3g%s; uncertainty: peak "
          "force %.3g %% (%s), its part above the force at rest %.3g %% (%s), positive impulse "
          "%.3g %% (%s)\n",

@@ -816,6 +816,20 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
   double smallest = INFINITY;
   if (p->solitary.present) smallest = fmin(smallest, p->solitary.wave.H);
   if (p->explosion.present) smallest = fmin(smallest, p->explosion.eta0);
+  {
+    /* auto not resolved for a machine (wl_plan_choose): one */
+    const struct wl_scenario_value *rv = &s->resolution.realisations;
+    const int n_real = rv->q.si >= 1 ? (int)rv->q.si : 1;
+    if (rv->given && !rv->is_auto && n_real > 1 && s->resolution.n_levels == 0) {
+      char buf[32];
+      return wl_error_set(err, WL_EINPUT,
+                          "%s%s: resolution.realisations: %d, without resolution.convergence; "
+                          "expected a convergence ladder (realisations run at each of its "
+                          "levels), or realisations: 1",
+                          s->path, where(rv, buf), n_real);
+    }
+    p->realisations = p->explosion.present && s->resolution.n_levels > 0 ? n_real : 1;
+  }
   /* auto not resolved for a machine (wl_plan_choose): the coarsest */
   const struct wl_scenario_value *ppv = &s->resolution.particles_per_height;
   const double ppH = ppv->is_auto && !(ppv->q.si > 0) ? wl_plan_auto_pph[0] : ppv->q.si;
@@ -1009,7 +1023,8 @@ enum wl_status wl_plan_ladder_cost(const struct wl_scenario *s, const struct wl_
   if (n == 0) return WL_OK;
   struct wl_scenario *sl = malloc(sizeof *sl);
   struct wl_plan *pl = malloc(sizeof *pl);
-  struct wl_plan_cost sum = {plan->dims, 0, 0, 0, 0, 0}, run[2 * WL_SCENARIO_MAX_LEVELS];
+  struct wl_plan_cost sum = {plan->dims, 0, 0, 0, 0, 0},
+                     run[(1 + WL_SCENARIO_MAX_REALISATIONS) * WL_SCENARIO_MAX_LEVELS];
   int n_runs = 0;
   double steps = 0.0, device_total = 0.0;
   enum wl_status st = sl && pl ? WL_OK : wl_error_set(err, WL_ENOMEM, "no memory to plan the ladder");
@@ -1025,21 +1040,28 @@ enum wl_status wl_plan_ladder_cost(const struct wl_scenario *s, const struct wl_
       ok = 0;
       break;
     }
-    for (int c = 0; c < pl->n_cases; c++) /* a level's cases, each a run */
-      run[n_runs++] = (struct wl_plan_cost){.gpu_seconds = pl->gpu_case_seconds[c],
-                                            .gpu_work_seconds = pl->gpu_case_work_seconds[c]};
-    device_total += pl->gpu_memory_bytes;
-    sum.cpu_seconds += pl->cpu_seconds;
-    sum.gpu_work_seconds += pl->gpu_work_seconds;
+    /* a level's cases, each a run; the explosion (the last case) once per
+     * realisation */
+    const int n_real = pl->explosion.present ? pl->realisations : 1;
+    for (int c = 0; c < pl->n_cases; c++)
+      for (int r = 0; r < (c == pl->n_cases - 1 ? n_real : 1); r++)
+        run[n_runs++] = (struct wl_plan_cost){.gpu_seconds = pl->gpu_case_seconds[c],
+                                              .gpu_work_seconds = pl->gpu_case_work_seconds[c]};
+    const double extra = pl->particle_steps > 0 && n_real > 1
+                             ? (n_real - 1) * pl->explosion.particle_steps / pl->particle_steps
+                             : 0.0; /* the further realisations' share of the level's work */
+    device_total += pl->gpu_memory_bytes * (1.0 + extra);
+    sum.cpu_seconds += pl->cpu_seconds * (1.0 + extra);
+    sum.gpu_work_seconds += pl->gpu_work_seconds * (1.0 + extra);
     sum.host_bytes = fmax(sum.host_bytes, pl->memory_bytes);
     sum.device_bytes = fmax(sum.device_bytes, pl->gpu_memory_bytes);
-    steps += pl->particle_steps;
+    steps += pl->particle_steps * (1.0 + extra);
     if (!brief && out) {
       char dps[32];
       snprintf(dps, sizeof dps, "%.4g m", pl->dp);
       fprintf(out, "  level %d  x %-5s dp = %-10s %8ld particles  %10.3e particle-steps  %6.0f s\n",
               k + 1, s->resolution.levels[k].text, dps, pl->n_fluid + pl->n_boundary,
-              pl->particle_steps, pl->cpu_seconds);
+              pl->particle_steps * (1.0 + extra), pl->cpu_seconds * (1.0 + extra));
     }
   }
   free(sl);
@@ -1057,6 +1079,11 @@ enum wl_status wl_plan_ladder_cost(const struct wl_scenario *s, const struct wl_
     for (int k = 0; k < n; k++)
       sum.gpu_seconds += wl_plan_gpu_side_by_side(run + k * per_level, per_level, per_level);
   }
+  if (!brief && out && plan->realisations > 1)
+    fprintf(out,
+            "  the explosion %d times a level (resolution.realisations), its crater moved by "
+            "dp / %d each time; the steps and times above count them all\n",
+            plan->realisations, plan->realisations);
   if (!brief && out)
     fprintf(out,
             "  all levels: %.3e particle-steps, about %.0f s on the CPU%s; %.0f s on an H100 "
@@ -1083,8 +1110,8 @@ double wl_plan_gpu_side_by_side(const struct wl_plan_cost *runs, int n, int widt
   double sum = 0.0, work = 0.0;
   for (int i = 0; i < n; i++) {
     sum += runs[i].gpu_seconds;
-    work += runs[i].gpu_seconds > runs[i].gpu_work_seconds ? runs[i].gpu_work_seconds / shared
-                                                           : runs[i].gpu_work_seconds;
+    work += runs[i].gpu_work_seconds /
+            (runs[i].gpu_seconds > runs[i].gpu_work_seconds ? shared : WL_PLAN_GPU_SHARED_RATE);
   }
   double *left = width > 1 ? malloc((size_t)width * sizeof *left) : NULL;
   if (!left) return sum; /* one at a time (or no memory: the dearer answer) */
@@ -1311,6 +1338,10 @@ double wl_plan_machine_seconds(const struct wl_plan_cost *cost, const struct wl_
              : cost->cpu_seconds * WL_PLAN_CPU_THREADS / (m->threads > 0 ? m->threads : 1);
 }
 
+double wl_plan_realisation_x(double x_center, double dp, int r, int n) {
+  return n > 1 ? x_center + dp * (double)r / (double)n : x_center;
+}
+
 const double wl_plan_auto_pph[WL_PLAN_AUTO_PPH_N] = {2.0, 2.83, 4.0, 5.66};
 
 /* Whether `cost` fits machine m's memory (as wl_plan_fits judges it). */
@@ -1329,6 +1360,11 @@ enum wl_status wl_plan_choose(struct wl_scenario *s, const struct wl_plan_machin
   memset(c, 0, sizeof *c);
   c->machine = *m;
   wl_plan_refine_machine(s, m);
+  {
+    struct wl_scenario_value *rv = &s->resolution.realisations;
+    if (rv->is_auto)
+      rv->q.si = m->device_bytes > 0 && s->resolution.n_levels > 0 ? WL_PLAN_AUTO_REALISATIONS : 1;
+  }
   struct wl_scenario_value *v = &s->resolution.particles_per_height;
   if (!v->is_auto || !s->resolution.dp.is_auto) return WL_OK;
   c->is_auto = 1;

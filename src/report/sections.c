@@ -243,6 +243,26 @@ static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
           : cv->target_met > 0      ? ", within the target"
                                     : ", above the target");
   }
+  /* realisations (resolution.realisations): the finest level's spread */
+  for (int i = 0; i < WL_RESULTS_N_CASES; i++) {
+    const struct wl_results_convergence *cv = &r->conv[i];
+    if (!cv->present || cv->n_levels < 1)
+      continue;
+    const int last = cv->n_levels - 1;
+    if (!(cv->realisations[last] > 1))
+      continue;
+    char lo[64], hi[64], sd[64];
+    wl_report_fmt(cv->peak_force_min[last] / KILO, dg, lo, sizeof lo);
+    wl_report_fmt(cv->peak_force_max[last] / KILO, dg, hi, sizeof hi);
+    wl_report_fmt(100.0 * cv->peak_force_sd[last] / fabs(cv->peak_force[last]), SHARE_DIGITS, sd,
+                  sizeof sd);
+    put(&b,
+        "The %s case ran %.0f realisations at each level, its initial wave moved by a fraction "
+        "of the particle spacing each time: its flow is chaotic, so one run is one draw, and the "
+        "loads quoted are the realisations' mean. At the finest level single runs peaked between "
+        "%s and %s kN/m (standard deviation %s %% of the mean). ",
+        wl_store_results_case_name(i), cv->realisations[last], lo, hi, sd);
+  }
   for (int i = 0; i < WL_RESULTS_N_CASES; i++) {
     if (!cs[i].present || !strcmp(cs[i].status, "complete"))
       continue;

@@ -173,6 +173,15 @@ const struct wl_results_column wl_store_results_levels[] = {
        "integral of max(0, filtered probe force - force at rest) dt: every wave's push"),
     LC(peak_moment, "peak_moment", "N m/m", "peak of the filtered overturning moment about the toe"),
     LC(runup, "max_runup", "m", "highest water level at the wall face above still water"),
+    LC(realisations, "realisations", "1",
+       "runs of the level whose mean the loads are (resolution.realisations: the explosion's "
+       "crater moved by a fraction of dp each time)"),
+    LC(peak_force_sd, "peak_force_sd", "N/m",
+       "standard deviation of the realisations' peak force (probes); NaN from one run"),
+    LC(peak_force_min, "peak_force_min", "N/m", "least peak force of the realisations (probes)"),
+    LC(peak_force_max, "peak_force_max", "N/m", "largest peak force of the realisations (probes)"),
+    LC(impulse_pos_sd, "impulse_positive_sd", "N s/m",
+       "standard deviation of the realisations' positive impulse; NaN from one run"),
     LC(error, "estimated_error", "1",
        "relative error of the level: larger of the peak force's part above the force at rest "
        "and the positive impulse, against "
@@ -193,7 +202,8 @@ static const size_t LEVEL_OFFSET[] = {
     LM(factor),     LM(dp),           LM(particles),     LM(steps),
     LM(runtime),    LM(rate),         LM(time_reached),  LM(peak_force),
     LM(peak_force_b), LM(rest_force), LM(impulse),    LM(impulse_phase), LM(impulse_pos),
-    LM(peak_moment), LM(runup),       LM(error),         LM(status),
+    LM(peak_moment), LM(runup),       LM(realisations),  LM(peak_force_sd),
+    LM(peak_force_min), LM(peak_force_max), LM(impulse_pos_sd), LM(error), LM(status),
 };
 #undef LM
 _Static_assert(sizeof LEVEL_OFFSET / sizeof LEVEL_OFFSET[0] ==

@@ -1,0 +1,113 @@
+#!/usr/bin/env bash
+# resolution.realisations end to end, on a tiny explosion flume (a crater
+# 1.2 m off the wall in 0.2 m of water, dp 0.025 m, a 2-level ladder with 2
+# realisations a level, 1.6 s, one thread):
+#  - each level's loads in summary.json are the mean of its realisations,
+#    and its spread (sd, least and largest peak) theirs: checked against
+#    the same runs made HERE one by one, each an ordinary single-resolution
+#    `assess` at the level's dp with the crater moved by r dp / n (the
+#    documented placement, computed here), their summaries averaged by this
+#    script;
+#  - the case's quoted loads are the finest level's means;
+#  - the console and the report say how many realisations and the spread;
+#  - realisations > 1 without a ladder is refused (exit 2, naming the key).
+set -u
+bin=$1
+fail=0
+ok() { echo "PASS $1"; }
+bad() { echo "FAIL $1"; fail=$((fail+1)); }
+for tool in python3 pdftotext; do
+  command -v $tool >/dev/null 2>&1 || { echo "SKIP $tool not installed"; exit 77; }
+done
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+echo "leak:libfontconfig.so" > "$work/lsan.supp"
+export LSAN_OPTIONS="suppressions=$work/lsan.supp${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
+# Under the sanitizers (WL_TEST_QUICK) a coarser ladder: this test checks
+# the bookkeeping, not the physics.
+dp0=0.025
+[ -n "${WL_TEST_QUICK:-}" ] && dp0=0.04
+cat > "$work/real.yaml" <<YAML
+scenario: real
+water: {depth: 0.2 m}
+domain: {length: 3.5 m, dimensions: 2}
+wall: {x: 3 m, height: 0.4 m, probes: 10}
+gauges: [{name: G1, x: 2.5 m}]
+loads:
+  explosion: {eta0: 0.06 m, r0: 0.15 m, shape: quadratic-lip, at: 1.8 m}
+resolution: {dp: $dp0 m, convergence: [1, 0.71], realisations: 2}
+run: {output_interval: 0.01 s}
+YAML
+cd "$work" || exit 1
+end=1.6
+"$bin" assess real.yaml -o run --threads 1 --end-time $end >out.txt 2>err.txt; rc=$?
+[ $rc = 0 ] && ok "assess with 2 realisations a level (exit 0)" || { bad "assess exit $rc: $(cat err.txt)"; exit $fail; }
+grep -q "each level the mean of 2 realisations" out.txt && ok "the console says the levels are means of 2" \
+  || bad "the console does not name the realisations: $(cat out.txt)"
+grep -q "realisation 2/2" err.txt && ok "progress names the realisation" || bad "no progress line for realisation 2/2"
+
+# every realisation alone: the level's dp, the crater moved by r dp / n
+python3 - run/summary.json <<'PY' || fail=$((fail+1))
+import json, sys
+cv = json.load(open(sys.argv[1]))['cases']['explosion']['convergence']
+for k, l in enumerate(cv['levels']):
+    for r in range(2):
+        t = open('real.yaml').read().split('resolution:')[0]
+        t = t.replace('at: 1.8 m', 'at: %r m' % (1.8 + l['dp'] * r / 2))
+        t += 'resolution: {dp: %r m}\nrun: {output_interval: 0.01 s}\n' % l['dp']
+        open('alone_%d_%d.yaml' % (k, r), 'w').write(t)
+PY
+for f in alone_*.yaml; do
+  "$bin" assess "$f" -o "${f%.yaml}" --threads 1 --end-time $end --quiet >/dev/null 2>"${f%.yaml}.err" \
+    || bad "single run $f failed: $(cat "${f%.yaml}.err")"
+done
+
+python3 - run/summary.json <<'PY'
+import json, math, statistics, sys
+fails = 0
+def report(cond, what):
+    global fails
+    print(("PASS " if cond else "FAIL ") + what)
+    fails += 0 if cond else 1
+def same(a, b, tol=1e-8):
+    return abs(a - b) <= tol * max(abs(a), abs(b), 1e-300)
+summ = json.load(open(sys.argv[1]))['cases']['explosion']
+cv = summ['convergence']
+report(summ['realisations']['value'] == 2, "summary.json: the case's loads are the mean of 2 runs")
+keys = ('peak_force', 'peak_force_boundary', 'impulse_positive', 'impulse_positive_phase',
+        'impulse', 'peak_moment', 'max_runup')
+for k, l in enumerate(cv['levels']):
+    runs = [json.load(open('alone_%d_%d/summary.json' % (k, r)))['cases']['explosion']
+            for r in range(2)]
+    report(all(x['realisations']['value'] == 1 for x in runs), "level %d: the single runs are single" % (k + 1))
+    report(l['realisations'] == 2, "level %d: 2 realisations" % (k + 1))
+    for key in keys:
+        vals = [x[key]['value'] for x in runs]
+        report(same(l[key], sum(vals) / 2),
+               "level %d %s %.10g = mean of the runs alone %s" % (k + 1, key, l[key], vals))
+    pf = [x['peak_force']['value'] for x in runs]
+    ip = [x['impulse_positive']['value'] for x in runs]
+    # the runs alone are read back at 10 digits: their spread to 1e-6
+    report(same(l["peak_force_sd"], statistics.stdev(pf), 1e-6) and same(l['peak_force_min'], min(pf))
+           and same(l['peak_force_max'], max(pf)),
+           "level %d: peak force sd %.4g, least %.6g, largest %.6g as the runs'" %
+           (k + 1, l['peak_force_sd'], l['peak_force_min'], l['peak_force_max']))
+    report(same(l["impulse_positive_sd"], statistics.stdev(ip), 1e-6),
+           "level %d: positive impulse sd %.4g as the runs'" % (k + 1, l['impulse_positive_sd']))
+    report(pf[0] != pf[1], "level %d: the two placements are two runs (%r, %r)" % (k + 1, pf[0], pf[1]))
+fin = cv['levels'][-1]
+for key in keys:
+    report(same(summ[key]['value'], fin[key]), "the case's %s is the finest level's mean" % key)
+sys.exit(1 if fails else 0)
+PY
+[ $? = 0 ] || fail=$((fail+1))
+
+pdftotext run/report.pdf - 2>/dev/null | tr '\n' ' ' | grep -q "ran 2 realisations at each level" \
+  && ok "the report says the loads are the mean of 2 realisations" || bad "the report does not name the realisations"
+
+# realisations without a ladder
+sed 's/convergence: \[1, 0.71\], //' real.yaml > noladder.yaml
+"$bin" check noladder.yaml >nl.out 2>nl.err; rc=$?
+[ $rc = 2 ] && grep -q "noladder.yaml:8:.*resolution.realisations: 2, without resolution.convergence" nl.err \
+  && ok "realisations without a ladder: exit 2, file, line and key" || bad "realisations without a ladder: exit $rc: $(cat nl.err)"
+exit $fail
