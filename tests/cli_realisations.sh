@@ -11,14 +11,15 @@
 #  - the case's quoted loads are the finest level's means;
 #  - the console and the report say how many realisations and the spread;
 #  - realisations > 1 without a ladder is refused (exit 2, naming the key).
+# Where a GPU takes the run (backend auto), the ladder runs its levels and
+# realisations side by side, each on its own stream: the same comparison
+# then checks that path.
 set -u
 bin=$1
 fail=0
 ok() { echo "PASS $1"; }
 bad() { echo "FAIL $1"; fail=$((fail+1)); }
-for tool in python3 pdftotext; do
-  command -v $tool >/dev/null 2>&1 || { echo "SKIP $tool not installed"; exit 77; }
-done
+command -v python3 >/dev/null 2>&1 || { echo "SKIP python3 not installed"; exit 77; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 echo "leak:libfontconfig.so" > "$work/lsan.supp"
@@ -109,8 +110,12 @@ sys.exit(1 if fails else 0)
 PY
 [ $? = 0 ] || fail=$((fail+1))
 
-pdftotext run/report.pdf - 2>/dev/null | tr '\n' ' ' | grep -q "ran 2 realisations at each level" \
-  && ok "the report says the loads are the mean of 2 realisations" || bad "the report does not name the realisations"
+if command -v pdftotext >/dev/null 2>&1; then
+  pdftotext run/report.pdf - 2>/dev/null | tr '\n' ' ' | grep -q "ran 2 realisations at each level" \
+    && ok "the report says the loads are the mean of 2 realisations" || bad "the report does not name the realisations"
+else
+  echo "SKIP (one check) pdftotext not installed: the report's text is not read"
+fi
 
 # realisations without a ladder
 sed 's/convergence: \[1, 0.71\], //' real.yaml > noladder.yaml
