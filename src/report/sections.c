@@ -580,15 +580,21 @@ static enum wl_status convergence_case_table(struct wl_report_ctx *c, int i, int
       {"change", "%", WL_REPORT_ALIGN_AUTO, 2},
       {"error", "%", WL_REPORT_ALIGN_AUTO, 2},
       {"status", NULL, WL_REPORT_ALIGN_LEFT, 0},
+      {"runs' sd", "%", WL_REPORT_ALIGN_AUTO, 2},
   };
-  enum { NC = 10 };
-  struct wl_report_column cols[NC];
+  enum { NC_MAX = 11 };
+  /* the realisations' columns only where a level ran several
+   * (resolution.realisations) */
+  double real = 0;
+  for (int l = 0; l < cv->n_levels; l++) real = fmax(real, cv->realisations[l] > 1 ? cv->realisations[l] : 0);
+  const int nc = real > 1 ? NC_MAX : NC_MAX - 1;
+  struct wl_report_column cols[NC_MAX];
   memcpy(cols, cols0, sizeof cols);
   cols[1].sig = cols[3].sig = cols[4].sig = cols[6].sig = dg;
-  struct wl_report_cell cells[WL_RESULTS_MAX_LEVELS * NC];
+  struct wl_report_cell cells[WL_RESULTS_MAX_LEVELS * NC_MAX];
   char txt[WL_RESULTS_MAX_LEVELS][2][32];
   for (int l = 0; l < cv->n_levels; l++) {
-    struct wl_report_cell *row = &cells[l * NC];
+    struct wl_report_cell *row = &cells[l * nc];
     snprintf(txt[l][0], sizeof txt[l][0], "%d", l + 1);
     snprintf(txt[l][1], sizeof txt[l][1], "%.0f", cv->particles[l]);
     row[0] = (struct wl_report_cell){txt[l][0], 0};
@@ -602,12 +608,19 @@ static enum wl_status convergence_case_table(struct wl_report_ctx *c, int i, int
                                      l ? change_pct(cv->impulse_pos[l], cv->impulse_pos[l - 1]) : 0};
     row[8] = (struct wl_report_cell){NULL, 100.0 * cv->error[l]};
     row[9] = (struct wl_report_cell){cv->status[l] == 0 ? "complete" : "stopped", 0};
+    if (real > 1)
+      row[10] = cv->realisations[l] > 1 ? (struct wl_report_cell){NULL, 100.0 * cv->peak_force_sd[l] /
+                                                                          fabs(cv->peak_force[l])}
+                                        : (struct wl_report_cell){"", 0};
   }
-  char caption[160];
+  char caption[224], runs[96] = "";
+  if (real > 1)
+    snprintf(runs, sizeof runs, ", each level the mean of %.0f runs (their sd: runs' sd)", real);
   snprintf(caption, sizeof caption, "Convergence ladder of the %s case (peak force from the "
-           "filtered probe force; change from the level above; the finest level's error is "
-           "its uncertainty)", c->res->cases[i].name[0] ? c->res->cases[i].name : wl_store_results_case_name(i));
-  struct wl_report_table t = {caption, cols, NC, cells, cv->n_levels};
+           "filtered probe force%s; change from the level above; the finest level's error is "
+           "its uncertainty)", c->res->cases[i].name[0] ? c->res->cases[i].name : wl_store_results_case_name(i),
+           runs);
+  struct wl_report_table t = {caption, cols, nc, cells, cv->n_levels};
   return wl_report_add_table(c->doc, &t, err);
 }
 
