@@ -341,7 +341,8 @@ enum wl_status wl_plan_ladder_cost(const struct wl_scenario *s, const struct wl_
  * reaches (a step is more than its force loop: seawall.yaml's finest
  * explosion alone, 151 000 particles, runs at 1.3e9 particle-steps/s; its
  * GPU ladder with 4 explosion realisations a level, 15 runs, took 170.5 s
- * where the full rate priced 128 s, 2026-11-28). Fitted on the H100
+ * where the full rate priced 128 s; now priced 159 s, and with 8, 27 runs,
+ * 291 s against 321.7 s measured, 2026-11-28). Fitted on the H100
  * (BENCHMARKS.md, "Sweeps" and "The main job on this machine"): the cost to
  * the main job's finest explosion level of its ladder's five other runs
  * beside it (2026-11-26); the share that seawall-sweep.yaml's cases reach
@@ -432,12 +433,13 @@ struct wl_plan_choice {
 };
 
 /* resolution.realisations: auto runs this many explosion realisations a
- * level where the ladder goes to a GPU (wl_plan_choose), one elsewhere:
- * seawall.yaml's explosion at dp = 0.0043 m, 8 sub-spacing placements on
- * the H100, gave peak forces 32.4-35.5 N/m (sd 2.9 %); their mean moves
- * by sd / 2 with 4, and 4 of the ladder's finest explosion take about
- * 3 times one side by side (docs/convergence.md, "Realisations"). */
-#define WL_PLAN_AUTO_REALISATIONS 4
+ * level where the ladder goes to a GPU (wl_plan_choose), one elsewhere.
+ * seawall.yaml's explosion on the H100 (2026-11-28, docs/convergence.md,
+ * "Realisations of a chaotic case"): single runs at dp = 0.0043 m read
+ * 32.4-38.0 N/m; with 4 a level the means' scatter (about 2.6 %) made the
+ * ladder's band on the peak +-22 %, with 8 +-6.4 to +-14.5 % (means 33.1-
+ * 34.8 N/m), the whole main job 322 s against 171 s. */
+#define WL_PLAN_AUTO_REALISATIONS 8
 
 /* The crater centre [m] of realisation r (0-based) of n at spacing dp:
  * x_center + r dp / n, within one spacing of the scenario's, so every

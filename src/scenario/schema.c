@@ -144,7 +144,7 @@ static const struct wl_key resolution_keys[] = {
      WL_SCENARIO_MAX_REALISATIONS, 0, 0, "auto", NULL, NO_FLAG, 0,
      "explosion runs per convergence level, its crater placed at n offsets within one particle "
      "spacing; the loads quoted are their mean (the explosion's collapse is chaotic: one run is "
-     "one realisation), or auto (4 where the ladder runs on a GPU, else 1)"},
+     "one realisation), or auto (8 where the ladder runs on a GPU, else 1)"},
     {"convergence", KT_LEVELS, WL_DIM_NONE, 0, NULL, 0, 1, 1, 0, NULL, NULL, NO_FLAG, 0,
      "list of dp factors, e.g. [1, 0.71, 0.5]"},
     {"refine", KT_MAP, WL_DIM_NONE, 0, NULL, NONE, NONE, 0, 0, NULL, refine_keys,
