@@ -45,9 +45,9 @@ cd "$work" || exit 1
 grep -q "each level the mean of 2 realisations" out.txt && ok "the console says the levels are means of 2" \
   || bad "the console does not name the realisations: $(cat out.txt)"
 # one after the other each realisation has its progress line; side by side
-# (a GPU) the finest level's first run reports for all
-grep -q -E "realisation 2/2|2 realisations a level, all levels side by side" err.txt \
-  && ok "progress names the realisations" || bad "no progress line names the realisations"
+# (a GPU) the ladder reports the share of all 4 runs' work, to the end
+grep -q -E "realisation 2/2|levels 1-2 x 2 realisations side by side: 100 % of the 4 runs' work" err.txt \
+  && ok "progress names the realisations" || bad "no progress line names the realisations: $(cat err.txt)"
 
 
 # every realisation alone: the level's dp, the crater moved by r dp / n

@@ -155,6 +155,12 @@ struct wl_sph_progress {
   double particle_steps_per_s;
   double eta_s;      /* estimated wall-clock seconds to t_end at the rate so far */
   int n;             /* particles */
+  /* Where the caller's task is more than this run (runs side by side, a
+   * convergence ladder's levels and realisations): `runs` of them, `done`
+   * the share of their planned work done, and eta_s then the whole task's
+   * (src/assess/ladder.c). runs 0 (the solver's own reports): one run. */
+  int runs;
+  double done;
 };
 
 struct wl_sph_sim; /* opaque */

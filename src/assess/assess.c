@@ -302,6 +302,7 @@ static enum wl_status run_levels(struct run_ctx *rc, const struct wl_backend_ops
       pr.n = c->n_particles;
       pr.particle_steps_per_s = pr.steps_per_s * pr.n;
       pr.eta_s = pr.t > 0 ? pr.wall_s * (c->t_end - pr.t) / pr.t : 0;
+      pr.runs = 0, pr.done = 0.0;
       rc->opts->progress(rc->opts->user, c->name, &pr);
       wall_next = now + 0.5;
     }

@@ -193,6 +193,48 @@ static void ladder_note(struct wl_assess_convergence *cv, const char *stop_word)
              cv->n_levels, e, basis, cv->target_met ? "below" : "above", t);
 }
 
+/* The progress of runs side by side (ladder_side_by_side): each run
+ * reports its simulated time here, and the ladder reports the share of
+ * all their planned work done (each run weighted by its planned
+ * particle-steps), at most every half second, under one lock, so that
+ * the caller's progress function is called from one thread at a time.
+ * The finest level's first run, which reports alone otherwise, ends long
+ * before its realisations and the levels beside it. */
+struct ladder_share {
+  pthread_mutex_t lock;
+  const struct wl_assess_opts *opts;
+  const char *label;
+  int n;
+  double *weight, *frac, total, wall, next;
+};
+struct ladder_share_hook {
+  struct ladder_share *sh;
+  int j;
+};
+
+static void ladder_share_progress(void *user, const char *case_name,
+                                  const struct wl_sph_progress *pr) {
+  const struct ladder_share_hook *hk = user;
+  struct ladder_share *sh = hk->sh;
+  (void)case_name;
+  pthread_mutex_lock(&sh->lock);
+  sh->frac[hk->j] = pr->t_end > 0 ? fmin(1.0, pr->t / pr->t_end) : 1.0;
+  if (pr->wall_s > sh->wall) sh->wall = pr->wall_s;
+  double done = 0.0;
+  for (int j = 0; j < sh->n; j++) done += sh->weight[j] * sh->frac[j];
+  done = sh->total > 0 ? done / sh->total : 1.0;
+  if (sh->wall >= sh->next || done >= 1.0) {
+    struct wl_sph_progress all = *pr;
+    all.runs = sh->n;
+    all.done = done;
+    all.wall_s = sh->wall;
+    all.eta_s = done > 0 ? sh->wall * (1.0 - done) / done : NAN;
+    sh->opts->progress(sh->opts->user, sh->label, &all);
+    sh->next = done >= 1.0 ? INFINITY : sh->wall + 0.5;
+  }
+  pthread_mutex_unlock(&sh->lock);
+}
+
 /* Levels side by side on one GPU: within WL_PLAN_GPU_SIDE_BY_SIDE_MEMORY
  * of its memory for all of them together (the plan's estimates), else one
  * after the other. */
@@ -252,8 +294,10 @@ static int ladder_side_by_side(const struct wl_scenario *s, enum wl_load_case lo
   pthread_t *tid = calloc((size_t)n_jobs, sizeof *tid);
   int *started = calloc((size_t)n_jobs, sizeof *started);
   struct real_loads *rl = calloc((size_t)n_jobs, sizeof *rl);
-  if (!jobs || !tid || !started || !rl) {
-    free(jobs), free(tid), free(started), free(rl);
+  struct ladder_share_hook *hooks = calloc((size_t)n_jobs, sizeof *hooks);
+  double *share = calloc(2 * (size_t)n_jobs, sizeof *share);
+  if (!jobs || !tid || !started || !rl || !hooks || !share) {
+    free(jobs), free(tid), free(started), free(rl), free(hooks), free(share);
     return 0;
   }
   double bytes = 0;
@@ -265,30 +309,39 @@ static int ladder_side_by_side(const struct wl_scenario *s, enum wl_load_case lo
     bytes += jobs[j].p.gpu_memory_bytes;
   }
   if (st || !(bytes <= WL_PLAN_GPU_SIDE_BY_SIDE_MEMORY * gpu_bytes)) {
-    free(jobs), free(tid), free(started), free(rl);
+    free(jobs), free(tid), free(started), free(rl), free(hooks), free(share);
     return 0; /* the sequential ladder plans again and says why a level fails */
+  }
+  char label[128];
+  if (n_real > 1)
+    snprintf(label, sizeof label, "%s, levels 1-%d x %d realisations side by side",
+             wl_flume_case_name(load), n, n_real);
+  else
+    snprintf(label, sizeof label, "%s, levels 1-%d side by side", wl_flume_case_name(load), n);
+  struct ladder_share sh = {.opts = opts, .label = label, .n = n_jobs, .weight = share,
+                            .frac = share + n_jobs};
+  pthread_mutex_init(&sh.lock, NULL);
+  for (int j = 0; j < n_jobs; j++) {
+    const struct wl_plan *jp = &jobs[j].p;
+    sh.weight[j] = load == WL_CASE_EXPLOSION ? jp->explosion.particle_steps
+                                             : jp->solitary.particle_steps;
+    sh.total += sh.weight[j];
+    hooks[j] = (struct ladder_share_hook){&sh, j};
   }
   for (int j = 0; j < n_jobs; j++) {
     if (j == last) continue;
     struct level_job *jb = &jobs[j];
     jb->load = load;
     jb->opts = *opts;
-    jb->opts.progress = NULL;
+    jb->opts.progress = opts->progress ? ladder_share_progress : NULL;
+    jb->opts.user = &hooks[j];
     wl_error_clear(&jb->err);
     started[j] = pthread_create(&tid[j], NULL, level_thread, jb) == 0;
   }
-  struct ladder_progress lp = {opts, ""};
-  if (n_real > 1)
-    snprintf(lp.label, sizeof lp.label,
-             "%s, level %d/%d, dp = %.4g m (%d realisations a level, all levels side by side)",
-             wl_flume_case_name(load), n, n, cv->lv[n - 1].dp, n_real);
-  else
-    snprintf(lp.label, sizeof lp.label, "%s, level %d/%d, dp = %.4g m (levels 1-%d beside it)",
-             wl_flume_case_name(load), n, n, cv->lv[n - 1].dp, n - 1);
   struct wl_assess_opts lo = *opts;
   if (opts->progress) {
-    lo.progress = ladder_on_progress;
-    lo.user = &lp;
+    lo.progress = ladder_share_progress;
+    lo.user = &hooks[last];
   }
   st = assess_case(&jobs[last].s, &jobs[last].p, load, &lo, snapshots,
                    ASSESS_DEFER | (urgent ? ASSESS_URGENT : 0), c, err);
@@ -319,7 +372,8 @@ static int ladder_side_by_side(const struct wl_scenario *s, enum wl_load_case lo
                 : st == WL_EINTERRUPTED ? "was interrupted"
                                         : "failed";
   ladder_note(cv, stop_word);
-  free(jobs), free(tid), free(started), free(rl);
+  pthread_mutex_destroy(&sh.lock);
+  free(jobs), free(tid), free(started), free(rl), free(hooks), free(share);
   *st_out = st;
   return 1;
 }

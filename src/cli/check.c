@@ -332,6 +332,19 @@ void wl_cli_show_progress(void *user, const char *name, const struct wl_sph_prog
   double frac = pr->t_end > 0 ? pr->t / pr->t_end : 0;
   double eta_s = frac > 0 ? pr->wall_s * (1 - frac) / frac : NAN;
   char eta[32];
+  if (pr->runs > 1) { /* runs side by side: the share of their work, and the ETA of all */
+    fmt_eta(pr->eta_s, eta, sizeof eta);
+    if (ps->tty) {
+      fprintf(stderr, "\r%-10s %6.1f %% of the %d runs' work  ETA %-8s", name, 100 * pr->done,
+              pr->runs, eta);
+      if (pr->done >= 1.0) fputc('\n', stderr);
+    } else if (pr->wall_s - ps->last_print >= 30.0 || pr->done >= 1.0) {
+      fprintf(stderr, "%s: %.0f %% of the %d runs' work, ETA %s\n", name, 100 * pr->done,
+              pr->runs, eta);
+      ps->last_print = pr->wall_s;
+    }
+    return;
+  }
   fmt_eta(eta_s, eta, sizeof eta);
   if (ps->tty) {
     fprintf(stderr, "\r%-10s t = %7.3f / %.3f s  %6.1f %%  %8.0f steps/s  %.2e particle-steps/s  ETA %-8s",

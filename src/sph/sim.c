@@ -452,6 +452,7 @@ enum wl_status wl_sph_sim_run(struct wl_sph_sim *sim, const struct wl_sph_run_op
         pr.n = sim->host.capacity;
         pr.particle_steps_per_s = pr.steps_per_s * pr.n;
         pr.eta_s = sim->t > t0 ? pr.wall_s * (o->t_end - sim->t) / (sim->t - t0) : 0;
+        pr.runs = 0, pr.done = 0.0;
         o->progress(o->user, &pr);
         wall_next = now + every;
       }
