@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # resolution.realisations end to end, on a tiny explosion flume (a crater
-# 1.2 m off the wall in 0.2 m of water, dp 0.025 m, a 2-level ladder with 2
-# realisations a level, 1.6 s, one thread):
+# 1.2 m off the wall in 0.2 m of water, dp 0.035 m, a 2-level ladder with 2
+# realisations a level, 1.2 s, one thread):
 #  - each level's loads in summary.json are the mean of its realisations,
 #    and its spread (sd, least and largest peak) theirs: checked against
 #    the same runs made HERE one by one, each an ordinary single-resolution
@@ -26,8 +26,8 @@ echo "leak:libfontconfig.so" > "$work/lsan.supp"
 export LSAN_OPTIONS="suppressions=$work/lsan.supp${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
 # Under the sanitizers (WL_TEST_QUICK) a coarser ladder: this test checks
 # the bookkeeping, not the physics.
-dp0=0.025 end=1.6
-[ -n "${WL_TEST_QUICK:-}" ] && dp0=0.04 end=1.2
+dp0=0.035 end=1.2
+[ -n "${WL_TEST_QUICK:-}" ] && dp0=0.05 end=1.0
 cat > "$work/real.yaml" <<YAML
 scenario: real
 water: {depth: 0.2 m}
