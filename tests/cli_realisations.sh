@@ -27,7 +27,7 @@ export LSAN_OPTIONS="suppressions=$work/lsan.supp${LSAN_OPTIONS:+:$LSAN_OPTIONS}
 # Under the sanitizers (WL_TEST_QUICK) a coarser ladder: this test checks
 # the bookkeeping, not the physics.
 dp0=0.035 end=1.2
-[ -n "${WL_TEST_QUICK:-}" ] && dp0=0.05 end=1.0
+[ -n "${WL_TEST_QUICK:-}" ] && dp0=0.05 end=1.2
 cat > "$work/real.yaml" <<YAML
 scenario: real
 water: {depth: 0.2 m}
@@ -107,6 +107,31 @@ for k, l in enumerate(cv['levels']):
     report(same(l["impulse_positive_sd"], statistics.stdev(ip), 1e-6),
            "level %d: positive impulse sd %.4g as the runs'" % (k + 1, l['impulse_positive_sd']))
     report(pf[0] != pf[1], "level %d: the two placements are two runs (%r, %r)" % (k + 1, pf[0], pf[1]))
+# the bands: Roache's two-level GCI on the means (3 |f2 - f1| / (r^2 - 1),
+# r = 1/0.71) plus the finest mean's sampling uncertainty, Student's t for
+# one degree of freedom (12.706, any table) times sd / sqrt(2), computed
+# here from the runs alone
+runs2 = [json.load(open('alone_1_%d/summary.json' % r))['cases']['explosion'] for r in range(2)]
+l1, l2 = cv['levels']
+r = 1 / 0.71
+for name, f1, f2, vals in (
+        ('peak_force', l1['peak_force'], l2['peak_force'],
+         [x['peak_force']['value'] for x in runs2]),
+        ('peak_force_dynamic', l1['peak_force'] - l1['rest_force'], l2['peak_force'] - l2['rest_force'],
+         [x['peak_force']['value'] - x['rest_force']['value'] for x in runs2]),
+        ('impulse_positive', l1['impulse_positive'], l2['impulse_positive'],
+         [x['impulse_positive']['value'] for x in runs2])):
+    if f2 == 0:
+        report(False, "%s: the finest mean is 0 (a run too short for the wave): no band to check" % name)
+        continue
+    samp = 12.706 * statistics.stdev(vals) / math.sqrt(2) / abs(f2)
+    band = 3 * abs(f2 - f1) / (r * r - 1) / abs(f2)
+    report(same(cv['sampling_uncertainty'][name], samp, 1e-5),
+           "%s: the mean's sampling uncertainty %.4g as t95(1) sd / sqrt(2) by hand (%.4g)" %
+           (name, cv['sampling_uncertainty'][name], samp))
+    report(same(cv[name]['error_estimate'], band + samp, 1e-5),
+           "%s: uncertainty %.4g = the two-level band on the means %.4g + that %.4g" %
+           (name, cv[name]['error_estimate'], band, samp))
 fin = cv['levels'][-1]
 for key in keys:
     report(same(summ[key]['value'], fin[key]), "the case's %s is the finest level's mean" % key)

@@ -207,6 +207,21 @@ int main(void) {
     CHECK_TRUE(i0 == 7 && i1 == 7, "no positive phase: i0 = i1 = the peak");
     free(ts), free(xs), free(net), free(cum);
   }
+  /* The sampling uncertainty of a mean (loads.h): Student's t for a
+   * two-sided 95 % interval from the table of any statistics text
+   * (the percentage points of any statistics table: t(1) 12.706, t(7) 2.365, t(30) 2.042,
+   * t(60) 2.000, t(120) 1.980), and 4 runs of sd 1 about a mean of 10 by
+   * hand: 3.182 / 2 / 10. */
+  CHECK_REL(wl_loads_t95(1), 12.706, 1e-4, "t95 with 1 degree of freedom");
+  CHECK_REL(wl_loads_t95(7), 2.365, 1e-4, "t95 with 7 (8 runs)");
+  CHECK_REL(wl_loads_t95(30), 2.042, 1e-4, "t95 with 30");
+  CHECK_REL(wl_loads_t95(60), 2.000, 1e-3, "t95 with 60 (beyond the table)");
+  CHECK_REL(wl_loads_t95(120), 1.980, 1e-3, "t95 with 120 (beyond the table)");
+  CHECK_REL(wl_loads_mean_uncertainty(1.0, 4, -10.0), 3.182 / 2.0 / 10.0, 1e-12,
+            "mean of 4 runs, sd 1, |mean| 10: t95(3) sd / sqrt(4) / 10");
+  CHECK_TRUE(isnan(wl_loads_mean_uncertainty(1.0, 1, 10.0)) &&
+                 isnan(wl_loads_mean_uncertainty(NAN, 4, 10.0)),
+             "one run, or no spread: no sampling uncertainty");
   free(t), free(f), free(I), free(x), free(y), free(tt);
   return TEST_RESULT();
 }

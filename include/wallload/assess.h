@@ -175,6 +175,7 @@ struct wl_assess_level {
    * standard deviation (NaN from one), and the least and largest peak */
   int realisations;
   double peak_force_sd, peak_force_min, peak_force_max, impulse_positive_sd;
+  double peak_force_dynamic_sd; /* of peak_force - rest_force over the realisations */
   double error;             /* estimated relative error of this level: the larger of the peak
                                force's part above the force at rest and the positive impulse,
                                |f_k - f_ref|/|f_ref| with f_ref the
@@ -197,6 +198,12 @@ struct wl_assess_convergence {
    * relative uncertainty is small beside it, and that part is what the
    * resolution decides (docs/convergence.md) */
   struct wl_loads_convergence force_dynamic;
+  /* With realisations, the finest complete level's means are uncertain by
+   * their sampling (loads.h wl_loads_mean_uncertainty), relative: of the
+   * peak force, its part above the force at rest and the positive impulse;
+   * each is already added to the band above it (force, force_dynamic,
+   * impulse_pos .error). NaN with one run a level. */
+  double force_sampling, dynamic_sampling, impulse_sampling;
   double error_estimate;    /* max(force_dynamic.error, impulse_pos.error) [-]; NaN: none */
   double target;            /* resolution.target_error [-] (its default when not given) */
   int target_given;         /* 1: written in the scenario: the ladder may stop early */

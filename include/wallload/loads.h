@@ -208,6 +208,21 @@ struct wl_loads_convergence {
 void wl_loads_convergence(const double *h, const double *f, int n,
                           struct wl_loads_convergence *out);
 
+/* Student's t for a two-sided 95 % interval with `dof` degrees of freedom
+ * (dof >= 1; the table of any statistics text to 3 decimals for 1-30, then
+ * 1.96 + 2.4/dof, within 0.003 of the exact value beyond): the coverage
+ * factor of a mean of dof + 1 runs. */
+double wl_loads_t95(int dof);
+
+/* The sampling uncertainty of a mean of m runs whose sample standard
+ * deviation is sd: t95(m - 1) sd / sqrt(m), relative to |mean| (NaN for
+ * m < 2 or a non-finite sd). A ladder of such means (assess.h
+ * resolution.realisations) adds it to the band wl_loads_convergence
+ * gives on the means, as Eca & Hoekstra (2014, section 4) add the data's
+ * scatter to the discretisation band: the finest mean is itself uncertain
+ * by this much, whatever the levels above it say. */
+double wl_loads_mean_uncertainty(double sd, int m, double mean);
+
 /* A short name of the basis ("GCI", "3 x range", ...; "none"). */
 const char *wl_loads_estimate_name(enum wl_loads_estimate e);
 

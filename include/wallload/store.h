@@ -275,6 +275,9 @@ struct wl_results_convergence {
   /* the peak force less the force at rest (the wave's part) */
   double dyn_order, dyn_order_ok, dyn_extrapolated, dyn_error;
   double error_estimate, target, target_given, target_met, stopped_early;
+  /* realisations: the finest mean's sampling uncertainty, relative, already
+   * in the error estimates above (NaN, or absent in older files: one run) */
+  double force_sampling, dyn_sampling, pos_sampling;
   char force_basis[32], pos_basis[32], dyn_basis[32]; /* wl_loads_estimate_name: "GCI", ... */
   char note[WL_RESULTS_TEXT_MAX];      /* how the ladder ended */
 };

@@ -31,9 +31,10 @@ static void ladder_on_progress(void *user, const char *case_name,
 static double rel_change(double f, double ref) { return fabs(f - ref) / fabs(ref); }
 
 void ladder_estimate(struct wl_assess_convergence *cv) {
-  double h[WL_ASSESS_MAX_LEVELS], fo[WL_ASSESS_MAX_LEVELS], im[WL_ASSESS_MAX_LEVELS];
-  double fd[WL_ASSESS_MAX_LEVELS]; /* the peak force's part above the force at rest */
-  int idx[WL_ASSESS_MAX_LEVELS], m = 0;
+  double h[WL_ASSESS_MAX_LEVELS] = {0}, fo[WL_ASSESS_MAX_LEVELS] = {0};
+  double im[WL_ASSESS_MAX_LEVELS] = {0};
+  double fd[WL_ASSESS_MAX_LEVELS] = {0}; /* the peak force's part above the force at rest */
+  int idx[WL_ASSESS_MAX_LEVELS] = {0}, m = 0;
   /* only complete levels: a stopped run's peaks are not the event's */
   for (int k = 0; k < cv->n_levels; k++) {
     cv->lv[k].error = NAN;
@@ -47,6 +48,20 @@ void ladder_estimate(struct wl_assess_convergence *cv) {
   wl_loads_convergence(h, fo, m, &cv->force);
   wl_loads_convergence(h, fd, m, &cv->force_dynamic);
   wl_loads_convergence(h, im, m, &cv->impulse_pos);
+  /* the finest level's means carry their own sampling uncertainty, added to
+   * the bands the levels give (loads.h wl_loads_mean_uncertainty) */
+  cv->force_sampling = cv->dynamic_sampling = cv->impulse_sampling = NAN;
+  if (m > 0 && cv->lv[idx[m - 1]].realisations > 1) {
+    const struct wl_assess_level *fin = &cv->lv[idx[m - 1]];
+    cv->force_sampling = wl_loads_mean_uncertainty(fin->peak_force_sd, fin->realisations, fo[m - 1]);
+    cv->dynamic_sampling =
+        wl_loads_mean_uncertainty(fin->peak_force_dynamic_sd, fin->realisations, fd[m - 1]);
+    cv->impulse_sampling =
+        wl_loads_mean_uncertainty(fin->impulse_positive_sd, fin->realisations, im[m - 1]);
+    if (isfinite(cv->force_sampling)) cv->force.error += cv->force_sampling;
+    if (isfinite(cv->dynamic_sampling)) cv->force_dynamic.error += cv->dynamic_sampling;
+    if (isfinite(cv->impulse_sampling)) cv->impulse_pos.error += cv->impulse_sampling;
+  }
   cv->error_estimate = (isnan(cv->force_dynamic.error) || isnan(cv->impulse_pos.error))
                            ? NAN
                            : fmax(cv->force_dynamic.error, cv->impulse_pos.error);
@@ -99,7 +114,7 @@ static void level_from_runs(struct wl_assess_level *lv, const struct wl_case_res
   lv->t_reached = c->t_reached;
   lv->error = NAN;
   struct real_loads sum = {WL_OK, 0, 0, 0, 0, 0, 0, 0, 0, 0};
-  double sq_f = 0.0, sq_i = 0.0, lo = INFINITY, hi = -INFINITY;
+  double sq_f = 0.0, sq_i = 0.0, sq_d = 0.0, lo = INFINITY, hi = -INFINITY;
   int m = 0;
   for (int r = 0; r < n; r++) {
     if (rl[r].status != WL_OK) {
@@ -131,8 +146,11 @@ static void level_from_runs(struct wl_assess_level *lv, const struct wl_case_res
     sq_f += (rl[r].peak_force - lv->peak_force) * (rl[r].peak_force - lv->peak_force);
     sq_i += (rl[r].impulse_positive - lv->impulse_positive) *
             (rl[r].impulse_positive - lv->impulse_positive);
+    const double d = (rl[r].peak_force - rl[r].rest_force) - (lv->peak_force - lv->rest_force);
+    sq_d += d * d;
   }
   lv->peak_force_sd = m > 1 ? sqrt(sq_f / (m - 1)) : NAN;
+  lv->peak_force_dynamic_sd = m > 1 ? sqrt(sq_d / (m - 1)) : NAN;
   lv->impulse_positive_sd = m > 1 ? sqrt(sq_i / (m - 1)) : NAN;
 }
 

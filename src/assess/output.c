@@ -100,6 +100,8 @@ static void ladder_columns(const struct wl_assess_convergence *cv,
   out->pos_order = cv->impulse_pos.order, out->pos_order_ok = cv->impulse_pos.order_ok;
   out->pos_extrapolated = cv->impulse_pos.extrapolated, out->pos_error = cv->impulse_pos.error;
   out->error_estimate = cv->error_estimate, out->target = cv->target;
+  out->force_sampling = cv->force_sampling, out->dyn_sampling = cv->dynamic_sampling;
+  out->pos_sampling = cv->impulse_sampling;
   out->target_given = cv->target_given, out->target_met = cv->target_met;
   out->stopped_early = cv->stopped_early;
   snprintf(out->force_basis, sizeof out->force_basis, "%s", wl_loads_estimate_name(cv->force.basis));
@@ -163,6 +165,15 @@ static void json_convergence(struct wl_text *t, const struct wl_assess_convergen
   json_estimate(t, "peak_force", &cv->force, 0);
   json_estimate(t, "peak_force_dynamic", &cv->force_dynamic, 0);
   json_estimate(t, "impulse_positive", &cv->impulse_pos, 0);
+  /* realisations: the finest mean's sampling uncertainty, already in the
+   * error estimates above (null with one run a level) */
+  wl_text_put(t, "        \"sampling_uncertainty\": { \"peak_force\": ");
+  jnum(t, cv->force_sampling);
+  wl_text_put(t, ", \"peak_force_dynamic\": ");
+  jnum(t, cv->dynamic_sampling);
+  wl_text_put(t, ", \"impulse_positive\": ");
+  jnum(t, cv->impulse_sampling);
+  wl_text_put(t, " },\n");
   wl_text_put(t, "        \"error_estimate\": ");
   jnum(t, cv->error_estimate);
   wl_text_put(t, ",\n        \"target\": ");

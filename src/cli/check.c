@@ -426,6 +426,10 @@ static void print_convergence(const struct wl_case_result *c,
            fin->realisations, cv->n_levels, fin->peak_force_min / 1e3, fin->peak_force_max / 1e3,
            100 * fin->peak_force_sd / fabs(fin->peak_force),
            100 * fin->impulse_positive_sd / fabs(fin->impulse_positive));
+  if (fin->realisations > 1)
+    printf("    the mean's sampling uncertainty (95 %%, in the bands below): peak force %.3g %%, "
+           "its part above the force at rest %.3g %%, positive impulse %.3g %%\n",
+           100 * cv->force_sampling, 100 * cv->dynamic_sampling, 100 * cv->impulse_sampling);
   printf("    observed order: peak force %.3g%s, positive impulse %.3g%s; uncertainty: peak "
          "force %.3g %% (%s), its part above the force at rest %.3g %% (%s), positive impulse "
          "%.3g %% (%s)\n",

@@ -19,6 +19,20 @@ static double log_ratio_model(double a, double b, double p) {
   return log(expm1(a * p) / -expm1(-b * p));
 }
 
+double wl_loads_t95(int dof) {
+  static const double t[30] = {12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306,
+                               2.262,  2.228, 2.201, 2.179, 2.160, 2.145, 2.131, 2.120,
+                               2.110,  2.101, 2.093, 2.086, 2.080, 2.074, 2.069, 2.064,
+                               2.060,  2.056, 2.052, 2.048, 2.045, 2.042};
+  if (dof < 1) return NAN;
+  return dof <= 30 ? t[dof - 1] : 1.96 + 2.4 / dof;
+}
+
+double wl_loads_mean_uncertainty(double sd, int m, double mean) {
+  if (m < 2 || !isfinite(sd) || !isfinite(mean) || mean == 0.0) return NAN;
+  return wl_loads_t95(m - 1) * sd / sqrt((double)m) / fabs(mean);
+}
+
 const char *wl_loads_estimate_name(enum wl_loads_estimate e) {
   switch (e) {
   case WL_LOADS_EST_TWO_LEVEL: return "two levels, order 2 assumed";

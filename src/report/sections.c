@@ -262,6 +262,15 @@ static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
         "loads quoted are the realisations' mean. At the finest level single runs peaked between "
         "%s and %s kN/m (standard deviation %s %% of the mean). ",
         wl_store_results_case_name(i), cv->realisations[last], lo, hi, sd);
+    if (isfinite(cv->force_sampling) && isfinite(cv->pos_sampling)) {
+      char sf[64], si[64];
+      wl_report_fmt(100.0 * cv->force_sampling, SHARE_DIGITS, sf, sizeof sf);
+      wl_report_fmt(100.0 * cv->pos_sampling, SHARE_DIGITS, si, sizeof si);
+      put(&b,
+          "That mean is itself uncertain by +-%s %% (peak force) and +-%s %% (positive impulse) "
+          "at 95 %% (Student's t over the runs), which the uncertainties above include. ",
+          sf, si);
+    }
   }
   for (int i = 0; i < WL_RESULTS_N_CASES; i++) {
     if (!cs[i].present || !strcmp(cs[i].status, "complete"))
