@@ -77,16 +77,16 @@ void ladder_estimate(struct wl_assess_convergence *cv) {
 }
 
 /* What a level keeps of one realisation's run. */
-struct real_loads {
+struct run_loads {
   enum wl_status status;
   double peak_force, peak_force_bound, rest_force, impulse, impulse_phase, impulse_positive,
       impulse_positive_bound, peak_moment, runup;
 };
 
-static struct real_loads real_of(const struct wl_case_result *c) {
+static struct run_loads run_loads_of(const struct wl_case_result *c) {
   const struct wl_case_loads *l = &c->loads;
   const int have = c->rec.n > 0 && l->force_filtered;
-  return (struct real_loads){c->status,
+  return (struct run_loads){c->status,
                              have ? l->force_peak.value : NAN,
                              have ? l->force_bound_peak.value : NAN,
                              have ? l->rest_force : NAN,
@@ -105,7 +105,7 @@ static struct real_loads real_of(const struct wl_case_result *c) {
  * status its own: the level then leaves the estimate (ladder_estimate),
  * as a stopped single run does. */
 static void level_from_runs(struct wl_assess_level *lv, const struct wl_case_result *c,
-                            const struct real_loads *rl, int n) {
+                            const struct run_loads *rl, int n) {
   lv->status = c->status;
   lv->n_particles = c->n_particles;
   lv->steps = c->steps;
@@ -113,7 +113,7 @@ static void level_from_runs(struct wl_assess_level *lv, const struct wl_case_res
   lv->rate = c->runtime_s > 0 ? (double)c->n_particles * (double)c->steps / c->runtime_s : NAN;
   lv->t_reached = c->t_reached;
   lv->error = NAN;
-  struct real_loads sum = {WL_OK, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+  struct run_loads sum = {WL_OK, 0, 0, 0, 0, 0, 0, 0, 0, 0};
   double sq_f = 0.0, sq_i = 0.0, sq_d = 0.0, lo = INFINITY, hi = -INFINITY;
   int m = 0;
   for (int r = 0; r < n; r++) {
@@ -311,7 +311,7 @@ static int ladder_side_by_side(const struct wl_scenario *s, enum wl_load_case lo
   struct level_job *jobs = calloc((size_t)n_jobs, sizeof *jobs);
   pthread_t *tid = calloc((size_t)n_jobs, sizeof *tid);
   int *started = calloc((size_t)n_jobs, sizeof *started);
-  struct real_loads *rl = calloc((size_t)n_jobs, sizeof *rl);
+  struct run_loads *rl = calloc((size_t)n_jobs, sizeof *rl);
   struct ladder_share_hook *hooks = calloc((size_t)n_jobs, sizeof *hooks);
   double *share = calloc(2 * (size_t)n_jobs, sizeof *share);
   if (!jobs || !tid || !started || !rl || !hooks || !share) {
@@ -365,14 +365,14 @@ static int ladder_side_by_side(const struct wl_scenario *s, enum wl_load_case lo
                    ASSESS_DEFER | (urgent ? ASSESS_URGENT : 0), c, err);
   for (int j = 0; j < n_jobs; j++) {
     if (j == last) {
-      rl[j] = real_of(c);
+      rl[j] = run_loads_of(c);
       continue;
     }
     if (started[j])
       pthread_join(tid[j], NULL);
     else
       level_thread(&jobs[j]); /* no thread to be had: here, after the finest */
-    rl[j] = real_of(&jobs[j].c);
+    rl[j] = run_loads_of(&jobs[j].c);
     if (jobs[j].st != WL_OK && rl[j].status == WL_OK) rl[j].status = jobs[j].st;
   }
   for (int k = 0; k < n; k++) {
@@ -434,7 +434,7 @@ enum wl_status ladder_run(const struct wl_scenario *s, const struct wl_plan *pla
   const char *stop_word = NULL;
   for (int k = 0; k < n; k++) {
     struct wl_assess_level *lv = &cv->lv[k];
-    struct real_loads rl[WL_SCENARIO_MAX_REALISATIONS];
+    struct run_loads rl[WL_SCENARIO_MAX_REALISATIONS];
     int ran = 0, planned = 1;
     for (int r = 0; r < n_real; r++) {
       if ((st = plan_level(s, lv, k, n, r, n_real, sl, pl, err))) {
@@ -461,7 +461,7 @@ enum wl_status ladder_run(const struct wl_scenario *s, const struct wl_plan *pla
       st = assess_case(sl, pl, load, &lo, r == 0 ? snapshots : NULL,
                        ASSESS_DEFER | (urgent && r == 0 ? ASSESS_URGENT : 0), run, err);
       const int no_run = st && run->rec.n == 0 && st != WL_EUNSTABLE && st != WL_EINTERRUPTED;
-      rl[r] = real_of(run);
+      rl[r] = run_loads_of(run);
       if (st != WL_OK && rl[r].status == WL_OK) rl[r].status = st;
       if (r > 0) wl_assess_case_clear(extra);
       if (no_run) {
