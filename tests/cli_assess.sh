@@ -62,6 +62,10 @@ for case, c in summ.items():
     t = [float(r['time_s']) for r in rows]
     f = [float(r['force_N_per_m']) for r in rows]
     ff = [float(r['force_filtered_N_per_m']) for r in rows]
+    # the still-water reference's drift (0 without one), which every
+    # impulse subtracts with the force at rest; the stored filtered force
+    # is the case's less it
+    dr = [float(r['still_drift_N_per_m']) for r in rows]
     w0, w1 = c['rest_from']['value'], c['rest_to']['value']
     if w0 is None:
         fs = c['static_force']['value']
@@ -79,7 +83,8 @@ for case, c in summ.items():
     if ff[ip] > fs:
         while a > 0 and ff[a] > fs: a -= 1
         while b + 1 < len(t) and ff[b] > fs: b += 1
-    imp = sum(0.5 * (f[k] + f[k + 1] - 2 * fs) * (t[k + 1] - t[k]) for k in range(a, b))
+    imp = sum(0.5 * (f[k] - dr[k] + f[k + 1] - dr[k + 1] - 2 * fs) * (t[k + 1] - t[k])
+              for k in range(a, b))
     v = c['impulse_positive_phase']['value']
     ok = abs(imp - v) <= 1e-4 * max(1.0, abs(v))
     print('%s: positive phase %.4g to %.4g s, %.6g N s/m (summary %.6g)' % (case, t[a], t[b], imp, v))

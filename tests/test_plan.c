@@ -42,6 +42,18 @@ static int plan_seawall(double dp, struct wl_scenario *sw, struct wl_plan *pw) {
   return ok;
 }
 
+/* The same as the runs of BENCHMARKS.md measured it: before the
+ * still-water reference run (plan.h; run.still_reference: off). */
+static int plan_seawall_as_measured(double dp, struct wl_scenario *sw, struct wl_plan *pw) {
+  if (!plan_seawall(dp, sw, pw)) return 0;
+  sw->run.still_reference.choice = WL_STILL_REF_OFF;
+  struct wl_error err;
+  wl_error_clear(&err);
+  if (wl_plan_make(sw, pw, &err) == WL_OK) return 1;
+  printf("FAIL seawall.yaml: %s\n", err.msg), wl_test_failures++;
+  return 0;
+}
+
 /* 1 when some note of the plan contains `what`. */
 static int has_note(const struct wl_plan *p, const char *what) {
   for (int i = 0; i < p->n_notes; i++)
@@ -252,7 +264,7 @@ int main(void) {
     struct wl_scenario sw;
     struct wl_plan pw;
     /* at the spacing those runs had (dp auto now picks 0.012 m, below) */
-    if (plan_seawall(0.0125, &sw, &pw)) {
+    if (plan_seawall_as_measured(0.0125, &sw, &pw)) {
       CHECK_REL(pw.gpu_seconds, 3.88, 0.25,
                 "GPU runtime estimate of seawall.yaml vs its H100 run (BENCHMARKS.md)");
     }
@@ -261,7 +273,7 @@ int main(void) {
      * development machine (BENCHMARKS.md "The main job on this machine",
      * 2026-11-26: 135.0 s + 342.8 s for the two cases at dp = 0.012 m, 2
      * threads, the wall condition) */
-    if (plan_seawall(0.012, &sw, &pw))
+    if (plan_seawall_as_measured(0.012, &sw, &pw))
       CHECK_REL(pw.cpu_seconds, 135.0 + 342.8, 0.25,
                 "CPU runtime estimate of seawall.yaml at 0.012 m vs its 2-core run (BENCHMARKS.md)");
     wl_scenario_clear(&sw);
@@ -286,7 +298,7 @@ int main(void) {
     const struct wl_plan_machine *machines[2] = {&cpu, &gpu};
     const double want_pph[2] = {2.0, 5.66}, measured_s[2] = {849.6, 321.7};
     for (int k = 0; k < 2; k++) {
-      if (!plan_seawall(0, &sw, &pw)) continue;
+      if (!plan_seawall_as_measured(0, &sw, &pw)) continue;
       struct wl_plan_choice c;
       struct wl_plan_cost cost;
       CHECK_TRUE(sw.resolution.particles_per_height.is_auto &&
@@ -343,6 +355,54 @@ int main(void) {
       CHECK_TRUE(wl_plan_choose(&sw, &gpu, &c, &err) == WL_OK && !c.is_auto &&
                      sw.resolution.particles_per_height.q.si == 3.0,
                  "a written particles_per_height is left alone");
+    }
+    wl_scenario_clear(&sw);
+  }
+  /* The still-water reference run (plan.h): one more run of a case, once a
+   * level of a ladder (not once a realisation); its price by hand. */
+  {
+    struct wl_scenario sw;
+    struct wl_plan on, off;
+    struct wl_error err;
+    wl_error_clear(&err);
+    if (plan_seawall(0.012, &sw, &on)) {
+      CHECK_TRUE(on.explosion.still_reference && !on.solitary.still_reference,
+                 "auto: the explosion's case has a still-water reference, the solitary's none");
+      sw.run.still_reference.choice = WL_STILL_REF_OFF;
+      CHECK_TRUE(wl_plan_make(&sw, &off, &err) == WL_OK && !off.explosion.still_reference,
+                 "off: no reference");
+      CHECK_REL(on.particle_steps - off.particle_steps, off.explosion.particle_steps, 1e-12,
+                "the reference costs one more explosion run");
+      CHECK_REL(on.gpu_work_seconds - off.gpu_work_seconds, off.gpu_case_work_seconds[1], 1e-12,
+                "and on a GPU the same work, beside the case");
+      sw.run.still_reference.choice = WL_STILL_REF_ON;
+      CHECK_TRUE(wl_plan_make(&sw, &on, &err) == WL_OK && on.solitary.still_reference &&
+                     on.explosion.still_reference,
+                 "on: both cases have one");
+    }
+    wl_scenario_clear(&sw);
+    if (plan_seawall(0, &sw, &on)) { /* the ladder, 4 realisations a level */
+      struct wl_plan_cost c_on, c_off;
+      sw.resolution.realisations.is_auto = 0, sw.resolution.realisations.q.si = 4;
+      double by_hand = 0.0;
+      int ok = wl_plan_make(&sw, &on, &err) == WL_OK &&
+               wl_plan_ladder_cost(&sw, &on, 1, NULL, &c_on, &err) == WL_OK;
+      for (int l = 0; ok && l < sw.resolution.n_levels; l++) {
+        struct wl_scenario sl = sw;
+        struct wl_plan pl;
+        sl.resolution.dp.is_auto = 0, sl.resolution.dp.given = 1;
+        sl.resolution.dp.q.si = wl_plan_level_dp(&sw, &on, sw.resolution.levels[l].q.si);
+        ok = wl_plan_make(&sl, &pl, &err) == WL_OK;
+        if (ok) by_hand += pl.explosion.particle_steps;
+      }
+      sw.run.still_reference.choice = WL_STILL_REF_OFF;
+      ok = ok && wl_plan_make(&sw, &off, &err) == WL_OK &&
+           wl_plan_ladder_cost(&sw, &off, 1, NULL, &c_off, &err) == WL_OK;
+      CHECK_TRUE(ok, "the ladder plans with and without the reference");
+      if (ok)
+        CHECK_REL(c_on.cpu_seconds - c_off.cpu_seconds,
+                  by_hand * on.evals_per_step / WL_PLAN_CPU_RATE, 1e-9,
+                  "a ladder's references: one explosion run a level (CPU price)");
     }
     wl_scenario_clear(&sw);
   }

@@ -91,6 +91,17 @@ struct wl_case_loads {
    * wl_loads_time_above) [N/m], [N s/m]; NaN without a rest window */
   double rest_force_spread, impulse_positive_rest_error;
   double impulse_peak_from, impulse_peak_to; /* that phase [s] */
+  /* The still-water reference run's drift (plan.h), when the case has one:
+   * its filtered wall force less its own force at rest, per sample [N/m]
+   * (probes; drift_bound: boundary particles; drift_moment: the moment
+   * [N m/m]); NULL when none. The filtered series above are the case's
+   * less it, and every peak and impulse here is taken from them (the
+   * impulses' raw force less the force at rest and the drift): the wave's
+   * load on a wall whose still water stays still. drift_max: its largest
+   * magnitude from peak_from on; impulse_positive_uncorrected: the
+   * positive impulse without it, to show what it took out. NaN when none. */
+  double *drift, *drift_bound, *drift_moment;
+  double drift_max, impulse_positive_uncorrected;
   double runup;             /* max eta at the wall face [m] */
   double runup_time;        /* [s] */
   /* Runs the scalar loads above are the mean of (resolution.realisations
@@ -101,6 +112,10 @@ struct wl_case_loads {
 
 struct wl_case_result {
   enum wl_load_case load;
+  /* The case's still-water reference run (plan.h), NULL when none ran;
+   * still_owned: this result ran it and clears it */
+  struct wl_case_result *still;
+  int still_owned;
   char name[32];
   enum wl_status status;    /* WL_OK, WL_EUNSTABLE, WL_EINTERRUPTED, or a setup error */
   char message[WL_ERROR_MSG_MAX]; /* why it stopped, when not WL_OK */
@@ -175,6 +190,7 @@ struct wl_assess_level {
    * standard deviation (NaN from one), and the least and largest peak */
   int realisations;
   double peak_force_sd, peak_force_min, peak_force_max, impulse_positive_sd;
+  double impulse_positive_uncorrected; /* the mean of its runs' (wl_case_loads), NaN: none */
   double peak_force_dynamic_sd; /* of peak_force - rest_force over the realisations */
   double error;             /* estimated relative error of this level: the larger of the peak
                                force's part above the force at rest and the positive impulse,

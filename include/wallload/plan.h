@@ -53,8 +53,9 @@ struct wl_plan_solitary {
   double end_time;                     /* simulated time of this case [s] */
   double x_left;                       /* the modelled flume starts here [m] */
   int refine;                          /* runs at two resolutions (resolution.refine) */
+  int still_reference;                 /* 1: the still-water reference run too (below) */
   long n_fluid, n_boundary;            /* estimated particles */
-  double particle_steps;               /* estimated to end_time */
+  double particle_steps;               /* estimated to end_time, one run */
 };
 
 struct wl_plan_explosion {
@@ -94,9 +95,25 @@ struct wl_plan_explosion {
   double end_time;                  /* simulated time of this case [s] */
   double x_left;                    /* the modelled flume starts here [m] */
   int refine;                          /* runs at two resolutions (resolution.refine) */
+  int still_reference;              /* 1: the still-water reference run too (below) */
   long n_fluid, n_boundary;         /* estimated particles */
-  double particle_steps;            /* estimated to end_time */
+  double particle_steps;            /* estimated to end_time, one run */
 };
+
+/* The still-water reference run (run.still_reference; docs/outputs.md):
+ * the case's flume as planned (its crop, absorbing zone, spacing, c0, end
+ * time and numerics) with still water and no wave, run to the case's end
+ * time. The model's still water is not still at the wall: its start-up
+ * moves the water level there by a few per cent of a thin depth (the main
+ * job's platform, 0.06 m: +2 mm at dp = 0.0086 m from t = 3 s on, -1 mm
+ * at 0.0043 m), which lifts or lowers the wall's force by up to 10 % of
+ * its force at rest long after the rest window, and an impulse integrated
+ * over a 15 s record takes it in: the explosion's positive impulse moved
+ * by 12 % over the ladder's two finest levels for it. The loads' impulses
+ * subtract that drift (the reference run's filtered force less its own
+ * force at rest) as well as the force at rest (loads.h). auto: the
+ * explosion's case; on: both cases; off: neither. A ladder runs it once a
+ * level, beside the first realisation (its crater's flume). */
 
 /* quiet_until (both load cases): the last time the wave leaves the wall's
  * force at rest alone, so that assess can read the model's own force at
@@ -149,9 +166,13 @@ struct wl_plan {
    * runs whose crater energies differ by 1e-7 part by 3-11 % at the wall
    * (docs/convergence.md, "Realisations"), so one run's peak is one draw */
   int realisations;
+  /* Build the flumes with still water (flume.c): the plan of a still-water
+   * reference run, a copy of the case's plan (assess) */
+  int still_flume;
   double gpu_case_seconds[2];       /* each case alone on the GPU; gpu_seconds is
                                        the cases side by side, as assess runs them */
   double gpu_case_work_seconds[2];
+  int gpu_case_still[2];            /* 1: that case's still-water reference runs beside it */
   /* resolution.refine (vres.h): two levels, dp from refine_from to the
    * wall, dp_coarse = 2 dp seaward of it, laid out by wl_vres_layout, for
    * the cases whose `refine` is set (from: auto refines the solitary case

@@ -64,6 +64,8 @@ enum wl_boundary_choice { WL_BOUNDARY_ADAMI, WL_BOUNDARY_DBC };
 /* What closes the flume behind the seawall: a wall, or a damping zone over
  * the far half of the land that brings overtopping water to rest. */
 enum wl_far_end_choice { WL_FAR_END_WALL, WL_FAR_END_DAMPING };
+/* run.still_reference (plan.h: the still-water reference run) */
+enum wl_still_reference_choice { WL_STILL_REF_AUTO, WL_STILL_REF_ON, WL_STILL_REF_OFF };
 /* 3D: whether half the width is modelled, with a symmetry plane on the
  * centreline (auto: when the width is an even number of rows of dp; every
  * flume scene is symmetric about the centreline). */
@@ -153,7 +155,7 @@ struct wl_scenario {
     } refine;
   } resolution;
   struct {
-    struct wl_scenario_value end_time, output_interval, backend, threads;
+    struct wl_scenario_value end_time, output_interval, backend, threads, still_reference;
   } run;
   struct {
     struct wl_scenario_value coefh, coefsound, cfl, alpha, viscosity, nu, density_diffusion,

@@ -75,10 +75,13 @@ typedef double (*wl_scene_eta_fn)(double x, void *user);
 
 /* Fluid at rest for x0 < x < x1 between a piecewise-linear bed (vertices
  * bed_x[i], bed_z[i], i < n_bed, bed_x increasing; [m]) and the free surface
- * eta(x): lattice points with z < eta(x) whose distance above the bed is at
- * least dp/2 (the bed is a wall face: its first boundary layer is dp/2
- * below), each column then stacked hydrostatically (see above). WL_EINPUT for bad arrays or
- * x range; WL_ENOMEM. */
+ * eta(x): a column at each lattice x, its lowest particle dp/2 from the bed
+ * (the bed is a wall face: its first boundary layer is dp/2 below; on a
+ * slope the column starts dp / (2 cos theta) above it), as many particles
+ * as put its top face nearest eta(x), stacked hydrostatically (see above).
+ * Over a bed whose height is a whole number of rows below the surface the
+ * columns end at eta exactly; over a slope their tops step by up to dp/2.
+ * WL_EINPUT for bad arrays or x range; WL_ENOMEM. */
 enum wl_status wl_scene_fluid_surface(struct wl_scene *sc, double x0, double x1, const double *bed_x, const double *bed_z,
                                       int n_bed, wl_scene_eta_fn eta, void *user,
                                       struct wl_error *err);

@@ -481,6 +481,10 @@ static enum wl_status run_case(const struct wl_assess_opts *opts,
 
 void wl_assess_case_clear(struct wl_case_result *c) {
   if (!c) return;
+  if (c->still_owned && c->still) {
+    wl_assess_case_clear(c->still);
+    free(c->still);
+  }
   wl_sample_record_clear(&c->rec);
   case_loads_clear(&c->loads);
   wl_flume_clear(&c->flume);
@@ -511,6 +515,14 @@ static void case_caution(struct wl_case_result *c) {
              "s): a larger load may follow; run longer (run.end_time)",
              tp, t0, t1);
   const struct wl_case_loads *l = &c->loads;
+  if (c->still && !l->drift) {
+    const size_t used = strlen(c->caution);
+    snprintf(c->caution + used, sizeof c->caution - used,
+             "%sthe still-water reference run %s: the impulses keep the flume's own drift at the "
+             "wall (run.still_reference)",
+             used ? "; " : "",
+             c->still->status == WL_OK ? "did not sample the case's times" : "did not complete");
+  }
   const double share = l->impulse_positive_rest_error / l->impulse_positive;
   if (share > WL_ASSESS_REST_CAUTION) {
     const size_t used = strlen(c->caution);
@@ -530,13 +542,45 @@ enum wl_status wl_assess_case(const struct wl_scenario *s, const struct wl_plan 
   return assess_case(s, plan, load, opts, snapshots, 0, c, err);
 }
 
-enum wl_status assess_case(const struct wl_scenario *s, const struct wl_plan *plan,
-                           enum wl_load_case load, const struct wl_assess_opts *opts,
-                           const char *snapshots, int how, struct wl_case_result *c,
-                           struct wl_error *err) {
+enum wl_status assess_attach_still(struct wl_case_result *c, struct wl_case_result *still,
+                                   struct wl_error *err) {
+  if (c->still_owned && c->still) {
+    wl_assess_case_clear(c->still);
+    free(c->still);
+  }
+  c->still = still;
+  c->still_owned = 0;
+  case_loads_clear(&c->loads);
+  enum wl_status st = case_loads_compute(c, err);
+  if (!st) case_caution(c);
+  return st;
+}
+
+/* The still-water reference run of case `load` (plan.h) into *t: the case's
+ * plan with still_flume set, no snapshots, its own progress label. */
+static enum wl_status run_still(const struct wl_scenario *s, const struct wl_plan *plan,
+                                enum wl_load_case load, const struct wl_assess_opts *opts,
+                                int how, struct wl_case_result *t, struct wl_error *err) {
+  struct wl_plan *ps = malloc(sizeof *ps);
+  if (!ps) return wl_error_set(err, WL_ENOMEM, "no memory for the still-water reference run");
+  *ps = *plan;
+  ps->still_flume = 1;
+  enum wl_status st = assess_case(s, ps, load, opts, NULL,
+                                  (how & ASSESS_URGENT) | ASSESS_NO_STILL | ASSESS_STILL_RUN, t,
+                                  err);
+  free(ps);
+  return st;
+}
+
+/* One run of a case (assess_case without its still-water reference). */
+static enum wl_status assess_one(const struct wl_scenario *s, const struct wl_plan *plan,
+                                 enum wl_load_case load, const struct wl_assess_opts *opts,
+                                 const char *snapshots, int how, struct wl_case_result *c,
+                                 struct wl_error *err) {
   memset(c, 0, sizeof *c);
   c->load = load;
-  snprintf(c->name, sizeof c->name, "%s", wl_flume_case_name(load));
+  snprintf(c->name, sizeof c->name, "%s%s", wl_flume_case_name(load),
+           how & ASSESS_STILL_RUN ? ", still water" : "");
   enum wl_status st = wl_flume_build(s, plan, load, &c->flume, err);
   if (st) return st;
   const struct wl_backend_ops *ops = NULL;
@@ -593,6 +637,83 @@ enum wl_status assess_case(const struct wl_scenario *s, const struct wl_plan *pl
   }
   case_caution(c);
   return c->status;
+}
+
+struct still_job {
+  const struct wl_scenario *s;
+  const struct wl_plan *plan;
+  enum wl_load_case load;
+  struct wl_assess_opts opts;
+  int how;
+  struct wl_case_result *t;
+  struct wl_error err;
+  enum wl_status st;
+};
+
+static void *still_thread(void *arg) {
+  struct still_job *j = arg;
+  j->st = run_still(j->s, j->plan, j->load, &j->opts, j->how, j->t, &j->err);
+  return NULL;
+}
+
+enum wl_status assess_case(const struct wl_scenario *s, const struct wl_plan *plan,
+                           enum wl_load_case load, const struct wl_assess_opts *opts,
+                           const char *snapshots, int how, struct wl_case_result *c,
+                           struct wl_error *err) {
+  const int want_still = !(how & ASSESS_NO_STILL) &&
+                         (load == WL_CASE_SOLITARY    ? plan->solitary.still_reference
+                          : load == WL_CASE_EXPLOSION ? plan->explosion.still_reference
+                                                      : 0);
+  const struct wl_backend_ops *ops = NULL;
+  struct wl_error berr;
+  wl_error_clear(&berr);
+  struct wl_case_result *t = want_still ? calloc(1, sizeof *t) : NULL;
+  if (!want_still || !t || pick_backend(s, opts, &ops, &berr) != WL_OK) {
+    free(t); /* no reference (or no memory, or no backend: the case says why) */
+    return assess_one(s, plan, load, opts, snapshots, how, c, err);
+  }
+  /* The still-water reference (plan.h): beside the case on a GPU (its own
+   * thread and stream, without progress), before it on the CPU, whose
+   * threads the case needs; an interrupted reference stops the case. */
+  struct still_job j = {s, plan, load, *opts, how, t, {0}, WL_OK};
+  wl_error_clear(&j.err);
+  pthread_t tid;
+  int threaded = 0;
+  if (ops != &wl_backend_cpu_ops) {
+    j.opts.progress = NULL;
+    threaded = pthread_create(&tid, NULL, still_thread, &j) == 0;
+  }
+  if (!threaded) still_thread(&j);
+  enum wl_status st;
+  if (!threaded && j.st == WL_EINTERRUPTED) {
+    memset(c, 0, sizeof *c);
+    c->load = load;
+    snprintf(c->name, sizeof c->name, "%s", wl_flume_case_name(load));
+    *err = j.err;
+    wl_error_prefix(err, "the still-water reference run: ");
+    c->status = st = j.st;
+    snprintf(c->message, sizeof c->message, "%s", err->msg);
+  } else {
+    st = assess_one(s, plan, load, opts, snapshots, how, c, err);
+  }
+  if (threaded) pthread_join(tid, NULL);
+  c->still = t;
+  c->still_owned = 1;
+  if (c->rec.n > 0) { /* the loads again, with the reference's drift */
+    struct wl_error lerr;
+    wl_error_clear(&lerr);
+    case_loads_clear(&c->loads);
+    enum wl_status lst = case_loads_compute(c, &lerr);
+    if (lst && st == WL_OK) *err = lerr, st = lst;
+    if (!lst) case_caution(c);
+  }
+  if (st == WL_OK && j.st == WL_EINTERRUPTED) { /* the reference stopped, the case did not */
+    *err = j.err;
+    wl_error_prefix(err, "the still-water reference run: ");
+    c->status = st = WL_EINTERRUPTED;
+    snprintf(c->message, sizeof c->message, "%s", err->msg);
+  }
+  return st;
 }
 
 static enum wl_status prepare_dir(const char *dir, int force, struct wl_error *err) {

@@ -17,11 +17,21 @@ enum wl_status case_loads_compute(struct wl_case_result *c, struct wl_error *err
  * beside others on a GPU and that they all wait for (the finest level of
  * the last case: its stream gets the GPU's greatest priority, so that the
  * runs beside it fill the GPU around it instead of slowing it). */
-enum { ASSESS_DEFER = 1, ASSESS_URGENT = 2 };
+/* ASSESS_NO_STILL: run no still-water reference (plan.h) for this case;
+ * the caller attaches one later (assess_attach_still) or none.
+ * ASSESS_STILL_RUN: this run is a still-water reference (its plan's
+ * still_flume is set; its progress is named so). */
+enum { ASSESS_DEFER = 1, ASSESS_URGENT = 2, ASSESS_NO_STILL = 4, ASSESS_STILL_RUN = 8 };
 enum wl_status assess_case(const struct wl_scenario *s, const struct wl_plan *plan,
                            enum wl_load_case load, const struct wl_assess_opts *opts,
                            const char *snapshots, int how, struct wl_case_result *c,
                            struct wl_error *err);
+
+/* Give c the still-water reference `still` (not owned; it must outlive c's
+ * use of it) and compute its loads again with the reference's drift: a
+ * realisation of a ladder's level shares its first run's reference. */
+enum wl_status assess_attach_still(struct wl_case_result *c, struct wl_case_result *still,
+                                   struct wl_error *err);
 
 /* The GPU's memory [bytes] when this scenario's run goes to the CUDA backend
  * (opts->backend, else run.backend; auto: a GPU found), else 0. */

@@ -24,7 +24,12 @@ struct ladder_progress {
 static void ladder_on_progress(void *user, const char *case_name,
                                const struct wl_sph_progress *pr) {
   struct ladder_progress *lp = user;
-  (void)case_name;
+  if (case_name && strstr(case_name, ", still water")) { /* its reference run (plan.h) */
+    char label[sizeof lp->label + 32];
+    snprintf(label, sizeof label, "%s, still water", lp->label);
+    lp->opts->progress(lp->opts->user, label, pr);
+    return;
+  }
   lp->opts->progress(lp->opts->user, lp->label, pr);
 }
 
@@ -80,7 +85,7 @@ void ladder_estimate(struct wl_assess_convergence *cv) {
 struct run_loads {
   enum wl_status status;
   double peak_force, peak_force_bound, rest_force, impulse, impulse_phase, impulse_positive,
-      impulse_positive_bound, peak_moment, runup;
+      impulse_positive_bound, peak_moment, runup, impulse_positive_uncorrected;
 };
 
 static struct run_loads run_loads_of(const struct wl_case_result *c) {
@@ -95,7 +100,8 @@ static struct run_loads run_loads_of(const struct wl_case_result *c) {
                              have ? l->impulse_positive : NAN,
                              have ? l->impulse_positive_bound : NAN,
                              have ? l->moment_peak.value : NAN,
-                             have ? l->runup : NAN};
+                             have ? l->runup : NAN,
+                             have ? l->impulse_positive_uncorrected : NAN};
 }
 
 /* Level lv from the run of its first realisation (c: particles, steps,
@@ -113,7 +119,7 @@ static void level_from_runs(struct wl_assess_level *lv, const struct wl_case_res
   lv->rate = c->runtime_s > 0 ? (double)c->n_particles * (double)c->steps / c->runtime_s : NAN;
   lv->t_reached = c->t_reached;
   lv->error = NAN;
-  struct run_loads sum = {WL_OK, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+  struct run_loads sum = {WL_OK, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
   double sq_f = 0.0, sq_i = 0.0, sq_d = 0.0, lo = INFINITY, hi = -INFINITY;
   int m = 0;
   for (int r = 0; r < n; r++) {
@@ -126,6 +132,7 @@ static void level_from_runs(struct wl_assess_level *lv, const struct wl_case_res
     sum.impulse_phase += rl[r].impulse_phase, sum.impulse_positive += rl[r].impulse_positive;
     sum.impulse_positive_bound += rl[r].impulse_positive_bound;
     sum.peak_moment += rl[r].peak_moment, sum.runup += rl[r].runup;
+    sum.impulse_positive_uncorrected += rl[r].impulse_positive_uncorrected;
     lo = fmin(lo, rl[r].peak_force), hi = fmax(hi, rl[r].peak_force);
     m++;
   }
@@ -140,6 +147,7 @@ static void level_from_runs(struct wl_assess_level *lv, const struct wl_case_res
   lv->impulse_phase = sum.impulse_phase / m, lv->impulse_positive = sum.impulse_positive / m;
   lv->impulse_positive_bound = sum.impulse_positive_bound / m;
   lv->peak_moment = sum.peak_moment / m, lv->runup = sum.runup / m;
+  lv->impulse_positive_uncorrected = sum.impulse_positive_uncorrected / m;
   lv->peak_force_min = lo, lv->peak_force_max = hi;
   for (int r = 0; r < n && m > 1; r++) {
     if (rl[r].status != WL_OK) continue;
@@ -168,6 +176,7 @@ static void case_from_level(struct wl_case_result *c, const struct wl_assess_lev
   l->impulse_peak = lv->impulse_phase;
   l->impulse_positive = lv->impulse_positive;
   l->impulse_positive_bound = lv->impulse_positive_bound;
+  l->impulse_positive_uncorrected = lv->impulse_positive_uncorrected;
   l->moment_peak.value = lv->peak_moment;
   l->runup = lv->runup;
 }
@@ -234,8 +243,8 @@ static void ladder_share_progress(void *user, const char *case_name,
                                   const struct wl_sph_progress *pr) {
   const struct ladder_share_hook *hk = user;
   struct ladder_share *sh = hk->sh;
-  (void)case_name;
   pthread_mutex_lock(&sh->lock);
+  (void)case_name;
   sh->frac[hk->j] = pr->t_end > 0 ? fmin(1.0, pr->t / pr->t_end) : 1.0;
   if (pr->wall_s > sh->wall) sh->wall = pr->wall_s;
   double done = 0.0;
@@ -260,6 +269,7 @@ static void ladder_share_progress(void *user, const char *case_name,
 /* A coarser level run beside the finest (ladder_side_by_side). */
 struct level_job {
   int level, real;      /* ladder level (0-based) and realisation */
+  int how;              /* assess_case's flags */
   struct wl_scenario s; /* shallow copy with the level's dp; never cleared */
   struct wl_plan p;
   enum wl_load_case load;
@@ -271,7 +281,7 @@ struct level_job {
 
 static void *level_thread(void *arg) {
   struct level_job *j = arg;
-  j->st = assess_case(&j->s, &j->p, j->load, &j->opts, NULL, ASSESS_DEFER, &j->c, &j->err);
+  j->st = assess_case(&j->s, &j->p, j->load, &j->opts, NULL, j->how, &j->c, &j->err);
   return NULL;
 }
 
@@ -339,8 +349,12 @@ static int ladder_side_by_side(const struct wl_scenario *s, enum wl_load_case lo
   struct ladder_share sh = {.opts = opts, .label = label, .n = n_jobs, .weight = share,
                             .frac = share + n_jobs};
   pthread_mutex_init(&sh.lock, NULL);
+  /* a level's still-water reference (plan.h) runs with its first
+   * realisation (beside it, in its own stream, without progress); the
+   * others take it when all are done */
   for (int j = 0; j < n_jobs; j++) {
     const struct wl_plan *jp = &jobs[j].p;
+    jobs[j].how = ASSESS_DEFER | (jobs[j].real > 0 ? ASSESS_NO_STILL : 0);
     sh.weight[j] = load == WL_CASE_EXPLOSION ? jp->explosion.particle_steps
                                              : jp->solitary.particle_steps;
     sh.total += sh.weight[j];
@@ -372,6 +386,16 @@ static int ladder_side_by_side(const struct wl_scenario *s, enum wl_load_case lo
       pthread_join(tid[j], NULL);
     else
       level_thread(&jobs[j]); /* no thread to be had: here, after the finest */
+    /* a later realisation takes its level's reference, from the level's
+     * first run (joined before it; the finest level's is c) */
+    struct wl_case_result *first =
+        jobs[j].level == n - 1 ? c : &jobs[jobs[j].level * n_real].c;
+    if (jobs[j].real > 0 && first->still) {
+      struct wl_error aerr;
+      wl_error_clear(&aerr);
+      if (assess_attach_still(&jobs[j].c, first->still, &aerr) && jobs[j].st == WL_OK)
+        jobs[j].st = WL_ENOMEM, jobs[j].err = aerr;
+    }
     rl[j] = run_loads_of(&jobs[j].c);
     if (jobs[j].st != WL_OK && rl[j].status == WL_OK) rl[j].status = jobs[j].st;
   }
@@ -458,8 +482,16 @@ enum wl_status ladder_run(const struct wl_scenario *s, const struct wl_plan *pla
       if (r > 0) memset(extra, 0, sizeof *extra);
       /* every level writes the snapshots file (its first realisation); the
        * last level run keeps it */
+      /* the level's still-water reference (plan.h) runs with its first
+       * realisation; the others take it */
       st = assess_case(sl, pl, load, &lo, r == 0 ? snapshots : NULL,
-                       ASSESS_DEFER | (urgent && r == 0 ? ASSESS_URGENT : 0), run, err);
+                       ASSESS_DEFER | (urgent && r == 0 ? ASSESS_URGENT : 0) |
+                           (r > 0 ? ASSESS_NO_STILL : 0),
+                       run, err);
+      if (r > 0 && c->still && run->rec.n > 0) {
+        enum wl_status ast = assess_attach_still(run, c->still, err);
+        if (ast && st == WL_OK) st = ast;
+      }
       const int no_run = st && run->rec.n == 0 && st != WL_EUNSTABLE && st != WL_EINTERRUPTED;
       rl[r] = run_loads_of(run);
       if (st != WL_OK && rl[r].status == WL_OK) rl[r].status = st;

@@ -289,23 +289,41 @@ static enum wl_status write_summary(const struct wl_scenario *s, const struct wl
       jval(&t, "rest_from", l->rest_from, "s", "start of the rest window (null: none)", 0);
       jval(&t, "rest_to", l->rest_to, "s", "end of the rest window (null: none)", 0);
     }
-    jval(&t, "impulse", l->impulse_total, "N s/m",
-         "integral of (force - rest_force), raw pressure-probe force", 0);
-    jval(&t, "impulse_boundary", c->rec.n ? l->impulse_bound[c->rec.n - 1] : NAN, "N s/m",
-         "integral of (force - rest_force_boundary), boundary particles", 0);
+    /* the base every impulse subtracts: the force at rest, and the
+     * still-water reference's drift where the case has one (plan.h) */
+    const char *base = l->drift ? "(rest_force + still_drift)" : "rest_force";
+    char d1[200], d2[200];
+    snprintf(d1, sizeof d1, "integral of (force - %s), raw pressure-probe force", base);
+    snprintf(d2, sizeof d2, "integral of (force - %s), boundary particles",
+             l->drift ? "(rest_force_boundary + its still_drift)" : "rest_force_boundary");
+    jval(&t, "impulse", l->impulse_total, "N s/m", d1, 0);
+    jval(&t, "impulse_boundary", c->rec.n ? l->impulse_bound[c->rec.n - 1] : NAN, "N s/m", d2, 0);
     {
-      char ph[160];
+      char ph[200];
       snprintf(ph, sizeof ph,
-               "integral of (force - rest_force) over the peak's positive phase, %.4g to %.4g s, "
+               "integral of (force - %s) over the peak's positive phase, %.4g to %.4g s, "
                "raw pressure-probe force",
-               l->impulse_peak_from, l->impulse_peak_to);
+               base, l->impulse_peak_from, l->impulse_peak_to);
       jval(&t, "impulse_positive_phase", l->impulse_peak, "N s/m", ph, 0);
     }
-    jval(&t, "impulse_positive", l->impulse_positive, "N s/m",
-         "integral of max(0, filtered force - rest_force) from peaks_from on: the push of "
-         "every wave, pressure probes", 0);
+    snprintf(d1, sizeof d1,
+             "integral of max(0, filtered force - %s) from peaks_from on: the push of every "
+             "wave, pressure probes",
+             base);
+    jval(&t, "impulse_positive", l->impulse_positive, "N s/m", d1, 0);
     jval(&t, "impulse_positive_boundary", l->impulse_positive_bound, "N s/m",
          "the same from the boundary particles", 0);
+    jval(&t, "still_reference", l->drift ? 1 : 0, "1",
+         l->drift ? "1: a still-water run of this flume gave the wall force's own drift "
+                    "(still_drift in the wall CSV), which the impulses subtract "
+                    "(run.still_reference)"
+                  : "0: no still-water reference run; the impulses subtract the force at rest "
+                    "alone",
+         0);
+    jval(&t, "still_drift_max", l->drift_max, "N/m",
+         "largest magnitude of that drift from peaks_from on (null: none)", 0);
+    jval(&t, "impulse_positive_uncorrected", l->impulse_positive_uncorrected, "N s/m",
+         "impulse_positive without the drift taken out (null: no reference run)", 0);
     jval(&t, "rest_force_spread", l->rest_force_spread, "N/m",
          "half the difference of the raw force's means over the rest window's two halves: how "
          "well the window fixes the force at rest (null: no rest window)", 0);
@@ -416,11 +434,14 @@ static enum wl_status write_csv(const struct wl_assess_result *res, const struct
   const struct wl_record *r = &c->rec;
   const struct wl_case_loads *l = &c->loads;
   struct wl_text t = {0};
+  /* still_drift: the still-water reference run's drift (plan.h) that the
+   * impulse subtracts with the force at rest; 0 without a reference */
   wl_text_put(&t, "time_s,force_N_per_m,force_filtered_N_per_m,force_boundary_N_per_m,impulse_Ns_per_m,"
-          "moment_Nm_per_m,moment_filtered_Nm_per_m\n");
+          "moment_Nm_per_m,moment_filtered_Nm_per_m,still_drift_N_per_m\n");
   for (size_t k = 0; k < r->n; k++)
-    wl_text_put(&t, "%.6f,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n", r->t[k], r->force[k], l->force_filtered[k],
-        r->force_bound[k], l->impulse[k], r->moment[k], l->moment_filtered[k]);
+    wl_text_put(&t, "%.6f,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n", r->t[k], r->force[k],
+                l->force_filtered[k], r->force_bound[k], l->impulse[k], r->moment[k],
+                l->moment_filtered[k], l->drift ? l->drift[k] : 0.0);
   char path[700];
   snprintf(path, sizeof path, "%s/%s_wall.csv", res->out_dir, c->name);
   enum wl_status st =

@@ -12,6 +12,9 @@ void case_loads_clear(struct wl_case_loads *l) {
   free(l->force_bound_filtered);
   free(l->impulse);
   free(l->impulse_bound);
+  free(l->drift);
+  free(l->drift_bound);
+  free(l->drift_moment);
   memset(l, 0, sizeof *l);
 }
 
@@ -27,11 +30,44 @@ static enum wl_status filtered(const double *x, size_t n, double dt, double fc, 
   return wl_loads_lowpass(x, n, dt, fc, *out, err);
 }
 
+/* The still-water reference run's drift (plan.h) into c->loads.drift and
+ * drift_bound: its filtered forces less its own forces at rest, sample by
+ * sample. Only a complete reference sampled at the case's times serves;
+ * otherwise none (the caution says so, case_caution). */
+static enum wl_status still_drift(struct wl_case_result *c, struct wl_error *err) {
+  const struct wl_case_result *tr = c->still;
+  struct wl_case_loads *l = &c->loads;
+  const size_t n = c->rec.n;
+  if (!tr || tr->status != WL_OK || tr->rec.n < n || !tr->loads.force_filtered ||
+      !tr->loads.force_bound_filtered || !tr->loads.moment_filtered ||
+      !isfinite(tr->loads.rest_force) || !isfinite(tr->loads.rest_force_bound) ||
+      !isfinite(tr->loads.rest_moment))
+    return WL_OK;
+  for (size_t k = 0; k < n; k++)
+    if (!(fabs(tr->rec.t[k] - c->rec.t[k]) <= 1e-9 * fmax(1.0, fabs(c->rec.t[k]))))
+      return WL_OK; /* sampled at other times: not this case's reference */
+  l->drift = malloc(n * sizeof *l->drift);
+  l->drift_bound = malloc(n * sizeof *l->drift_bound);
+  l->drift_moment = malloc(n * sizeof *l->drift_moment);
+  if (!l->drift || !l->drift_bound || !l->drift_moment) {
+    free(l->drift), free(l->drift_bound), free(l->drift_moment);
+    l->drift = l->drift_bound = l->drift_moment = NULL;
+    return wl_error_set(err, WL_ENOMEM, "loads: no memory for %zu samples", n);
+  }
+  for (size_t k = 0; k < n; k++) {
+    l->drift[k] = tr->loads.force_filtered[k] - tr->loads.rest_force;
+    l->drift_bound[k] = tr->loads.force_bound_filtered[k] - tr->loads.rest_force_bound;
+    l->drift_moment[k] = tr->loads.moment_filtered[k] - tr->loads.rest_moment;
+  }
+  return WL_OK;
+}
+
 enum wl_status case_loads_compute(struct wl_case_result *c, struct wl_error *err) {
   const struct wl_record *r = &c->rec;
   struct wl_case_loads *l = &c->loads;
   size_t n = r->n;
   l->realisations = 1;
+  l->drift_max = l->impulse_positive_uncorrected = NAN;
   if (n == 0) return WL_OK;
   double dt = n > 1 ? (r->t[n - 1] - r->t[0]) / (double)(n - 1) : 1.0;
   l->cutoff = wl_loads_cutoff(c->c0, c->depth_wall > 0 ? c->depth_wall : c->h, dt);
@@ -55,16 +91,33 @@ enum wl_status case_loads_compute(struct wl_case_result *c, struct wl_error *err
     l->rest_force = l->rest_force_bound = c->static_force;
     l->rest_moment = c->static_moment;
   }
+  if ((st = still_drift(c, err))) return st;
+  /* The filtered series less the still-water reference's drift: the wave's
+   * load on a wall whose still water stays still (plan.h). Peaks and
+   * impulses are taken from them; the raw series stay as sampled. */
+  double *unfiltered_drift = NULL;
+  if (l->drift) {
+    unfiltered_drift = malloc(n * sizeof *unfiltered_drift);
+    if (!unfiltered_drift) return wl_error_set(err, WL_ENOMEM, "loads: no memory for %zu samples", n);
+    memcpy(unfiltered_drift, l->force_filtered, n * sizeof *unfiltered_drift);
+    for (size_t k = 0; k < n; k++) {
+      l->force_filtered[k] -= l->drift[k];
+      l->force_bound_filtered[k] -= l->drift_bound[k];
+      l->moment_filtered[k] -= l->drift_moment[k];
+    }
+  }
   l->impulse = malloc(n * sizeof *l->impulse);
   l->impulse_bound = malloc(n * sizeof *l->impulse_bound);
   double *net = malloc(n * sizeof *net);
   if (!l->impulse || !l->impulse_bound || !net) {
-    free(net);
+    free(net), free(unfiltered_drift);
     return wl_error_set(err, WL_ENOMEM, "loads: no memory for %zu samples", n);
   }
-  for (size_t k = 0; k < n; k++) net[k] = r->force[k] - l->rest_force;
+  double *const ff = l->force_filtered, *const fbf = l->force_bound_filtered;
+  for (size_t k = 0; k < n; k++) net[k] = r->force[k] - l->rest_force - (l->drift ? l->drift[k] : 0.0);
   wl_loads_cumulative(r->t, net, n, l->impulse);
-  for (size_t k = 0; k < n; k++) net[k] = r->force_bound[k] - l->rest_force_bound;
+  for (size_t k = 0; k < n; k++)
+    net[k] = r->force_bound[k] - l->rest_force_bound - (l->drift ? l->drift_bound[k] : 0.0);
   wl_loads_cumulative(r->t, net, n, l->impulse_bound);
   free(net);
   l->impulse_total = l->impulse[n - 1];
@@ -78,19 +131,27 @@ enum wl_status case_loads_compute(struct wl_case_result *c, struct wl_error *err
   l->force_peak.index += k0;
   l->moment_peak.index += k0;
   l->force_bound_peak.index += k0;
-  l->impulse_peak = wl_loads_positive_phase_impulse(r->t, l->force_filtered, l->impulse, n,
-                                                    l->rest_force, l->force_peak.index,
-                                                    &l->impulse_peak_from, &l->impulse_peak_to);
+  l->impulse_peak = wl_loads_positive_phase_impulse(r->t, ff, l->impulse, n, l->rest_force,
+                                                    l->force_peak.index, &l->impulse_peak_from,
+                                                    &l->impulse_peak_to);
   /* the positive impulse of the whole event, from where peaks are searched */
-  l->impulse_positive = wl_loads_positive_impulse(r->t + k0, l->force_filtered + k0, n - k0,
-                                                  l->rest_force);
-  l->impulse_positive_bound = wl_loads_positive_impulse(r->t + k0, l->force_bound_filtered + k0,
-                                                        n - k0, l->rest_force_bound);
+  l->impulse_positive = wl_loads_positive_impulse(r->t + k0, ff + k0, n - k0, l->rest_force);
+  l->impulse_positive_bound =
+      wl_loads_positive_impulse(r->t + k0, fbf + k0, n - k0, l->rest_force_bound);
+  l->impulse_positive_uncorrected =
+      unfiltered_drift ? wl_loads_positive_impulse(r->t + k0, unfiltered_drift + k0, n - k0,
+                                                   l->rest_force)
+                       : NAN;
+  free(unfiltered_drift);
+  l->drift_max = NAN;
+  if (l->drift) {
+    l->drift_max = 0.0;
+    for (size_t k = k0; k < n; k++) l->drift_max = fmax(l->drift_max, fabs(l->drift[k]));
+  }
   l->rest_force_spread =
       l->rest_measured ? wl_loads_halves_spread(r->t, r->force, n, l->rest_from, l->rest_to) : NAN;
   l->impulse_positive_rest_error =
-      l->rest_force_spread *
-      wl_loads_time_above(r->t + k0, l->force_filtered + k0, n - k0, l->rest_force);
+      l->rest_force_spread * wl_loads_time_above(r->t + k0, ff + k0, n - k0, l->rest_force);
   /* run-up: the last gauge is the one at the wall face */
   int gw = r->n_gauges - 1;
   l->runup = -INFINITY;

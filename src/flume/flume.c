@@ -196,14 +196,14 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
     rise = ps->wave.H;
     x_left = ps->paddle ? 0.0 : ps->x_left;
     f->has_paddle = ps->paddle;
-    if (!ps->paddle) {
+    if (!ps->paddle && !plan->still_flume) { /* still_flume: still water (plan.h) */
       surf.wave = &ps->wave;
       surf.crest_x = ps->crest_x0;
     }
     f->t_end = ps->end_time;
   } else if (load == WL_CASE_EXPLOSION) {
     surf.shape = px->model_thrown ? WL_CRATER_SHAPE_QUADRATIC : px->shape;
-    surf.eta0 = px->eta0;
+    surf.eta0 = plan->still_flume ? 0.0 : px->eta0; /* still_flume: no crater */
     surf.r0 = px->r0;
     surf.xc = px->x_center;
     /* 3D: the plane shapes are long-crested, the others axisymmetric */
@@ -250,11 +250,12 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
       wl_error_prefix(err, "%s: loads.explosion (thrown mass): ", s->path);
       return st;
     }
-    n_parts = px->thrown_parts;
-    for (int i = 0; i < n_parts; i++) {
+    for (int i = 0; i < px->thrown_parts; i++) {
       double top = parts[i].z + 0.5 * parts[i].height + parts[i].w * parts[i].w / (2 * plan->g);
       if (top > thrown_top) thrown_top = top;
     }
+    /* the domain as the case's; still_flume lays no thrown mass */
+    n_parts = plan->still_flume ? 0 : px->thrown_parts;
   }
 
   /* the case's largest depth, which sets c0: the plan's (plan.h) */
@@ -408,7 +409,7 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
     for (int i = 0; i < f->n_paddle; i++) {
       double t = g->duration * i / (f->n_paddle - 1);
       f->paddle_t[i] = t;
-      f->paddle_x[i] = wl_waves_goring_position(g, t);
+      f->paddle_x[i] = plan->still_flume ? 0.0 : wl_waves_goring_position(g, t);
     }
   }
 

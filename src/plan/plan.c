@@ -913,12 +913,16 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
     p->dt = cfl * p->h_sml / p->c0;
   }
   long n_max = 0;
+  /* the still-water reference runs (plan.h): a case's cost once more */
+  const enum wl_still_reference_choice still = s->run.still_reference.choice;
+  p->solitary.still_reference = p->solitary.present && still == WL_STILL_REF_ON;
+  p->explosion.still_reference = p->explosion.present && still != WL_STILL_REF_OFF;
   if (p->solitary.present) {
     struct wl_plan_solitary *ps = &p->solitary;
     if (!s->run.end_time.is_auto) ps->end_time = s->run.end_time.q.si;
     case_cost(s, p, ps->refine, ps->x_left, ps->end_time, ps->wave.H, ps->dt, &ps->n_fluid, &ps->n_boundary,
               &ps->particle_steps);
-    p->particle_steps += ps->particle_steps;
+    p->particle_steps += ps->particle_steps * (1 + ps->still_reference);
     if (ps->n_fluid + ps->n_boundary > n_max) n_max = ps->n_fluid + ps->n_boundary;
     p->n_fluid = ps->n_fluid, p->n_boundary = ps->n_boundary;
   }
@@ -927,7 +931,7 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
     if (!s->run.end_time.is_auto) px->end_time = s->run.end_time.q.si;
     case_cost(s, p, px->refine, px->x_left, px->end_time, 2.0 * px->eta0, px->dt, &px->n_fluid,
               &px->n_boundary, &px->particle_steps);
-    p->particle_steps += px->particle_steps;
+    p->particle_steps += px->particle_steps * (1 + px->still_reference);
     if (px->n_fluid + px->n_boundary > n_max)
       n_max = px->n_fluid + px->n_boundary, p->n_fluid = px->n_fluid, p->n_boundary = px->n_boundary;
   }
@@ -989,22 +993,30 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
   p->gpu_work_seconds = 0;
   if (p->solitary.present) {
     const double work = p->solitary.particle_steps * p->evals_per_step / gpu_rate;
+    p->gpu_case_still[p->n_cases] = p->solitary.still_reference;
     cases[p->n_cases++] = (struct wl_plan_cost){
         .gpu_seconds = fmax(p->solitary.end_time / p->solitary.dt * gpu_step, work),
         .gpu_work_seconds = work};
   }
   if (p->explosion.present) {
     const double work = p->explosion.particle_steps * p->evals_per_step / gpu_rate;
+    p->gpu_case_still[p->n_cases] = p->explosion.still_reference;
     cases[p->n_cases++] = (struct wl_plan_cost){
         .gpu_seconds = fmax(p->explosion.end_time / p->explosion.dt * gpu_step, work),
         .gpu_work_seconds = work};
   }
+  /* a case's still-water reference runs beside it on a GPU: one run more */
+  struct wl_plan_cost runs[4];
+  int n_runs = 0;
   for (int i = 0; i < p->n_cases; i++) {
     p->gpu_case_seconds[i] = cases[i].gpu_seconds;
     p->gpu_case_work_seconds[i] = cases[i].gpu_work_seconds;
-    p->gpu_work_seconds += cases[i].gpu_work_seconds;
+    for (int r = 0; r <= p->gpu_case_still[i]; r++) {
+      runs[n_runs++] = cases[i];
+      p->gpu_work_seconds += cases[i].gpu_work_seconds;
+    }
   }
-  p->gpu_seconds = wl_plan_gpu_side_by_side(cases, p->n_cases, p->n_cases);
+  p->gpu_seconds = wl_plan_gpu_side_by_side(runs, n_runs, n_runs);
   return WL_OK;
 }
 
@@ -1024,7 +1036,7 @@ enum wl_status wl_plan_ladder_cost(const struct wl_scenario *s, const struct wl_
   struct wl_scenario *sl = malloc(sizeof *sl);
   struct wl_plan *pl = malloc(sizeof *pl);
   struct wl_plan_cost sum = {plan->dims, 0, 0, 0, 0, 0},
-                     run[(1 + WL_SCENARIO_MAX_REALISATIONS) * WL_SCENARIO_MAX_LEVELS];
+                     run[(3 + WL_SCENARIO_MAX_REALISATIONS) * WL_SCENARIO_MAX_LEVELS];
   int n_runs = 0;
   double steps = 0.0, device_total = 0.0;
   enum wl_status st = sl && pl ? WL_OK : wl_error_set(err, WL_ENOMEM, "no memory to plan the ladder");
@@ -1041,10 +1053,10 @@ enum wl_status wl_plan_ladder_cost(const struct wl_scenario *s, const struct wl_
       break;
     }
     /* a level's cases, each a run; the explosion (the last case) once per
-     * realisation */
+     * realisation, its still-water reference with the first */
     const int n_real = pl->explosion.present ? pl->realisations : 1;
     for (int c = 0; c < pl->n_cases; c++)
-      for (int r = 0; r < (c == pl->n_cases - 1 ? n_real : 1); r++)
+      for (int r = 0; r < (c == pl->n_cases - 1 ? n_real : 1) + pl->gpu_case_still[c]; r++)
         run[n_runs++] = (struct wl_plan_cost){.gpu_seconds = pl->gpu_case_seconds[c],
                                               .gpu_work_seconds = pl->gpu_case_work_seconds[c]};
     const double extra = pl->particle_steps > 0 && n_real > 1
@@ -1206,6 +1218,10 @@ void wl_plan_write(const struct wl_plan *p, FILE *out) {
     fprintf(out, "    %-34s %12.5g s\n", "end time", ps->end_time);
     fprintf(out, "    %-34s %12.5g m      (%ld fluid + %ld boundary particles, %.3g particle-steps)\n",
             "flume modelled from x", ps->x_left, ps->n_fluid, ps->n_boundary, ps->particle_steps);
+    if (ps->still_reference)
+      fprintf(out, "    %-34s %s\n", "still-water reference run",
+              "yes: the flume again without the wave, to take its wall force's drift out of "
+              "the impulses (run.still_reference)");
   }
   if (p->explosion.present) {
     const struct wl_plan_explosion *px = &p->explosion;
@@ -1257,6 +1273,10 @@ void wl_plan_write(const struct wl_plan *p, FILE *out) {
     fprintf(out, "    %-34s %12.5g s\n", "end time", px->end_time);
     fprintf(out, "    %-34s %12.5g m      (%ld fluid + %ld boundary particles, %.3g particle-steps)\n",
             "flume modelled from x", px->x_left, px->n_fluid, px->n_boundary, px->particle_steps);
+    if (px->still_reference)
+      fprintf(out, "    %-34s %s\n", "still-water reference run",
+              "yes: the flume again without the wave, to take its wall force's drift out of "
+              "the impulses (run.still_reference)");
   }
   fprintf(out, "\nResolution and cost\n");
   fprintf(out, "  %-36s %dD          (%s)\n", "dimension", p->dims, p->dims_reason);

@@ -29,6 +29,7 @@ static const char *const integrator_choices[] = {"symplectic", "verlet", NULL};
 static const char *const far_end_choices[] = {"wall", "damping", NULL};
 static const char *const symmetry_choices[] = {"auto", "none", "centreline", NULL};
 static const char *const side_wall_choices[] = {"free-slip", "particles", NULL};
+static const char *const still_reference_choices[] = {"auto", "on", "off", NULL};
 
 /* Ranges are in SI. lo_open/hi_open: the bound itself is excluded. */
 
@@ -162,6 +163,11 @@ static const struct wl_key run_keys[] = {
      NULL, NO_FLAG, 0, "where the solver runs"},
     {"threads", KT_INT_OR_AUTO, WL_DIM_NONE, OFF(run.threads), NULL, 1, 4096, 0, 0, "auto", NULL,
      NO_FLAG, 0, "CPU threads, or auto (all cores, at most one per 4000 particles)"},
+    {"still_reference", KT_ENUM, WL_DIM_NONE, OFF(run.still_reference), still_reference_choices,
+     NONE, NONE, 0, 0, "auto", NULL, NO_FLAG, 0,
+     "run each case's flume once more with still water and take the wall force's drift in it "
+     "out of the impulses (on, off, or auto: the explosion's case, whose load is a small part of "
+     "the force at rest over a long record)"},
     {0}};
 
 static const struct wl_key numerics_keys[] = {

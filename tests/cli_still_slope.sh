@@ -1,0 +1,110 @@
+#!/usr/bin/env bash
+# Still water over a slope stays still at the seawall behind it, and the
+# still-water reference run measures what is left (run.still_reference;
+# plan.h, docs/outputs.md). The reference is physics, not this code: water
+# at rest exerts rho g d^2/2 on the wall and stands level, forever.
+#
+# The flume: 0.2 m of water, a 1:5 slope from x = 1 m up to a platform 0.05 m
+# deep, a seawall at 2.25 m; dp = 0.0125 m (16 rows offshore, 4 at the wall).
+# The only load is a crater of 1 mm (eta0) at x = 0.3 m, far too small to
+# reach the wall within the run; its still-water reference is the same flume
+# with no crater at all. 2.5 s, two threads.
+#
+# Checked:
+#  - the reference's wall force stays within 6 % of its force at rest
+#    (still_drift_max), and the water at the wall (the wall gauge of the
+#    case, whose crater is negligible) within 2 mm (4 % of the depth) of
+#    still water. The fluid laid as one lattice of rows, which over the
+#    slope left a void of up to a spacing between each column and the bed,
+#    ran a current up the slope along the bed and read 14 % and 3.1 mm here
+#    (2026-11-28; the column laid on the bed instead: 3.6 % and 1.4 mm);
+#  - the wall CSV's filtered force is the case's less the reference's drift
+#    (the still_drift column), and summary.json's impulse_positive_uncorrected
+#    is the positive impulse of the filtered force with the drift put back,
+#    recomputed here from the CSV;
+#  - with still_reference: off the case's own run is the same (its raw wall
+#    force to the digit) and no drift is subtracted.
+set -u
+bin=$1
+fail=0
+ok() { echo "PASS $1"; }
+bad() { echo "FAIL $1"; fail=$((fail+1)); }
+command -v python3 >/dev/null 2>&1 || { echo "SKIP python3 not installed"; exit 77; }
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+cat > slope.yaml <<'YAML'
+scenario: slope
+water: {depth: 0.2 m}
+domain: {length: 2.5 m, dimensions: 2}
+bathymetry:
+  - {from: 1.0 m, slope: 1/5}
+  - {from: 1.75 m, slope: 0}
+wall: {x: 2.25 m, height: 0.15 m, probes: 10}
+gauges: [{name: G1, x: 2.2 m}]
+loads:
+  explosion: {eta0: 0.001 m, r0: 0.02 m, shape: quadratic-lip, at: 0.3 m}
+resolution: {dp: 0.0125 m}
+run: {end_time: 2.5 s, still_reference: on}
+YAML
+sed 's/still_reference: on/still_reference: off/' slope.yaml > off.yaml
+"$bin" assess slope.yaml -o on --threads 2 --backend cpu >on.txt 2>on.err \
+  && ok "assess with the still-water reference (exit 0)" || { bad "assess: $(cat on.err)"; exit $fail; }
+grep -q "explosion, still water" on.err && ok "progress names the reference run" \
+  || bad "no progress line of the reference run: $(cat on.err)"
+"$bin" assess off.yaml -o off --threads 2 --backend cpu --quiet >/dev/null 2>off.err \
+  || bad "assess without the reference: $(cat off.err)"
+python3 - <<'PY' || fail=$((fail+1))
+import csv, json, sys
+fails = 0
+def report(cond, what):
+    global fails
+    print(("PASS " if cond else "FAIL ") + what)
+    fails += 0 if cond else 1
+on = json.load(open('on/summary.json'))['cases']['explosion']
+off = json.load(open('off/summary.json'))['cases']['explosion']
+rest = on['rest_force']['value']
+drift = on['still_drift_max']['value']
+report(on['still_reference']['value'] == 1 and off['still_reference']['value'] == 0,
+       "summary.json says which run had the reference")
+report(drift < 0.06 * rest,
+       "still water's wall force stays within 6 %% of its force at rest: drift %.3g N/m (%.2g %%)"
+       % (drift, 100 * drift / rest))
+g = list(csv.DictReader(open('on/explosion_gauges.csv')))
+eta = max(abs(float(r['eta_wall_m'])) for r in g)
+report(eta < 0.002, "the water at the wall stays within 2 mm of still water: %.2f mm" % (1000 * eta))
+rows = list(csv.DictReader(open('on/explosion_wall.csv')))
+rows_off = list(csv.DictReader(open('off/explosion_wall.csv')))
+report(len(rows) == len(rows_off) and all(a['force_N_per_m'] == b['force_N_per_m']
+                                           for a, b in zip(rows, rows_off)),
+       "the case's raw wall force is the same with and without the reference")
+report(all(float(r['still_drift_N_per_m']) == 0.0 for r in rows_off), "off: no drift column values")
+# the CSV holds 6 significant digits: compare the filtered forces to that
+ff_on = [float(r['force_filtered_N_per_m']) + float(r['still_drift_N_per_m']) for r in rows]
+ff_off = [float(r['force_filtered_N_per_m']) for r in rows_off]
+report(max(abs(a - b) for a, b in zip(ff_on, ff_off)) < 2e-5 * rest,
+       "the stored filtered force is the case's less the drift")
+t = [float(r['time_s']) for r in rows]
+t0 = on['peaks_from']['value']
+def positive(ff):  # trapezoids of max(0, ff - rest), the crossing intervals split exactly
+    s = 0.0
+    for k in range(len(t) - 1):
+        if t[k] < t0: continue
+        a, b = ff[k] - rest, ff[k + 1] - rest
+        dt = t[k + 1] - t[k]
+        if a >= 0 and b >= 0: s += 0.5 * (a + b) * dt
+        elif a > 0: s += 0.5 * a * dt * a / (a - b)
+        elif b > 0: s += 0.5 * b * dt * b / (b - a)
+    return s
+u = on['impulse_positive_uncorrected']['value']
+report(abs(positive(ff_on) - u) <= 1e-3 * max(abs(u), 1e-3),
+       "impulse_positive_uncorrected %.5g = the positive impulse with the drift put back (%.5g)"
+       % (u, positive(ff_on)))
+c = on['impulse_positive']['value']
+ff_c = [float(r['force_filtered_N_per_m']) for r in rows]
+report(abs(positive(ff_c) - c) <= 1e-3 * max(abs(c), 1e-3),
+       "impulse_positive %.5g = the positive impulse of the stored (corrected) force (%.5g)"
+       % (c, positive(ff_c)))
+sys.exit(1 if fails else 0)
+PY
+exit $fail
