@@ -30,22 +30,26 @@ static enum wl_status filtered(const double *x, size_t n, double dt, double fc, 
   return wl_loads_lowpass(x, n, dt, fc, *out, err);
 }
 
-/* The still-water reference run's drift (plan.h) into c->loads.drift and
- * drift_bound: its filtered forces less its own forces at rest, sample by
- * sample. Only a complete reference sampled at the case's times serves;
+/* The still-water reference run's drift (plan.h) into c->loads.drift,
+ * drift_bound and drift_moment: its filtered series less its own values at
+ * rest, at the case's sample times (linear between the reference's
+ * samples, which are the case's but for the last: a realisation's crater
+ * moves its planned end time by a fraction of a sample). Only a complete
+ * reference that reaches within one sample of the case's end serves;
  * otherwise none (the caution says so, case_caution). */
 static enum wl_status still_drift(struct wl_case_result *c, struct wl_error *err) {
   const struct wl_case_result *tr = c->still;
   struct wl_case_loads *l = &c->loads;
-  const size_t n = c->rec.n;
-  if (!tr || tr->status != WL_OK || tr->rec.n < n || !tr->loads.force_filtered ||
+  const size_t n = c->rec.n, m = tr ? tr->rec.n : 0;
+  if (!tr || tr->status != WL_OK || m < 2 || n < 2 || !tr->loads.force_filtered ||
       !tr->loads.force_bound_filtered || !tr->loads.moment_filtered ||
       !isfinite(tr->loads.rest_force) || !isfinite(tr->loads.rest_force_bound) ||
       !isfinite(tr->loads.rest_moment))
     return WL_OK;
-  for (size_t k = 0; k < n; k++)
-    if (!(fabs(tr->rec.t[k] - c->rec.t[k]) <= 1e-9 * fmax(1.0, fabs(c->rec.t[k]))))
-      return WL_OK; /* sampled at other times: not this case's reference */
+  const double *tt = tr->rec.t, *t = c->rec.t;
+  const double dt = (t[n - 1] - t[0]) / (double)(n - 1);
+  if (tt[0] > t[0] + 1e-9 * dt || tt[m - 1] < t[n - 1] - dt * (1.0 + 1e-9))
+    return WL_OK; /* it does not cover the case's record */
   l->drift = malloc(n * sizeof *l->drift);
   l->drift_bound = malloc(n * sizeof *l->drift_bound);
   l->drift_moment = malloc(n * sizeof *l->drift_moment);
@@ -54,10 +58,17 @@ static enum wl_status still_drift(struct wl_case_result *c, struct wl_error *err
     l->drift = l->drift_bound = l->drift_moment = NULL;
     return wl_error_set(err, WL_ENOMEM, "loads: no memory for %zu samples", n);
   }
+  const struct wl_case_loads *rl = &tr->loads;
+  size_t j = 0;
   for (size_t k = 0; k < n; k++) {
-    l->drift[k] = tr->loads.force_filtered[k] - tr->loads.rest_force;
-    l->drift_bound[k] = tr->loads.force_bound_filtered[k] - tr->loads.rest_force_bound;
-    l->drift_moment[k] = tr->loads.moment_filtered[k] - tr->loads.rest_moment;
+    while (j + 2 < m && tt[j + 1] < t[k]) j++;
+    double w = (t[k] - tt[j]) / (tt[j + 1] - tt[j]);
+    w = w < 0.0 ? 0.0 : w > 1.0 ? 1.0 : w; /* held beyond its ends */
+    l->drift[k] = (1.0 - w) * rl->force_filtered[j] + w * rl->force_filtered[j + 1] - rl->rest_force;
+    l->drift_bound[k] = (1.0 - w) * rl->force_bound_filtered[j] +
+                        w * rl->force_bound_filtered[j + 1] - rl->rest_force_bound;
+    l->drift_moment[k] = (1.0 - w) * rl->moment_filtered[j] + w * rl->moment_filtered[j + 1] -
+                         rl->rest_moment;
   }
   return WL_OK;
 }
