@@ -115,4 +115,10 @@ report(abs(positive(ff_c) - c) <= 1e-3 * max(abs(c), 1e-3),
        % (c, positive(ff_c)))
 sys.exit(1 if fails else 0)
 PY
+if command -v pdftotext >/dev/null 2>&1; then
+  pdftotext on/report.pdf - 2>/dev/null | tr '\n' ' ' | grep -q "less the drift of the model's still water" \
+    && ok "the report says what the reference took out" || bad "the report does not name the still-water reference"
+else
+  echo "SKIP (one check) pdftotext not installed: the report's text is not read"
+fi
 exit $fail

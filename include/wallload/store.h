@@ -244,6 +244,10 @@ struct wl_results_case {
   double impulse_positive, impulse_positive_b; /* probes, boundary particles (loads.h) [N s/m] */
   double impulse_peak_from, impulse_peak_to;   /* that phase [s] */
   double runup, runup_time; /* max eta of the wall gauge [m], when [s] */
+  /* the still-water reference run (assess.h wl_case_loads): its drift's
+   * largest magnitude [N/m] and the positive impulse with the drift left
+   * in [N s/m]; NaN (not stored) without one */
+  double still_drift_max, impulse_positive_uncorrected;
 };
 
 /* The convergence ladder of one case under /convergence/NAME (definitions

@@ -496,6 +496,8 @@ static enum wl_status case_columns(const struct wl_case_result *c, struct wl_res
     out->impulse_peak_from = l->impulse_peak_from, out->impulse_peak_to = l->impulse_peak_to;
     out->impulse_positive = l->impulse_positive;
     out->impulse_positive_b = l->impulse_positive_bound;
+    out->still_drift_max = l->drift_max;
+    out->impulse_positive_uncorrected = l->impulse_positive_uncorrected;
     if (isfinite(l->runup)) /* a wall gauge that never read water: no run-up */
       out->runup = l->runup, out->runup_time = l->runup_time;
   }

@@ -244,6 +244,21 @@ static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
                                     : ", above the target");
   }
   /* realisations (resolution.realisations): the finest level's spread */
+  /* the still-water reference (run.still_reference): what it took out */
+  for (int i = 0; i < WL_RESULTS_N_CASES; i++) {
+    const struct wl_results_case *ci = &r->cases[i];
+    if (!ci->present || !(ci->still_drift_max > 0) || !isfinite(ci->impulse_positive_uncorrected))
+      continue;
+    char dm[64], rs[64], iu[64];
+    wl_report_fmt(ci->still_drift_max / KILO, dg, dm, sizeof dm);
+    wl_report_fmt(100.0 * ci->still_drift_max / fabs(ci->rest_force), SHARE_DIGITS, rs, sizeof rs);
+    wl_report_fmt(ci->impulse_positive_uncorrected / KILO, dg, iu, sizeof iu);
+    put(&b,
+        "The %s case's loads are the wave's less the drift of the model's still water at the "
+        "wall, read from a run of the same flume without the wave (up to %s kN/m, %s %% of the "
+        "force at rest); with it left in, the positive impulse would read %s kN s/m. ",
+        wl_store_results_case_name(i), dm, rs, iu);
+  }
   for (int i = 0; i < WL_RESULTS_N_CASES; i++) {
     const struct wl_results_convergence *cv = &r->conv[i];
     if (!cv->present || cv->n_levels < 1)

@@ -116,6 +116,9 @@ static const struct key CASE_KEYS[] = {
     KD(wl_results_case, impulse_positive_b, "impulse_positive_boundary", "N s/m", KEY_LOADS),
     KD(wl_results_case, runup, "max_runup", "m", KEY_LOADS),
     KD(wl_results_case, runup_time, "max_runup_time", "s", KEY_LOADS),
+    KD(wl_results_case, still_drift_max, "still_drift_max", "N/m", KEY_WHEN_SET),
+    KD(wl_results_case, impulse_positive_uncorrected, "impulse_positive_uncorrected", "N s/m",
+       KEY_WHEN_SET),
     KT(wl_results_case, status, "status", KEY_REQUIRED),
     KT(wl_results_case, caution, "caution", KEY_WHEN_SET),
 };
@@ -128,7 +131,8 @@ struct series {
 #define SER(m, name, unit, desc) {name, unit, desc, offsetof(struct wl_results_case, m)}
 static const struct series CASE_SERIES[] = {
     SER(force, "wall/force", "N/m", "force per metre from the pressure probes (raw)"),
-    SER(force_f, "wall/force_filtered", "N/m", "low-pass filtered force (see cutoff)"),
+    SER(force_f, "wall/force_filtered", "N/m",
+        "low-pass filtered force (see cutoff), less the still-water drift where there is one"),
     SER(force_b, "wall/force_boundary", "N/m",
         "force per metre summed on the wall's boundary particles (raw)"),
     SER(force_bf, "wall/force_boundary_filtered", "N/m", "low-pass filtered"),
