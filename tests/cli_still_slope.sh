@@ -23,7 +23,9 @@
 #    is the positive impulse of the filtered force with the drift put back,
 #    recomputed here from the CSV;
 #  - with still_reference: off the case's own run is the same (its raw wall
-#    force to the digit) and no drift is subtracted.
+#    force to the digit) and no drift is subtracted;
+#  - results.h5 stores the drift (wall/still_drift, read with the
+#    h5_series_equal helper) as the CSV shows it, and not without a reference.
 # Under the sanitizers (WL_TEST_QUICK) 0.5 s and the bookkeeping only: the
 # physics bars are the Release build's (the run took 3 minutes there).
 set -u
@@ -115,6 +117,26 @@ report(abs(positive(ff_c) - c) <= 1e-3 * max(abs(c), 1e-3),
        % (c, positive(ff_c)))
 sys.exit(1 if fails else 0)
 PY
+cmp_h5=${WL_H5_SERIES_EQUAL:-$(dirname "$bin")/tests/h5_series_equal}
+if [ -x "$cmp_h5" ]; then
+  if "$cmp_h5" --print on/results.h5 cases/explosion/wall/still_drift > drift_h5.txt; then
+    python3 - <<'PY' && ok "results.h5 holds the drift the wall CSV shows (wall/still_drift)" \
+      || bad "results.h5's wall/still_drift is not the CSV's still_drift column"
+import csv, sys
+h5 = [float(x) for x in open('drift_h5.txt')]
+csv_d = [float(r['still_drift_N_per_m']) for r in csv.DictReader(open('on/explosion_wall.csv'))]
+sys.exit(0 if len(h5) == len(csv_d) and len(h5) > 1 and
+         all(abs(a - b) <= 1e-5 * max(abs(a), 1e-3) for a, b in zip(h5, csv_d)) else 1)
+PY
+  else
+    bad "results.h5 has no wall/still_drift for the case with a reference"
+  fi
+  "$cmp_h5" --print off/results.h5 cases/explosion/wall/still_drift >/dev/null 2>&1 \
+    && bad "results.h5 holds a wall/still_drift without a reference run" \
+    || ok "without a reference run results.h5 holds no wall/still_drift"
+else
+  echo "SKIP (two checks) no h5_series_equal helper at $cmp_h5"
+fi
 if command -v pdftotext >/dev/null 2>&1; then
   pdftotext on/report.pdf - 2>/dev/null | tr '\n' ' ' | grep -q "less the drift of the model's still water" \
     && ok "the report says what the reference took out" || bad "the report does not name the still-water reference"

@@ -4,7 +4,11 @@
  * usage: h5_series_equal A.h5 B.h5 DATASET...
  * Reads each DATASET (doubles) from both files and compares the bytes:
  * prints one PASS or FAIL line per dataset; exit 0 when all are equal, 1
- * when one differs or cannot be read. */
+ * when one differs or cannot be read.
+ *
+ * usage: h5_series_equal --print FILE.h5 DATASET
+ * Prints the dataset's doubles one a line (%.17g) for a test script to
+ * compare with another output; exit 1 when it cannot be read (absent). */
 #include <hdf5.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -37,10 +41,19 @@ static double *read_all(const char *file, const char *name, size_t *n) {
 
 int main(int argc, char **argv) {
   if (argc < 4) {
-    fprintf(stderr, "usage: h5_series_equal A.h5 B.h5 DATASET...\n");
+    fprintf(stderr, "usage: h5_series_equal A.h5 B.h5 DATASET...\n"
+                    "       h5_series_equal --print FILE.h5 DATASET\n");
     return 2;
   }
   H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+  if (strcmp(argv[1], "--print") == 0) {
+    size_t n;
+    double *v = read_all(argv[2], argv[3], &n);
+    if (!v) return 1;
+    for (size_t i = 0; i < n; i++) printf("%.17g\n", v[i]);
+    free(v);
+    return 0;
+  }
   int fail = 0;
   for (int k = 3; k < argc; k++) {
     size_t na, nb;

@@ -222,6 +222,7 @@ struct wl_results_case {
   double *force, *force_f, *force_b, *force_bf; /* probes raw, filtered; boundary raw,
                                                    filtered [N/m] */
   double *impulse, *impulse_b;          /* [N s/m] */
+  double *still_drift; /* the still-water reference's force drift [N/m]; NULL: none */
   double *moment, *moment_f, *moment_b; /* [N m/m] */
   double *kinetic, *potential;          /* [J/m] */
   double *momentum;                     /* fluid horizontal momentum [N s/m] */

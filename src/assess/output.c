@@ -261,10 +261,13 @@ static enum wl_status write_summary(const struct wl_scenario *s, const struct wl
       jstr(&t, c->caution);
     }
     wl_text_put(&t, ",\n");
-    char filt[96];
-    snprintf(filt, sizeof filt, "pressure probes, low-pass %.4g Hz", l->cutoff);
-    char filt_b[96];
-    snprintf(filt_b, sizeof filt_b, "boundary particles, low-pass %.4g Hz", l->cutoff);
+    /* with a still-water reference the filtered series the peaks come
+     * from are the case's less the reference's drift (record.c) */
+    const char *less = l->drift ? ", less the still water's drift (still_drift)" : "";
+    char filt[160];
+    snprintf(filt, sizeof filt, "pressure probes, low-pass %.4g Hz%s", l->cutoff, less);
+    char filt_b[160];
+    snprintf(filt_b, sizeof filt_b, "boundary particles, low-pass %.4g Hz%s", l->cutoff, less);
     jval(&t, "realisations", l->realisations > 1 ? l->realisations : 1, "1",
          l->realisations > 1 ? "runs of the finest level whose mean every scalar load here is "
                                "(resolution.realisations); the series, the peaks' times and the "
@@ -512,6 +515,7 @@ static enum wl_status case_columns(const struct wl_case_result *c, struct wl_res
   out->force = r->force, out->force_f = l->force_filtered;
   out->force_b = r->force_bound, out->force_bf = l->force_bound_filtered;
   out->impulse = l->impulse, out->impulse_b = l->impulse_bound;
+  out->still_drift = l->drift;
   out->moment = r->moment, out->moment_f = l->moment_filtered, out->moment_b = r->moment_bound;
   out->kinetic = r->kinetic, out->potential = r->potential, out->momentum = r->momentum;
   out->n_probes = (size_t)r->n_probes;

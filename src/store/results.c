@@ -139,6 +139,9 @@ static const struct series CASE_SERIES[] = {
     SER(impulse, "wall/impulse", "N s/m", "integral of (probe force - static force) dt"),
     SER(impulse_b, "wall/impulse_boundary", "N s/m",
         "integral of (boundary force - static force) dt"),
+    SER(still_drift, "wall/still_drift", "N/m",
+        "the still-water reference run's filtered force less its force at rest, which "
+        "force_filtered and the impulses have had taken out (absent: no reference run)"),
     SER(moment, "wall/moment", "N m/m", "overturning moment about the toe (raw)"),
     SER(moment_b, "wall/moment_boundary", "N m/m",
         "moment about the toe of the boundary-particle force (raw)"),
@@ -511,10 +514,11 @@ enum wl_status wl_store_results_write_case(struct wl_store *h5, const struct wl_
   char g[96], p[256];
   snprintf(g, sizeof g, "cases/%s", c->name);
   enum wl_status st = write_series(h5, g, &TIME, c->t, c->n, err);
-  for (size_t i = 0; !st && i < N_CASE_SERIES; i++)
-    st = write_series(h5, g, &CASE_SERIES[i],
-                      *(double *const *)(const void *)((const char *)c + CASE_SERIES[i].offset),
-                      c->n, err);
+  for (size_t i = 0; !st && i < N_CASE_SERIES; i++) {
+    const double *data = *(double *const *)(const void *)((const char *)c + CASE_SERIES[i].offset);
+    if (data) /* a series the case does not have (still_drift) is absent */
+      st = write_series(h5, g, &CASE_SERIES[i], data, c->n, err);
+  }
   if (!st) {
     snprintf(p, sizeof p, "%s/%s", g, PRESSURE.name);
     st = wl_store_write_matrix(h5, p, c->pressure, c->n, c->n_probes, PRESSURE.unit,
