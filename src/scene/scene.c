@@ -78,26 +78,41 @@ static int lattice(double a, double b, double dp, double *first) {
   return n > 0 ? (int)n : 0;
 }
 
-/* Hydrostatic column of n particles whose bottom face is z_base [m], with an
- * overburden p_top [Pa] on its top face: particle k (0 = lowest) carries the
- * weight of the particles above it, p_k = p_top + rho0 g dp (n - k - 1/2)
- * (2D: its mass per unit width is rho0 dp^2 on a width dp; 3D alike), gets
- * the Tait density of that pressure, and the column is stacked with layer
- * thicknesses dp rho0/rho_k, so that every particle's volume m/rho equals the
- * space it fills. A uniform lattice with hydrostatic densities (GenCase's
- * way) overstates the SPH pressure at the bed by about the compression,
- * 1 % at coefsound 10 (test_sph_tank); this does not. Writes z[k], rho[k]. */
-static void hydro_column(const struct wl_sph_const *k, int n, double z_base, double p_top,
-                         double *z, double *rho) {
+/* Hydrostatic column of n particles of width `width` [m] (dp on a lattice)
+ * whose bottom face is z_base [m], with an overburden p_top [Pa] on its top
+ * face: particle k (0 = lowest) carries the weight of the particles above
+ * it, p_k = p_top + g w (n - k - 1/2) with w = rho0 dp^2 / width its mass
+ * per unit area (2D: rho0 dp^2 per unit length on a width; 3D alike, the
+ * other horizontal spacing dp), gets the Tait density of that pressure, and
+ * the column is stacked with layer thicknesses w / rho_k, so that every
+ * particle's volume m/rho equals the space it fills. A uniform lattice with
+ * hydrostatic densities (GenCase's way) overstates the SPH pressure at the
+ * bed by about the compression, 1 % at coefsound 10 (test_sph_tank); this
+ * does not. Writes z[k], rho[k]; returns the column's height. */
+static double hydro_column(const struct wl_sph_const *k, int n, double z_base, double p_top,
+                           double width, double *z, double *rho) {
   const double dp = k->dp, rho0 = k->rho0, g = -(double)k->gravity[k->dim - 1];
+  const double w = rho0 * dp * dp / width;
   double zf = z_base;
   for (int i = 0; i < n; i++) {
-    const double p = p_top + rho0 * g * dp * (n - i - 0.5);
+    const double p = p_top + g * w * (n - i - 0.5);
     rho[i] = wl_sph_eos_rho_of_p(rho0, k->B, p);
-    const double t = dp * rho0 / rho[i];
-    z[i] = zf + 0.5 * t;
+    const double t = w / rho[i];
+    if (z) z[i] = zf + 0.5 * t;
     zf += t;
   }
+  return zf - z_base;
+}
+
+/* The width [m] of a free-surface column of n particles whose height is n
+ * dp (hydro_column; rho scratch of n): compressed water is denser at depth,
+ * so the column is a little narrower than dp and holds the mass of n dp of
+ * compressed water. Fixed point of width = width * height / (n dp). */
+static double column_width(const struct wl_sph_const *k, int n, double *rho) {
+  double width = k->dp;
+  for (int it = 0; it < 4; it++)
+    width *= hydro_column(k, n, 0.0, 0.0, width, NULL, rho) / (n * k->dp);
+  return width;
 }
 
 enum wl_status wl_scene_fluid_block(struct wl_scene *sc, const double *lo, const double *hi,
@@ -122,7 +137,7 @@ enum wl_status wl_scene_fluid_block(struct wl_scene *sc, const double *lo, const
   double *rc = zc + nz;
   const double g = -(double)k->gravity[dim - 1];
   const double over = eta > hi[dim - 1] ? k->rho0 * g * (eta - hi[dim - 1]) : 0;
-  hydro_column(k, nz, lo[dim - 1], over, zc, rc);
+  hydro_column(k, nz, lo[dim - 1], over, dp, zc, rc);
   double x[3];
   enum wl_status st = WL_OK;
   for (int iz = 0; iz < nz && st == WL_OK; iz++)
@@ -175,63 +190,114 @@ enum wl_status wl_scene_fluid_surface(struct wl_scene *sc, double x0, double x1,
                           "(%g after %g m)", i, bed_x[i], bed_x[i - 1]);
   if (!(x1 > x0))
     return wl_error_set(err, WL_EINPUT, "scene fluid surface: x range [%g, %g] m; need x0 < x1", x0, x1);
-  double xs, ys = 0;
-  const int nx = lattice(x0, x1, dp, &xs);
+  double ys = 0;
   int ny = 1;
   if (dim == 3) ny = lattice(sc->y0, sc->y1, dp, &ys);
-  /* per column: particles from the bed to the surface, stacked as a
-   * hydrostatic column from its bottom face (hydro_column) */
-  double x[3];
-  enum wl_status st = WL_OK;
+  /* Columns from the wall's end (x1) seaward, each a whole number of
+   * particles from the bed to the surface (column_layout), then stretched
+   * together by at most a column's width in all to fill [x0, x1]. */
+  struct column {
+    double x, width, base;
+    long count;
+  } *col = NULL;
+  int n_col = 0, cap_col = 0;
   double *zc = NULL, *rc = NULL;
   long cap = 0;
-  for (int ix = 0; ix < nx && st == WL_OK; ix++) {
-    const double px = xs + ix * dp;
-    const double e = eta(px, user);
-    const double zb = bed_at(bed_x, bed_z, n_bed, px);
-    /* The column stands on the bed: its lowest particle dp/2 from the bed
-     * (the polyline's distance: on a slope dp / (2 cos theta) above it),
-     * its top face the whole number of particles nearest the surface.
-     * Stacked on one lattice of rows instead, a column over a slope leaves
-     * a void of up to a spacing between its lowest particle and the bed,
-     * a sawtooth along the slope, and still water then ran up the slope
-     * along the bed at 0.09-0.14 m/s (a 1:5.7 slope, dp = 0.01-0.02 m)
-     * and raised the water at a seawall behind it by several mm for as
-     * long as it ran (docs/history/2026-11-28-slope-current.md). */
-    double z_first = zb + 0.5 * dp;
-    if (n_bed > 1) {
-      double lo = zb, hi = zb + 2.0 * dp;
-      while (wl_scene_polyline_dist(bed_x, bed_z, n_bed, px, hi) < 0.5 * dp && hi < zb + 64 * dp)
-        lo = hi, hi += 2.0 * dp; /* a steep bed */
-      for (int it = 0; it < 60; it++) {
-        const double mid = 0.5 * (lo + hi);
-        if (wl_scene_polyline_dist(bed_x, bed_z, n_bed, px, mid) < 0.5 * dp) lo = mid;
-        else hi = mid;
+  enum wl_status st = WL_OK;
+  double edge = x1; /* the seaward face of the columns laid so far */
+  double width = dp;
+  while (st == WL_OK && edge - x0 >= width * (1.0 - WL_SCENE_LATTICE_TOL)) {
+    if (n_col == cap_col) {
+      const int c2 = cap_col ? 2 * cap_col : 256;
+      struct column *t = realloc(col, sizeof *t * (size_t)c2);
+      if (!t) {
+        st = wl_error_set(err, WL_ENOMEM, "scene fluid surface: out of memory (%d columns)", c2);
+        break;
       }
-      z_first = hi;
+      col = t, cap_col = c2;
     }
-    const double z_base = z_first - 0.5 * dp; /* the column's bottom face */
-    const long count = lround((e - z_base) / dp - WL_SCENE_LATTICE_TOL);
-    if (count <= 0) continue;
+    struct column *c = &col[n_col];
+    for (int pass = 0; pass < 2 && st == WL_OK; pass++) { /* its centre, then its width there */
+      c->x = edge - 0.5 * width;
+      const double e = eta(c->x, user);
+      const double zb = bed_at(bed_x, bed_z, n_bed, c->x);
+      /* The column stands on the bed: its lowest particle dp/2 from the bed
+       * (the polyline's distance: on a slope dp / (2 cos theta) above it),
+       * its top face the whole number of particles nearest the surface.
+       * Stacked on one lattice of rows instead, a column over a slope leaves
+       * a void of up to a spacing between its lowest particle and the bed,
+       * a sawtooth along the slope, and still water then ran up the slope
+       * along the bed at 0.09-0.14 m/s (a 1:5.7 slope, dp = 0.01-0.02 m)
+       * and raised the water at a seawall behind it by several mm for as
+       * long as it ran (docs/history/2026-11-28-slope-current.md). */
+      double z_first = zb + 0.5 * dp;
+      if (n_bed > 1) {
+        double lo = zb, hi = zb + 2.0 * dp;
+        while (wl_scene_polyline_dist(bed_x, bed_z, n_bed, c->x, hi) < 0.5 * dp && hi < zb + 64 * dp)
+          lo = hi, hi += 2.0 * dp; /* a steep bed */
+        for (int it = 0; it < 60; it++) {
+          const double mid = 0.5 * (lo + hi);
+          if (wl_scene_polyline_dist(bed_x, bed_z, n_bed, c->x, mid) < 0.5 * dp) lo = mid;
+          else hi = mid;
+        }
+        z_first = hi;
+      }
+      c->base = z_first - 0.5 * dp; /* the column's bottom face */
+      c->count = lround((e - c->base) / dp - WL_SCENE_LATTICE_TOL);
+      if (c->count > cap) {
+        double *t = realloc(zc, sizeof(double) * 2 * (size_t)c->count);
+        if (!t) {
+          st = wl_error_set(err, WL_ENOMEM, "scene fluid surface: out of memory");
+          break;
+        }
+        zc = t, cap = c->count;
+      }
+      rc = zc + cap;
+      /* Its width: compressed water is denser at depth, so a column of
+       * count particles a spacing wide stands g D^2/(2 c0^2) below the
+       * surface it was counted to (D its depth; 1.0 mm in 0.36 m at
+       * c0 = 25 m/s, 0.03 mm in 0.06 m). Laid so, the deep flume of
+       * seawall.yaml stood 1 mm lower than its platform, which drained into
+       * it after the start, lowered the water at the wall by about 1 mm and
+       * set the flume sloshing (the wall force 4 % of its value at rest
+       * off; docs/history/2026-11-28-slope-current.md, "The level"). A
+       * column narrower by that fraction holds the compressed water to
+       * the surface, at every depth, without a particle more or less. */
+      width = c->count > 0 ? column_width(k, (int)c->count, rc) : dp;
+    }
+    c->width = width;
+    edge -= width;
+    n_col++;
+  }
+  /* What is left at x0, less than a column, stays dry (WIP: the flume's
+   * seaward end should move to the columns' face, so nothing is left;
+   * stretching the columns instead changes every column's height by the
+   * fraction left, up to 4 % in a 1 m tank at dp = 0.04 m). */
+  const double stretch = 1.0;
+  double x[3];
+  for (int i = 0; i < n_col && st == WL_OK; i++) {
+    const struct column *c = &col[i];
+    if (c->count <= 0) continue;
+    const long count = c->count;
     if (count > cap) {
       double *t = realloc(zc, sizeof(double) * 2 * (size_t)count);
       if (!t) {
         st = wl_error_set(err, WL_ENOMEM, "scene fluid surface: out of memory");
         break;
       }
-      zc = t;
-      cap = count;
+      zc = t, cap = count;
     }
-    rc = zc + count;
-    hydro_column(k, (int)count, z_base, 0, zc, rc);
-    for (long c = 0; c < count && st == WL_OK; c++)
+    rc = zc + cap;
+    hydro_column(k, (int)count, c->base, 0, c->width * stretch, zc, rc);
+    for (long m = 0; m < count && st == WL_OK; m++)
       for (int iy = 0; iy < ny && st == WL_OK; iy++) {
-        x[0] = px;
+        x[0] = x1 - (x1 - c->x) * stretch;
         if (dim == 3) x[1] = ys + iy * dp;
-        x[dim - 1] = zc[c];
-        st = wl_scene_push(sc, 1, x, rc[c], WL_KIND_FLUID, 0, err);
+        x[dim - 1] = zc[m];
+        st = wl_scene_push(sc, 1, x, rc[m], WL_KIND_FLUID, 0, err);
       }
   }
+  free(col);
   free(zc);
   return st;
 }
