@@ -61,7 +61,7 @@ int main(void) {
   const double bx[4] = {0.0, x_toe, x_top, x_end}, bz[4] = {0.0, 0.0, RISE, RISE};
   struct wl_scene sc;
   wl_scene_init(&sc, &k, 0, 0);
-  if (wl_scene_fluid_surface(&sc, 0.0, x_end, bx, bz, 4, still_eta, NULL, &err)) {
+  if (wl_scene_fluid_surface(&sc, 0.0, x_end, bx, bz, 4, DEPTH, still_eta, NULL, &err)) {
     printf("FAIL scene: %s\n", err.msg);
     return 1;
   }

@@ -222,7 +222,7 @@ static int basin_level(const struct basin *b, double dp, double x0, double x1, d
   } else if (!st) {
     const double bx[2] = {fluid_x0, fluid_x1}, bz[2] = {0, 0};
     w->rho = (double)k.rho0;
-    st = wl_scene_fluid_surface(&sc, fluid_x0, fluid_x1, bx, bz, 2, wave_eta, w, &err);
+    st = wl_scene_fluid_surface(&sc, fluid_x0, fluid_x1, bx, bz, 2, b->depth, wave_eta, w, &err);
     if (!st) {
       wl_scene_fluid_velocity(&sc, wave_vel, w);
       wl_scene_fluid_add_pressure(&sc, wave_dp, w);

@@ -73,18 +73,30 @@ enum wl_status wl_scene_fluid_block(struct wl_scene *sc, const double *lo, const
 /* Free-surface elevation eta(x) [m] for wl_scene_fluid_surface. */
 typedef double (*wl_scene_eta_fn)(double x, void *user);
 
-/* Fluid at rest for x0 < x < x1 between a piecewise-linear bed (vertices
+/* Fluid at rest from x1 toward x0 between a piecewise-linear bed (vertices
  * bed_x[i], bed_z[i], i < n_bed, bed_x increasing; [m]) and the free surface
- * eta(x): a column at each lattice x, its lowest particle dp/2 from the bed
- * (the bed is a wall face: its first boundary layer is dp/2 below; on a
- * slope the column starts dp / (2 cos theta) above it), as many particles
- * as put its top face nearest eta(x), stacked hydrostatically (see above).
- * Over a bed whose height is a whole number of rows below the surface the
- * columns end at eta exactly; over a slope their tops step by up to dp/2.
- * WL_EINPUT for bad arrays or x range; WL_ENOMEM. */
+ * eta(x), in columns laid from x1: each column's lowest particle dp/2 from
+ * the bed (the bed is a wall face: its first boundary layer is dp/2 below;
+ * on a slope the column starts dp / (2 cos theta) above it), as many
+ * particles as put its top face nearest eta(x), stacked hydrostatically
+ * (see above). Each column is as wide as makes the particles still water at
+ * `level` would give it hold compressed water exactly to that level (a
+ * little under dp: the water is denser at depth), so still water is level
+ * over beds of every depth; over a bed a whole number of rows below the
+ * level the columns end at it exactly, over a slope their tops step by up
+ * to dp/2. Whole columns are laid while they fit: less than a column next
+ * to x0 stays dry (wl_scene_fluid_columns_edge gives where they end, for
+ * a boundary there). WL_EINPUT for bad arrays or x range; WL_ENOMEM. */
 enum wl_status wl_scene_fluid_surface(struct wl_scene *sc, double x0, double x1, const double *bed_x, const double *bed_z,
-                                      int n_bed, wl_scene_eta_fn eta, void *user,
+                                      int n_bed, double level, wl_scene_eta_fn eta, void *user,
                                       struct wl_error *err);
+
+/* Where the columns of wl_scene_fluid_surface (the same arguments) end
+ * toward x0 [m]: x0 or less than a column's width from it; NAN out of
+ * memory. */
+double wl_scene_fluid_columns_edge(const struct wl_sph_const *k, double x0, double x1,
+                                   const double *bed_x, const double *bed_z, int n_bed,
+                                   double level);
 
 /* Boundary particles along the polyline (x[i], z[i]), i < n_vertices [m],
  * fluid on the left, n_layers layers (see above). kind: WL_KIND_FIXED or

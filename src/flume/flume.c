@@ -30,6 +30,21 @@ struct surface {
 static double probe_full_shepard(const struct wl_sph_const *k, int dim, double dp, double xw,
                                  double z_toe, double y, double z);
 
+/* The bed under the fluid from x0 to the wall's toe at xw, as a polyline
+ * (vertices in bx, bz, at most WL_SCENARIO_MAX_BED + 2); returns the count. */
+static int bed_polyline(const struct wl_scenario *s, double x0, double xw, double z_toe, double *bx,
+                        double *bz) {
+  int nb = 0;
+  bx[nb] = x0, bz[nb++] = wl_scenario_bed_z(s, x0);
+  for (int i = 0; i < s->n_bed; i++) {
+    double xb = s->bed[i].from.q.si;
+    if (xb <= x0 || xb >= xw) continue;
+    bx[nb] = xb, bz[nb++] = wl_scenario_bed_z(s, xb);
+  }
+  bx[nb] = xw, bz[nb++] = z_toe;
+  return nb;
+}
+
 static double surface_z(double x, void *user) {
   const struct surface *s = user;
   double eta = 0.0;
@@ -229,7 +244,7 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
    * the left wall moves there (the plan's end is a cut through the flume,
    * or the flume's own end, either way good to dp), and a paddle's rest
    * position is x_fluid (its motion is a displacement from there). */
-  const double x_fluid = xw - dp * floor((xw - x_left) / dp + 1e-9);
+  double x_fluid = xw - dp * floor((xw - x_left) / dp + 1e-9);
   if (!f->has_paddle) x_left = x_fluid;
 
   struct wl_explosion_part parts[WL_EXPLOSION_PARTS_MAX];
@@ -264,6 +279,22 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
              : load == WL_CASE_EXPLOSION ? px->h_max
                                          : depth,
              &f->cfg);
+  {
+    /* The still water's columns are a little narrower than dp (scene.h
+     * wl_scene_fluid_surface: compressed water is denser at depth), so
+     * whole columns from the wall end short of the lattice's x_fluid: the
+     * flume (its left wall, or the paddle's rest position) starts where
+     * they end, so no strip next to it is left dry. */
+    struct wl_sph_const k0;
+    enum wl_status st0 = wl_sph_const_make(&f->cfg.prm, &k0, err);
+    if (st0) return st0;
+    double bx[WL_SCENARIO_MAX_BED + 2], bz[WL_SCENARIO_MAX_BED + 2];
+    const int nb = bed_polyline(s, x_fluid, xw, f->z_toe, bx, bz);
+    const double edge = wl_scene_fluid_columns_edge(&k0, x_fluid - 0.5 * dp, xw, bx, bz, nb, depth);
+    if (!isfinite(edge)) return wl_error_set(err, WL_ENOMEM, "flume: out of memory (columns)");
+    x_fluid = edge;
+    if (!f->has_paddle) x_left = x_fluid;
+  }
   if (load == WL_CASE_EXPLOSION) f->cfg.prm.expected_speed = px->expected_speed; /* plan.h */
   if (s->domain.far_end.choice == WL_FAR_END_DAMPING && plan->land_length > 0) {
     /* over the far half of the land, at a rate that stops water arriving at
@@ -353,23 +384,16 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
   /* Fluid between the left end and the wall, under the initial surface,
    * on the lattice laid from the wall (x_fluid above). */
   double bx[WL_SCENARIO_MAX_BED + 2], bz[WL_SCENARIO_MAX_BED + 2];
-  int nb = 0;
-  bx[nb] = x_left, bz[nb++] = wl_scenario_bed_z(s, x_left);
-  for (int i = 0; i < s->n_bed; i++) {
-    double xb = s->bed[i].from.q.si;
-    if (xb <= x_left) continue;
-    bx[nb] = xb, bz[nb++] = wl_scenario_bed_z(s, xb);
-  }
-  bx[nb] = xw, bz[nb++] = f->z_toe;
+  const int nb = bed_polyline(s, x_left, xw, f->z_toe, bx, bz);
   if (dim == 2) {
-    if (!st) st = wl_scene_fluid_surface(&sc, x_fluid, xw, bx, bz, nb, surface_z, &surf, err);
+    if (!st) st = wl_scene_fluid_surface(&sc, x_fluid, xw, bx, bz, nb, depth, surface_z, &surf, err);
   } else {
     /* one lattice row across at a time, so that eta may depend on y */
     for (int j = 0; !st && j < n_rows; j++) {
       sc.y0 = j * dp;
       sc.y1 = (j + 1) * dp;
       surf.y = (j + 0.5) * dp;
-      st = wl_scene_fluid_surface(&sc, x_fluid, xw, bx, bz, nb, surface_z, &surf, err);
+      st = wl_scene_fluid_surface(&sc, x_fluid, xw, bx, bz, nb, depth, surface_z, &surf, err);
     }
   }
   if (!st && surf.wave) {

@@ -176,9 +176,115 @@ double wl_scene_polyline_dist(const double *bx, const double *bz, int n, double 
   return best;
 }
 
+/* A free-surface column: its centre x, width and bottom face [m] and the
+ * particles still water at `level` gives it. */
+struct column {
+  double x, width, base;
+  long count;
+};
+
+/* The bottom face of the column at x: its lowest particle dp/2 from the bed
+ * (the polyline's distance: on a slope dp / (2 cos theta) above it).
+ * Stacked on one lattice of rows instead, a column over a slope leaves a
+ * void of up to a spacing between its lowest particle and the bed, a
+ * sawtooth along the slope, and still water then ran up the slope along the
+ * bed at 0.09-0.14 m/s (a 1:5.7 slope, dp = 0.01-0.02 m) and raised the
+ * water at a seawall behind it by several mm for as long as it ran
+ * (docs/history/2026-11-28-slope-current.md). */
+static double column_base(double dp, const double *bed_x, const double *bed_z, int n_bed,
+                          double x) {
+  const double zb = bed_at(bed_x, bed_z, n_bed, x);
+  double z_first = zb + 0.5 * dp;
+  if (n_bed > 1) {
+    double lo = zb, hi = zb + 2.0 * dp;
+    while (wl_scene_polyline_dist(bed_x, bed_z, n_bed, x, hi) < 0.5 * dp && hi < zb + 64 * dp)
+      lo = hi, hi += 2.0 * dp; /* a steep bed */
+    for (int it = 0; it < 60; it++) {
+      const double mid = 0.5 * (lo + hi);
+      if (wl_scene_polyline_dist(bed_x, bed_z, n_bed, x, mid) < 0.5 * dp) lo = mid;
+      else hi = mid;
+    }
+    z_first = hi;
+  }
+  return z_first - 0.5 * dp;
+}
+
+/* The particles a column holds up to a surface at z: the whole number
+ * nearest the height from its bottom face. */
+static long column_count(double dp, double base, double z) {
+  return lround((z - base) / dp - WL_SCENE_LATTICE_TOL);
+}
+
+/* The still-water columns from x1 toward x0 (wl_scene_fluid_surface): as
+ * many whole columns as fit, each as wide as holds its still water level
+ * (column_width). *out malloc'ed (NULL and 0 when none fits); returns the
+ * count, or -1 out of memory. */
+static int lay_columns(const struct wl_sph_const *k, double x0, double x1, const double *bed_x,
+                       const double *bed_z, int n_bed, double level, struct column **out) {
+  const double dp = k->dp;
+  struct column *col = NULL;
+  int n = 0, cap = 0;
+  double *rho = NULL;
+  long rho_cap = 0;
+  double edge = x1, width = dp;
+  while (edge - x0 >= width * (1.0 - WL_SCENE_LATTICE_TOL)) {
+    if (n == cap) {
+      cap = cap ? 2 * cap : 256;
+      struct column *t = realloc(col, sizeof *t * (size_t)cap);
+      if (!t) goto oom;
+      col = t;
+    }
+    struct column *c = &col[n];
+    for (int pass = 0; pass < 2; pass++) { /* its centre, then its width there */
+      c->x = edge - 0.5 * width;
+      c->base = column_base(dp, bed_x, bed_z, n_bed, c->x);
+      c->count = column_count(dp, c->base, level);
+      if (c->count > rho_cap) {
+        double *t = realloc(rho, sizeof *t * (size_t)c->count);
+        if (!t) goto oom;
+        rho = t, rho_cap = c->count;
+      }
+      /* Compressed water is denser at depth, so a column of count
+       * particles a spacing wide stands g D^2/(2 c0^2) below the level it
+       * was counted to (D its depth; 1.0 mm in 0.36 m at c0 = 25 m/s,
+       * 0.03 mm in 0.06 m). Laid so, the deep flume of seawall.yaml stood
+       * 1 mm lower than its platform, which drained into it after the
+       * start, lowered the water at the wall by about 1 mm and set the
+       * flume sloshing (the wall force 4 % of its value at rest off;
+       * docs/history/2026-11-28-slope-current.md, "The level"). A column
+       * narrower by that fraction holds compressed water to the level at
+       * every depth, with no column a particle higher than the next. */
+      width = c->count > 0 ? column_width(k, (int)c->count, rho) : dp;
+    }
+    c->width = width;
+    edge -= width;
+    n++;
+  }
+  free(rho);
+  *out = col;
+  return n;
+oom:
+  free(rho);
+  free(col);
+  *out = NULL;
+  return -1;
+}
+
+double wl_scene_fluid_columns_edge(const struct wl_sph_const *k, double x0, double x1,
+                                   const double *bed_x, const double *bed_z, int n_bed,
+                                   double level) {
+  struct column *col;
+  const int n = lay_columns(k, x0, x1, bed_x, bed_z, n_bed, level, &col);
+  double edge = x1;
+  for (int i = 0; i < n; i++) edge -= col[i].width;
+  free(col);
+  return n < 0 ? NAN : edge;
+}
+
 enum wl_status wl_scene_fluid_surface(struct wl_scene *sc, double x0, double x1,
                                       const double *bed_x, const double *bed_z, int n_bed,
-                                      wl_scene_eta_fn eta, void *user, struct wl_error *err) {
+                                      double level, wl_scene_eta_fn eta, void *user,
+                                      struct wl_error *err) {
   const struct wl_sph_const *k = &sc->k;
   const int dim = sc->dim;
   const double dp = sc->dp;
@@ -193,92 +299,18 @@ enum wl_status wl_scene_fluid_surface(struct wl_scene *sc, double x0, double x1,
   double ys = 0;
   int ny = 1;
   if (dim == 3) ny = lattice(sc->y0, sc->y1, dp, &ys);
-  /* Columns from the wall's end (x1) seaward, each a whole number of
-   * particles from the bed to the surface (column_layout), then stretched
-   * together by at most a column's width in all to fill [x0, x1]. */
-  struct column {
-    double x, width, base;
-    long count;
-  } *col = NULL;
-  int n_col = 0, cap_col = 0;
-  double *zc = NULL, *rc = NULL;
-  long cap = 0;
+  struct column *col;
+  const int n_col = lay_columns(k, x0, x1, bed_x, bed_z, n_bed, level, &col);
+  if (n_col < 0) return wl_error_set(err, WL_ENOMEM, "scene fluid surface: out of memory (columns)");
+  /* each column: as many particles as put its top face nearest eta(x),
+   * stacked hydrostatically at the column's width (hydro_column) */
   enum wl_status st = WL_OK;
-  double edge = x1; /* the seaward face of the columns laid so far */
-  double width = dp;
-  while (st == WL_OK && edge - x0 >= width * (1.0 - WL_SCENE_LATTICE_TOL)) {
-    if (n_col == cap_col) {
-      const int c2 = cap_col ? 2 * cap_col : 256;
-      struct column *t = realloc(col, sizeof *t * (size_t)c2);
-      if (!t) {
-        st = wl_error_set(err, WL_ENOMEM, "scene fluid surface: out of memory (%d columns)", c2);
-        break;
-      }
-      col = t, cap_col = c2;
-    }
-    struct column *c = &col[n_col];
-    for (int pass = 0; pass < 2 && st == WL_OK; pass++) { /* its centre, then its width there */
-      c->x = edge - 0.5 * width;
-      const double e = eta(c->x, user);
-      const double zb = bed_at(bed_x, bed_z, n_bed, c->x);
-      /* The column stands on the bed: its lowest particle dp/2 from the bed
-       * (the polyline's distance: on a slope dp / (2 cos theta) above it),
-       * its top face the whole number of particles nearest the surface.
-       * Stacked on one lattice of rows instead, a column over a slope leaves
-       * a void of up to a spacing between its lowest particle and the bed,
-       * a sawtooth along the slope, and still water then ran up the slope
-       * along the bed at 0.09-0.14 m/s (a 1:5.7 slope, dp = 0.01-0.02 m)
-       * and raised the water at a seawall behind it by several mm for as
-       * long as it ran (docs/history/2026-11-28-slope-current.md). */
-      double z_first = zb + 0.5 * dp;
-      if (n_bed > 1) {
-        double lo = zb, hi = zb + 2.0 * dp;
-        while (wl_scene_polyline_dist(bed_x, bed_z, n_bed, c->x, hi) < 0.5 * dp && hi < zb + 64 * dp)
-          lo = hi, hi += 2.0 * dp; /* a steep bed */
-        for (int it = 0; it < 60; it++) {
-          const double mid = 0.5 * (lo + hi);
-          if (wl_scene_polyline_dist(bed_x, bed_z, n_bed, c->x, mid) < 0.5 * dp) lo = mid;
-          else hi = mid;
-        }
-        z_first = hi;
-      }
-      c->base = z_first - 0.5 * dp; /* the column's bottom face */
-      c->count = lround((e - c->base) / dp - WL_SCENE_LATTICE_TOL);
-      if (c->count > cap) {
-        double *t = realloc(zc, sizeof(double) * 2 * (size_t)c->count);
-        if (!t) {
-          st = wl_error_set(err, WL_ENOMEM, "scene fluid surface: out of memory");
-          break;
-        }
-        zc = t, cap = c->count;
-      }
-      rc = zc + cap;
-      /* Its width: compressed water is denser at depth, so a column of
-       * count particles a spacing wide stands g D^2/(2 c0^2) below the
-       * surface it was counted to (D its depth; 1.0 mm in 0.36 m at
-       * c0 = 25 m/s, 0.03 mm in 0.06 m). Laid so, the deep flume of
-       * seawall.yaml stood 1 mm lower than its platform, which drained into
-       * it after the start, lowered the water at the wall by about 1 mm and
-       * set the flume sloshing (the wall force 4 % of its value at rest
-       * off; docs/history/2026-11-28-slope-current.md, "The level"). A
-       * column narrower by that fraction holds the compressed water to
-       * the surface, at every depth, without a particle more or less. */
-      width = c->count > 0 ? column_width(k, (int)c->count, rc) : dp;
-    }
-    c->width = width;
-    edge -= width;
-    n_col++;
-  }
-  /* What is left at x0, less than a column, stays dry (WIP: the flume's
-   * seaward end should move to the columns' face, so nothing is left;
-   * stretching the columns instead changes every column's height by the
-   * fraction left, up to 4 % in a 1 m tank at dp = 0.04 m). */
-  const double stretch = 1.0;
-  double x[3];
-  for (int i = 0; i < n_col && st == WL_OK; i++) {
+  double *zc = NULL, *rc = NULL, x[3];
+  long cap = 0;
+  for (int i = n_col - 1; i >= 0 && st == WL_OK; i--) { /* seaward first, as the lattice did */
     const struct column *c = &col[i];
-    if (c->count <= 0) continue;
-    const long count = c->count;
+    const long count = column_count(dp, c->base, eta(c->x, user));
+    if (count <= 0) continue;
     if (count > cap) {
       double *t = realloc(zc, sizeof(double) * 2 * (size_t)count);
       if (!t) {
@@ -288,10 +320,10 @@ enum wl_status wl_scene_fluid_surface(struct wl_scene *sc, double x0, double x1,
       zc = t, cap = count;
     }
     rc = zc + cap;
-    hydro_column(k, (int)count, c->base, 0, c->width * stretch, zc, rc);
+    hydro_column(k, (int)count, c->base, 0, c->width, zc, rc);
     for (long m = 0; m < count && st == WL_OK; m++)
       for (int iy = 0; iy < ny && st == WL_OK; iy++) {
-        x[0] = x1 - (x1 - c->x) * stretch;
+        x[0] = c->x;
         if (dim == 3) x[1] = ys + iy * dp;
         x[dim - 1] = zc[m];
         st = wl_scene_push(sc, 1, x, rc[m], WL_KIND_FLUID, 0, err);
