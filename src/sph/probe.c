@@ -126,7 +126,7 @@ double wl_sph_probe_shepard(const struct wl_sph_probe *pr, const double *x) { re
 
 double wl_sph_probe_pressure(const struct wl_sph_probe *pr, const double *x, double *p) {
   const struct wl_sph_point_sums s = sums(pr, x);
-  *p = s.s > 0 ? s.p / s.s : 0.0;
+  *p = wl_sph_point_pressure(&s, (double)pr->k.h);
   return s.s;
 }
 
