@@ -144,21 +144,7 @@ fi
 if command -v pdftotext >/dev/null 2>&1; then
   pdftotext on/report.pdf - 2>/dev/null | tr '\n' ' ' | grep -q "less the drift of the model's still water" \
     && ok "the report says what the reference took out" || bad "the report does not name the still-water reference"
-  # The report says how far the still water starts off level: the closed
-  # form g (D^2 - d^2) / (2 c0^2) of this flume's depths (0.2 m offshore,
-  # 0.05 m at the wall, from the YAML above) and the case's c0.
-  pdftotext on/report.pdf - 2>/dev/null | tr '\n' ' ' > report.txt
-  python3 - <<'PY' && ok "the report states the still water's initial level error (closed form)" \
-    || bad "the report's still-water level error is missing or not g (D^2 - d^2)/(2 c0^2)"
-import json, re, sys
-c0 = json.load(open('on/summary.json'))['cases']['explosion']['c0']['value']
-want = 1000 * 9.81 * (0.2 ** 2 - 0.05 ** 2) / (2 * c0 ** 2)
-m = re.search(r"explosion case's still water starts about ([0-9.]+) mm lower offshore",
-              open('report.txt').read())
-print("level error in the report:", m and m.group(1), "mm; closed form %.3f mm" % want)
-sys.exit(0 if m and abs(float(m.group(1)) / want - 1) < 0.05 else 1)
-PY
 else
-  echo "SKIP (two checks) pdftotext not installed: the report's text is not read"
+  echo "SKIP (one check) pdftotext not installed: the report's text is not read"
 fi
 exit $fail

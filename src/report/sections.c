@@ -258,28 +258,6 @@ static void summary(const struct wl_report_ctx *c, char *out, size_t size) {
         "force at rest); with it left in, the positive impulse would read %s kN s/m. ",
         wl_store_results_case_name(i), dm, rs, iu);
   }
-  /* The still water's level (docs/limits.md, "Still water"): each column
-   * holds a whole number of particles of incompressible water's mass, which
-   * the model's slightly compressible water packs g D^2/(2 c0^2) below the
-   * level in a column D deep, so a flume deeper offshore than at the wall
-   * starts lower there and the wall's water drains into it. An error of the
-   * model the resolution's uncertainty does not hold: said with its size. */
-  for (int i = 0; i < WL_RESULTS_N_CASES; i++) {
-    const struct wl_results_case *ci = &r->cases[i];
-    const double g = r->plan.present && r->plan.g > 0 ? r->plan.g : 9.81;
-    const double D = ci->still_water_z, d = ci->still_water_z - ci->wall_toe_z;
-    if (!ci->present || !(d > 0) || !(D > d) || !(ci->c0 > 0)) continue;
-    const double sink = g * (D * D - d * d) / (2.0 * ci->c0 * ci->c0);
-    char mm[64], fs[64];
-    wl_report_fmt(1000.0 * sink, SHARE_DIGITS, mm, sizeof mm);
-    wl_report_fmt(100.0 * 2.0 * sink / d, SHARE_DIGITS, fs, sizeof fs);
-    put(&b,
-        "The %s case's still water starts about %s mm lower offshore than at the wall (the "
-        "model's water is slightly compressible and each column holds whole particles), and "
-        "the wall's water drains by up to that in the first seconds, up to %s %% of the force "
-        "at rest: an error of the model that the uncertainties above do not include. ",
-        wl_store_results_case_name(i), mm, fs);
-  }
   /* realisations (resolution.realisations): the finest level's spread */
   for (int i = 0; i < WL_RESULTS_N_CASES; i++) {
     const struct wl_results_convergence *cv = &r->conv[i];
