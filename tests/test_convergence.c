@@ -190,6 +190,43 @@ static double json_number(const char *from, const char *key) {
   return strtod(p, NULL);
 }
 
+/* A ladder of means (loads.h wl_loads_convergence_sampled): the main job's
+ * explosion impulse of 2026-11-28 (21.20, 22.981, 22.976 N s/m at dp =
+ * 0.00857, 0.006, 0.00429 m), whose last difference changes sign. Its band
+ * by hand: with the finest two equal within their sampling (0.93 N s/m
+ * each: sqrt 2 x 0.93 = 1.32 > 0.005), Eca & Hoekstra's band for an order
+ * above 2, max(1.25 |f3 - f2| / (r32^2 - 1), 1.25 range) = 1.25 x 1.781 =
+ * 2.226 N s/m, 9.69 % of 22.976; as single runs (no sampling), or with
+ * sampling too small to hold the difference, 3 x range = 5.343 N s/m. */
+static void test_sampled(void) {
+  char msg[320];
+  struct wl_loads_convergence cv;
+  const double h[3] = {0.00857142857, 0.006, 0.00428571429};
+  const double f[3] = {21.200, 22.981, 22.976};
+  const double u_wide[3] = {0.90, 0.93, 0.93}, u_narrow[3] = {0.002, 0.002, 0.002};
+  const double band = 1.25 * (22.981 - 21.200) / 22.976, range3 = 3 * (22.981 - 21.200) / 22.976;
+  wl_loads_convergence_sampled(h, f, u_wide, 3, &cv);
+  snprintf(msg, sizeof msg, "means equal within sampling: band %.6g (1.25 range / f3 = %.6g), basis %s",
+           cv.error, band, wl_loads_estimate_name(cv.basis));
+  check(cv.basis == WL_LOADS_EST_SAMPLED && close_rel(cv.error, band, 1e-9) && isnan(cv.order) &&
+            !cv.order_ok,
+        msg);
+  wl_loads_convergence_sampled(h, f, u_narrow, 3, &cv);
+  snprintf(msg, sizeof msg, "a difference outside the sampling keeps its sign: %.6g (3 range %.6g)",
+           cv.error, range3);
+  check(cv.basis == WL_LOADS_EST_RANGE && close_rel(cv.error, range3, 1e-9), msg);
+  wl_loads_convergence_sampled(h, f, NULL, 3, &cv);
+  check(cv.basis == WL_LOADS_EST_RANGE && close_rel(cv.error, range3, 1e-9),
+        "single runs (no sampling): 3 x range");
+  /* a monotone ladder keeps its GCI band whatever the sampling */
+  const double g[3] = {21.200, 22.500, 22.900};
+  struct wl_loads_convergence a;
+  wl_loads_convergence(h, g, 3, &a);
+  wl_loads_convergence_sampled(h, g, u_wide, 3, &cv);
+  check(cv.basis == a.basis && cv.error == a.error && cv.order == a.order,
+        "monotone means: the band of wl_loads_convergence");
+}
+
 static void test_storage(void) {
   char dir[] = "/tmp/wl_convergence_XXXXXX";
   if (!mkdtemp(dir)) {
@@ -348,6 +385,7 @@ static void test_storage(void) {
 
 int main(void) {
   test_synthetic();
+  test_sampled();
   test_storage();
   printf("%s: %d failure(s)\n", failures ? "FAIL" : "PASS", failures);
   return failures ? 1 : 0;

@@ -165,6 +165,8 @@ enum wl_loads_estimate {
   WL_LOADS_EST_GCI_LOW,   /* monotone, 0 < p < 0.95: min(1.25 |f3 - f_ext|, 3 range) */
   WL_LOADS_EST_GCI_HIGH,  /* monotone, p >= 2.05: max(1.25 |f3 - f_ext(p = 2)|, 1.25 range) */
   WL_LOADS_EST_RANGE,     /* oscillating, a zero difference or diverging: 3 range */
+  WL_LOADS_EST_SAMPLED,   /* means whose finest two agree within their sampling:
+                             max(1.25 |f3 - f_ext(p = 2)|, 1.25 range) */
 };
 
 /* Observed order, Richardson extrapolation and uncertainty of a quantity f
@@ -207,6 +209,25 @@ struct wl_loads_convergence {
 
 void wl_loads_convergence(const double *h, const double *f, int n,
                           struct wl_loads_convergence *out);
+
+/* The same for a ladder of means of several realisations (assess.h
+ * resolution.realisations), u[k] the 95 % sampling uncertainty of f[k]
+ * (absolute, as wl_loads_mean_uncertainty times |f[k]|; 0 or NaN for a
+ * single run). Where the finest two means differ by no more than their
+ * combined sampling uncertainty, sqrt(u2^2 + u3^2), the sign of that
+ * difference is not known from the data, so the test for oscillation
+ * cannot use it: where that sign alone made the ladder oscillate (3 x
+ * range), the finest two are read as equal, the ladder as
+ * converged beyond the order of the method, and the band is Eca &
+ * Hoekstra's for an order above 2, max(1.25 |f3 - f_ext(2)|, 1.25 range)
+ * (WL_LOADS_EST_SAMPLED; the order is then not reported), instead of 3 x
+ * range, which a difference inside the scatter would otherwise trigger by
+ * its sign alone (seawall.yaml's explosion, 2026-11-28: 21.20, 22.981,
+ * 22.976 N s/m with a sampling uncertainty of 0.93 N s/m read 27 % by
+ * 3 x range). Otherwise as wl_loads_convergence. The sampling uncertainty
+ * itself is not in the band: the caller adds the finest level's. */
+void wl_loads_convergence_sampled(const double *h, const double *f, const double *u, int n,
+                                  struct wl_loads_convergence *out);
 
 /* Student's t for a two-sided 95 % interval with `dof` degrees of freedom
  * (dof >= 1; the table of any statistics text to 3 decimals for 1-30, then

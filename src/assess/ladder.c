@@ -35,10 +35,19 @@ static void ladder_on_progress(void *user, const char *case_name,
 
 static double rel_change(double f, double ref) { return fabs(f - ref) / fabs(ref); }
 
+/* A level's 95 % sampling uncertainty of a mean of r runs, absolute (0 for
+ * one run, or when not defined) */
+static double sampling_abs(double sd, int r, double mean) {
+  const double u = wl_loads_mean_uncertainty(sd, r, mean);
+  return isfinite(u) ? u * fabs(mean) : 0.0;
+}
+
 void ladder_estimate(struct wl_assess_convergence *cv) {
   double h[WL_ASSESS_MAX_LEVELS] = {0}, fo[WL_ASSESS_MAX_LEVELS] = {0};
   double im[WL_ASSESS_MAX_LEVELS] = {0};
   double fd[WL_ASSESS_MAX_LEVELS] = {0}; /* the peak force's part above the force at rest */
+  /* each level's sampling uncertainty of those (absolute; 0: one run) */
+  double uo[WL_ASSESS_MAX_LEVELS] = {0}, ud[WL_ASSESS_MAX_LEVELS] = {0}, ui[WL_ASSESS_MAX_LEVELS] = {0};
   int idx[WL_ASSESS_MAX_LEVELS] = {0}, m = 0;
   /* only complete levels: a stopped run's peaks are not the event's */
   for (int k = 0; k < cv->n_levels; k++) {
@@ -48,11 +57,15 @@ void ladder_estimate(struct wl_assess_convergence *cv) {
     fo[m] = cv->lv[k].peak_force;
     fd[m] = cv->lv[k].peak_force - cv->lv[k].rest_force;
     im[m] = cv->lv[k].impulse_positive;
+    const int r = cv->lv[k].realisations;
+    uo[m] = sampling_abs(cv->lv[k].peak_force_sd, r, fo[m]);
+    ud[m] = sampling_abs(cv->lv[k].peak_force_dynamic_sd, r, fd[m]);
+    ui[m] = sampling_abs(cv->lv[k].impulse_positive_sd, r, im[m]);
     idx[m++] = k;
   }
-  wl_loads_convergence(h, fo, m, &cv->force);
-  wl_loads_convergence(h, fd, m, &cv->force_dynamic);
-  wl_loads_convergence(h, im, m, &cv->impulse_pos);
+  wl_loads_convergence_sampled(h, fo, uo, m, &cv->force);
+  wl_loads_convergence_sampled(h, fd, ud, m, &cv->force_dynamic);
+  wl_loads_convergence_sampled(h, im, ui, m, &cv->impulse_pos);
   /* the finest level's means carry their own sampling uncertainty, added to
    * the bands the levels give (loads.h wl_loads_mean_uncertainty) */
   cv->force_sampling = cv->dynamic_sampling = cv->impulse_sampling = NAN;

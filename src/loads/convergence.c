@@ -40,6 +40,7 @@ const char *wl_loads_estimate_name(enum wl_loads_estimate e) {
   case WL_LOADS_EST_GCI_LOW: return "GCI, low order";
   case WL_LOADS_EST_GCI_HIGH: return "GCI, order capped at 2";
   case WL_LOADS_EST_RANGE: return "3 x range";
+  case WL_LOADS_EST_SAMPLED: return "GCI, order capped at 2 (finest two equal within sampling)";
   default: return "none";
   }
 }
@@ -111,4 +112,23 @@ void wl_loads_convergence(const double *h, const double *f, int n,
     out->basis = WL_LOADS_EST_GCI_HIGH;
   }
   out->error = u / fabs(f3);
+}
+
+void wl_loads_convergence_sampled(const double *h, const double *f, const double *u, int n,
+                                  struct wl_loads_convergence *out) {
+  wl_loads_convergence(h, f, n, out);
+  if (n < 3 || !u || out->basis != WL_LOADS_EST_RANGE || !isfinite(out->r21)) return;
+  const double f2 = f[n - 2], f3 = f[n - 1];
+  const double u2 = isfinite(u[n - 2]) ? u[n - 2] : 0.0, u3 = isfinite(u[n - 1]) ? u[n - 1] : 0.0;
+  const double noise = sqrt(u2 * u2 + u3 * u3);
+  if (!(noise > 0.0) || fabs(f3 - f2) > noise) return;
+  const double f1 = f[n - 3];
+  const double range = fmax(f1, fmax(f2, f3)) - fmin(f1, fmin(f2, f3));
+  const double v = fmax(WL_LOADS_SAFETY_OBSERVED *
+                            richardson_delta(f2, f3, out->r32, WL_LOADS_ORDER_ASSUMED),
+                        WL_LOADS_SAFETY_OBSERVED * range);
+  out->order = out->extrapolated = NAN;
+  out->order_ok = 0;
+  out->error = v / fabs(f3);
+  out->basis = WL_LOADS_EST_SAMPLED;
 }
