@@ -218,6 +218,11 @@ static void test_sampled(void) {
   wl_loads_convergence_sampled(h, f, NULL, 3, &cv);
   check(cv.basis == WL_LOADS_EST_RANGE && close_rel(cv.error, range3, 1e-9),
         "single runs (no sampling): 3 x range");
+  /* every basis name fits the results' fixed fields (store.h: char [32]) */
+  int fits = 1;
+  for (int e = WL_LOADS_EST_NONE; e <= WL_LOADS_EST_SAMPLED; e++)
+    fits &= strlen(wl_loads_estimate_name((enum wl_loads_estimate)e)) < 32;
+  check(fits, "every basis name is shorter than the results' 32-byte field");
   /* a monotone ladder keeps its GCI band whatever the sampling */
   const double g[3] = {21.200, 22.500, 22.900};
   struct wl_loads_convergence a;

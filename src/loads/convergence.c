@@ -40,7 +40,7 @@ const char *wl_loads_estimate_name(enum wl_loads_estimate e) {
   case WL_LOADS_EST_GCI_LOW: return "GCI, low order";
   case WL_LOADS_EST_GCI_HIGH: return "GCI, order capped at 2";
   case WL_LOADS_EST_RANGE: return "3 x range";
-  case WL_LOADS_EST_SAMPLED: return "GCI, order capped at 2 (finest two equal within sampling)";
+  case WL_LOADS_EST_SAMPLED: return "GCI, order 2, within sampling";
   default: return "none";
   }
 }
