@@ -190,9 +190,31 @@ static void refine_auto(void) {
   wl_scenario_clear(&s);
 }
 
+/* The note on an explosion's ladder that is too coarse at its finest level
+ * (plan.h WL_PLAN_EXPLOSION_PPH_MIN): seawall.yaml as 2 CPU cores plan it
+ * (particles_per_height 2: the finest of dp = 0.02, 0.015, 0.012 m puts
+ * 0.05 / 0.012 = 4.2 particles over the 0.05 m solitary wave, the smallest
+ * height) notes it; as a GPU plans it (5.66: 0.05 / 0.00429 = 11.7) not. */
+static void explosion_resolution_note(void) {
+  struct wl_scenario sw;
+  struct wl_plan pw;
+  if (plan_seawall(0, &sw, &pw)) {
+    CHECK_TRUE(has_note(&pw, "4.2 particles over the smallest wave height"),
+               "particles_per_height 2: the explosion's coarse finest level is noted");
+    sw.resolution.particles_per_height.q.si = 5.66;
+    struct wl_error err;
+    wl_error_clear(&err);
+    CHECK_TRUE(wl_plan_make(&sw, &pw, &err) == WL_OK &&
+                   !has_note(&pw, "particles over the smallest wave height"),
+               "particles_per_height 5.66: no such note");
+  }
+  wl_scenario_clear(&sw);
+}
+
 int main(void) {
   gsl_set_error_handler_off();
   refine_auto();
+  explosion_resolution_note();
   crater_mach();
   struct wl_scenario s;
   struct wl_plan p;

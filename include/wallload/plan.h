@@ -216,6 +216,13 @@ struct wl_plan {
  * carry the wave to the fine level within 2 % (measured, as above); `check`
  * says so. */
 #define WL_PLAN_REFINE_COARSE_PPH_MIN 4.0
+/* Particles over the smallest wave height below which the plan notes that
+ * an explosion's loads at the wall may lie outside the ladder's band: at 4
+ * (dp = 0.012 m, the 2-core ladder) seawall.yaml's explosion read its
+ * positive impulse 16.8 N s/m +-14 % against the 23.0 of the GPU's ladder,
+ * whose finest level has 11.3; its short waves reach the wall undamped from
+ * about 8 (dp <= 0.006 m; docs/history/2026-11-28-level-true.md). */
+#define WL_PLAN_EXPLOSION_PPH_MIN 8.0
 /* resolution.refine.from: auto places the interface this many still-water
  * depths seaward of the bed's first change (the slope's toe: a long wave
  * starts to feel a slope about a depth or two ahead of it; seawall.yaml's

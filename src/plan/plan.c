@@ -840,6 +840,16 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
   if (!s->resolution.dp.is_auto && smallest / p->dp < 4)
     note(p, "dp = %g m gives only %.1f particles over the smallest wave height (%.3g m)", p->dp,
          smallest / p->dp, smallest);
+  if (p->explosion.present && isfinite(smallest)) { /* the finest spacing run */
+    double fine = p->dp;
+    for (int k = 0; k < s->resolution.n_levels; k++)
+      fine = fmin(fine, wl_plan_level_dp(s, p, s->resolution.levels[k].q.si));
+    if (smallest / fine < WL_PLAN_EXPLOSION_PPH_MIN)
+      note(p, "the finest spacing (%.3g m) puts %.1f particles over the smallest wave height: "
+              "below %.0f, an explosion's short waves lose height before the wall and its "
+              "impulse may lie outside the ladder's band (seawall.yaml at 4: 27 %% under); "
+              "quote it from a finer ladder", fine, smallest / fine, WL_PLAN_EXPLOSION_PPH_MIN);
+  }
   {
     const double z_min = wl_plan_bed_min(s), z_wall = wl_scenario_bed_z(s, s->wall.x.q.si);
     p->depth_model = wl_plan_modelled_depth(p->h, z_min, z_min, p->dp);
