@@ -220,7 +220,7 @@ struct wl_plan {
  * an explosion's loads at the wall may lie outside the ladder's band: at 4
  * (dp = 0.012 m, the 2-core ladder) seawall.yaml's explosion read its
  * positive impulse 16.8 N s/m +-14 % against the 23.0 of the GPU's ladder,
- * whose finest level has 11.3; its short waves reach the wall undamped from
+ * whose finest level has 11.7; its short waves reach the wall undamped from
  * about 8 (dp <= 0.006 m; docs/history/2026-11-28-level-true.md). */
 #define WL_PLAN_EXPLOSION_PPH_MIN 8.0
 /* resolution.refine.from: auto places the interface this many still-water
