@@ -35,18 +35,18 @@ static void ladder_on_progress(void *user, const char *case_name,
 
 static double rel_change(double f, double ref) { return fabs(f - ref) / fabs(ref); }
 
-/* A level's 95 % sampling uncertainty of a mean of r runs, absolute (0 for
- * one run, or when not defined) */
+/* A level's 95 % sampling uncertainty of a mean of r runs, absolute (NaN
+ * for one run or where not defined: wl_loads_convergence_sampled reads it
+ * as none) */
 static double sampling_abs(double sd, int r, double mean) {
-  const double u = wl_loads_mean_uncertainty(sd, r, mean);
-  return isfinite(u) ? u * fabs(mean) : 0.0;
+  return wl_loads_mean_uncertainty(sd, r, mean) * fabs(mean);
 }
 
 void ladder_estimate(struct wl_assess_convergence *cv) {
   double h[WL_ASSESS_MAX_LEVELS] = {0}, fo[WL_ASSESS_MAX_LEVELS] = {0};
   double im[WL_ASSESS_MAX_LEVELS] = {0};
   double fd[WL_ASSESS_MAX_LEVELS] = {0}; /* the peak force's part above the force at rest */
-  /* each level's sampling uncertainty of those (absolute; 0: one run) */
+  /* each level's sampling uncertainty of those (absolute; NaN: one run) */
   double uo[WL_ASSESS_MAX_LEVELS] = {0}, ud[WL_ASSESS_MAX_LEVELS] = {0}, ui[WL_ASSESS_MAX_LEVELS] = {0};
   int idx[WL_ASSESS_MAX_LEVELS] = {0}, m = 0;
   /* only complete levels: a stopped run's peaks are not the event's */
@@ -70,12 +70,9 @@ void ladder_estimate(struct wl_assess_convergence *cv) {
    * the bands the levels give (loads.h wl_loads_mean_uncertainty) */
   cv->force_sampling = cv->dynamic_sampling = cv->impulse_sampling = NAN;
   if (m > 0 && cv->lv[idx[m - 1]].realisations > 1) {
-    const struct wl_assess_level *fin = &cv->lv[idx[m - 1]];
-    cv->force_sampling = wl_loads_mean_uncertainty(fin->peak_force_sd, fin->realisations, fo[m - 1]);
-    cv->dynamic_sampling =
-        wl_loads_mean_uncertainty(fin->peak_force_dynamic_sd, fin->realisations, fd[m - 1]);
-    cv->impulse_sampling =
-        wl_loads_mean_uncertainty(fin->impulse_positive_sd, fin->realisations, im[m - 1]);
+    cv->force_sampling = uo[m - 1] / fabs(fo[m - 1]);
+    cv->dynamic_sampling = ud[m - 1] / fabs(fd[m - 1]);
+    cv->impulse_sampling = ui[m - 1] / fabs(im[m - 1]);
     if (isfinite(cv->force_sampling)) cv->force.error += cv->force_sampling;
     if (isfinite(cv->dynamic_sampling)) cv->force_dynamic.error += cv->dynamic_sampling;
     if (isfinite(cv->impulse_sampling)) cv->impulse_pos.error += cv->impulse_sampling;
