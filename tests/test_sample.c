@@ -13,7 +13,10 @@
  *    metre (the lattice's rows at (k + 1/2) dp sum to it exactly), its
  *    kinetic energy rho0 L h u^2/2 and its momentum rho0 L h u at a uniform
  *    velocity u;
- *  - with the toe above the water the face is dry: force and moment 0.
+ *  - with the toe above the water the face is dry: force and moment 0;
+ *  - against a face: the still-water Shepard sum of the wetness rule in
+ *    closed form equals the particles' sum, and validate's sensors read
+ *    rho0 g (h - z) under water and 0 above it.
  * The densities are the Tait equation's hydrostatic ones (eos.h inverse),
  * so the pressure each particle carries is rho0 g (h - z_j) exactly. */
 #include <math.h>
@@ -24,6 +27,7 @@
 #include "testutil.h"
 #include "wallload/sample.h"
 #include "wallload/sph/eos.h"
+#include "wallload/sph/probe.h"
 
 #define RHO0 1000.0
 #define G 9.81
@@ -79,6 +83,77 @@ static int column(struct wl_particles *p, int dim, int nx, int ny, int rows,
   p->n = n;
   p->n_bound = 0;
   return 1;
+}
+
+/* The face's still-water Shepard sum (sph/probe.h wl_sph_face_shepard_full,
+ * a closed lattice sum) against the probe module's sum over real
+ * particles, and validate's sensor reading (sph.h
+ * wl_sph_probe_face_pressure): the water of the column's left half
+ * stands against a face at x = L/2; sensors half a spacing off it read
+ * rho0 g (h - z) under the surface (the fit is exact for a pressure linear
+ * in height whatever cuts the kernel) and 0 above it (dry). */
+static void face(int dim, const struct wl_flume *f, const struct wl_sph_const *k, int nx, int ny) {
+  const int half = nx / 2;
+  const double xw = half * DP, x_sensor = xw - 0.5 * DP, y = dim == 3 ? 0.5 * ny * DP : 0.0;
+  struct wl_error err;
+  wl_error_clear(&err);
+  struct wl_particles p;
+  memset(&p, 0, sizeof p);
+  struct wl_sph_probe *pr = NULL;
+  for (int pass = 0; pass < 2; pass++) {
+    const int rows = pass == 0 ? N_ROWS_DEEP : N_ROWS;
+    const double h = rows * DP;
+    if (!column(&p, dim, half, ny, rows, k) || wl_sph_probe_alloc(&pr, &f->cfg, &err) ||
+        wl_sph_probe_index(pr, &p, &err)) {
+      printf("FAIL the face column: %s\n", err.msg);
+      wl_test_failures++;
+      break;
+    }
+    if (pass == 0) { /* the closed sum's volumes are dp^dim: uncompressed water */
+      for (int i = 0; i < p.n; i++) p.rho[i] = (wl_real)RHO0;
+      if (wl_sph_probe_index(pr, &p, &err)) wl_test_failures++;
+    }
+    double worst = 0.0;
+    int n = 0, ok = 0, dry = 0, dry_ok = 0;
+    for (int i = 0; i < 90; i++) { /* every dp/2 from the floor to above the water */
+      const double z = (i + 0.5) * 0.5 * DP;
+      double x[3] = {x_sensor, dim == 3 ? y : z, z};
+      if (pass == 0) {
+        if (z > 0.5 * N_ROWS_DEEP * DP) continue;
+        const double want = wl_sph_face_shepard_full(k, dim, DP, z, y);
+        const double e = fabs(wl_sph_probe_shepard(pr, x) - want) / want;
+        worst = e > worst ? e : worst;
+        n++;
+        ok += e <= 1e-5;
+        continue;
+      }
+      double pz = -1.0;
+      wl_sph_probe_face_pressure(pr, x, z, &pz);
+      if (z >= h) {
+        dry++;
+        dry_ok += pz == 0.0;
+      } else if (z > 2.0 * k->h_d && z < h - 2.0 * k->h_d) {
+        const double want = RHO0 * G * (h - z), e = fabs(pz - want) / want;
+        worst = e > worst ? e : worst;
+        n++;
+        ok += e <= PROBE_TOL;
+      }
+    }
+    if (pass == 0) {
+      printf("  face: still-water Shepard sums at %d heights, worst %.1e\n", n, worst);
+      CHECK_TRUE(n > 10 && ok == n,
+                 "the face's closed lattice sum is the particles' Shepard sum (1e-5, float kernel)");
+    } else {
+      printf("  face sensors: %d under water, worst %.1e; %d dry\n", n, worst, dry);
+      CHECK_TRUE(n > 10 && ok == n, "sensors off the face read rho0 g (h - z) within 1e-3");
+      CHECK_TRUE(dry > 10 && dry_ok == dry, "sensors above the water read 0 (dry)");
+    }
+    wl_sph_probe_free(pr);
+    pr = NULL;
+    wl_particles_clear(&p);
+  }
+  wl_sph_probe_free(pr);
+  wl_particles_clear(&p);
 }
 
 static void run(int dim) {
@@ -198,6 +273,7 @@ static void run(int dim) {
   wl_sample_free(s);
   wl_sample_record_clear(&r);
   wl_particles_clear(&p);
+  face(dim, f, &k, nx, ny);
   free(f);
 }
 

@@ -68,9 +68,9 @@ static enum wl_status on_output(void *user, struct wl_sph_sim *sim, double t, st
   const double c1 = (m * szp - sz * sp) / (m * szz - sz * sz), c0 = (sp - c1 * sz) / m;
   if (wl_sph_probe_index(a->probe, p, err) != WL_OK) return err->status;
   const double eta = wl_sph_probe_elevation(a->probe, 0.5 * L, 0, 0, 2 * H, 0);
-  double v[2], pr;
+  double v[2];
   const double pt[2] = {0.5 * L, 0.5 * H};
-  wl_sph_probe_interp(a->probe, pt, v, &pr);
+  wl_sph_probe_velocity(a->probe, pt, v);
   a->p_bed += c0;
   a->slope += c1;
   a->vmax = fmax(a->vmax, vmax);

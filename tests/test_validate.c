@@ -127,13 +127,14 @@ static void spheric2_built(void) {
     CHECK_ABS(hs[3], 0.55, 0.5 * dp, "H4 in the reservoir reads its depth, 0.55 m");
     const double q[3] = {2.6, 0.5, 0.2};
     double pq = 0;
-    wl_sph_probe_interp(pr, q, NULL, &pq);
+    wl_sph_probe_pressure(pr, q, &pq);
     CHECK_REL(pq, 1000 * G * (0.55 - 0.2), 0.01,
-              "Shepard pressure in the reservoir: rho g (H - z) (REFERENCES 1.1)");
+              "the sensors' pressure in the reservoir: rho g (H - z) (REFERENCES 1.1)");
   }
   /* the sensors from the particles near them = from all of them: the water
-   * moved against the box (x - 1.1 m), so P1-P4 and the gauges all see it */
-  for (int i = p.n_bound; i < p.n; i++) p.pos[0][i] -= 1.1;
+   * moved against the box's face (from x = 1.992 m to 0.8245 m), so P1-P4
+   * stand in it (wet) and the gauges all see it */
+  for (int i = p.n_bound; i < p.n; i++) p.pos[0][i] -= 1.992 - 0.8245;
   struct wl_particles near = {0};
   struct wl_sph_probe *pr2 = NULL;
   if (pr && wl_sph_probe_alloc(&pr2, &cfg, &err) == WL_OK && wl_sph_probe_index(pr, &p, &err) == WL_OK &&

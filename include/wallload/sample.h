@@ -8,8 +8,9 @@
  *    bed, not the domain's floor), where the fluid's Shepard sum falls
  *    below WL_SPH_SURFACE_SHEPARD (sph/probe.h); the flume's last gauge is
  *    the one at the wall face;
- *  - wall pressure probes: the Shepard-interpolated pressure half a spacing
- *    seaward of the face where the probe is wet, 0 where it is dry. A probe
+ *  - wall pressure probes: the pressure half a spacing seaward of the face
+ *    (a line in height fitted to the fluid's pressures, sph/probe.h
+ *    wl_sph_point_pressure) where the probe is wet, 0 where it is dry. A probe
  *    is wet where its Shepard sum reaches half of what still water standing
  *    over it would give (flume.h probe_shepard_full): the gauges' surface
  *    rule at the face, where the wall cuts the kernel, so the water on the

@@ -276,14 +276,25 @@ enum wl_status wl_sph_probe_index(struct wl_sph_probe *pr, const struct wl_parti
 /* Shepard sum S(x) = sum_j V_j W(x - x_j) over fluid particles at x [m]. */
 double wl_sph_probe_shepard(const struct wl_sph_probe *pr, const double *x);
 
-/* Shepard sum S(x) [-], and into *p the Shepard-normalised pressure [Pa]
- * at x [m] (0 where no fluid particle is within 2h): one pass for both. */
+/* Shepard sum S(x) [-], and into *p the pressure [Pa] at x [m] (0 where
+ * no fluid particle is within 2h): the line in height fitted to the
+ * particles' pressures (sph/probe.h wl_sph_point_pressure), the reading
+ * of every wall probe and pressure sensor. One pass for both. */
 double wl_sph_probe_pressure(const struct wl_sph_probe *pr, const double *x, double *p);
 
-/* Shepard-normalised velocity [m/s] and pressure [Pa] at x [m]. Returns 1,
- * or 0 (outputs zero) where no fluid particle is within 2h. v or p may be
- * NULL. */
-int wl_sph_probe_interp(const struct wl_sph_probe *pr, const double *x, double *v, double *p);
+/* The pressure [Pa] a sensor half a spacing off a vertical face reads at x
+ * [m], z_bed [m] above the face's foot (sph/probe.h
+ * wl_sph_face_shepard_full), into *p: wl_sph_probe_pressure's where the
+ * point is wet (its Shepard sum at least WL_SPH_SURFACE_SHEPARD of what
+ * still water over it gives), 0 where it is dry. The reading of
+ * validate's pressure sensors; assess's wall probes apply the same rule
+ * with the still-water sums their flume keeps (sample.h). */
+void wl_sph_probe_face_pressure(const struct wl_sph_probe *pr, const double *x, double z_bed,
+                                double *p);
+
+/* Shepard-normalised velocity [m/s] at x [m] into v (dim components).
+ * Returns 1, or 0 (v zero) where no fluid particle is within 2h. */
+int wl_sph_probe_velocity(const struct wl_sph_probe *pr, const double *x, double *v);
 
 /* Free-surface elevation [m] on the vertical line at (x, y) (y ignored in
  * 2D), scanning z upward from z_lo to z_hi in steps of dz [m] (<= 0:

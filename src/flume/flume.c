@@ -9,6 +9,7 @@
 
 #include "wallload/explosion.h"
 #include "wallload/scene.h"
+#include "wallload/sph/probe.h"
 #include "wallload/units.h"
 #include "wallload/waves.h"
 
@@ -26,9 +27,6 @@ struct surface {
   int radial; /* 3D axisymmetric crater: r from the axis (xc, yc) */
   double y, yc; /* 3D: the row being filled, the crater's axis [m] */
 };
-
-static double probe_full_shepard(const struct wl_sph_const *k, int dim, double dp, double xw,
-                                 double z_toe, double y, double z);
 
 /* The bed under the fluid from x0 to the wall's toe at xw, as a polyline
  * (vertices in bx, bz, at most WL_SCENARIO_MAX_BED + 2); returns the count. */
@@ -454,8 +452,8 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
     double sum = 0.0;
     const int ny = dim == 3 ? f->n_probe_y : 1;
     for (int j = 0; j < ny; j++)
-      sum += probe_full_shepard(&k, dim, dp, xw, f->z_toe, dim == 3 ? f->probe_y[j] : 0.0,
-                                f->probe_z[i]);
+      sum += wl_sph_face_shepard_full(&k, dim, dp, f->probe_z[i] - f->z_toe,
+                                      dim == 3 ? f->probe_y[j] : 0.0);
     f->probe_shepard_full[i] = sum / ny;
   }
   for (int i = 0; i < s->n_gauges; i++) {
@@ -471,38 +469,6 @@ enum wl_status wl_flume_build(const struct wl_scenario *s, const struct wl_plan 
   f->gauge_bed[s->n_gauges] = f->z_toe;
   snprintf(f->gauge_name[s->n_gauges], sizeof f->gauge_name[0], "wall");
   return WL_OK;
-}
-
-/* The Shepard sum a wall probe at height z (and across position y, 3D)
- * reads with still water standing over it: the settled lattice of spacing
- * dp in front of the face plane xw (columns at xw - dp/2, xw - 3 dp/2, ...),
- * its rows from the toe z_toe up (centres at z_toe + dp/2, ...), the probe
- * half a spacing off the face. Unlike the open water's 1, it is cut by the
- * face (about 0.6-0.7 at h = 1.7 dp) and by the bed near the toe. */
-static double probe_full_shepard(const struct wl_sph_const *k, int dim, double dp, double xw,
-                                 double z_toe, double y, double z) {
-  const double reach = 2.0 * (double)k->h;
-  const int n = (int)ceil(reach / dp) + 1;
-  const double vol = dim == 3 ? dp * dp * dp : dp * dp;
-  const double x = xw - 0.5 * dp;
-  double sum = 0.0;
-  const int j_lo = (int)floor((z - reach - z_toe) / dp) - 1;
-  for (int i = 0; i <= n; i++) {
-    const double dx = x - (xw - (i + 0.5) * dp);
-    for (int j = j_lo > 0 ? j_lo : 0; j <= j_lo + 2 * n + 2; j++) {
-      const double dz = z - (z_toe + (j + 0.5) * dp);
-      if (dim == 2) {
-        sum += vol * (double)wl_sph_kernel_w(k, (wl_real)(dx * dx + dz * dz));
-        continue;
-      }
-      const int l0 = (int)floor((y - reach) / dp) - 1;
-      for (int l = l0; l <= l0 + 2 * n + 2; l++) {
-        const double dy = y - (l + 0.5) * dp;
-        sum += vol * (double)wl_sph_kernel_w(k, (wl_real)(dx * dx + dy * dy + dz * dz));
-      }
-    }
-  }
-  return sum;
 }
 
 /* Whether wl_flume_crop keeps particle i of p. */

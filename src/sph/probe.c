@@ -130,11 +130,18 @@ double wl_sph_probe_pressure(const struct wl_sph_probe *pr, const double *x, dou
   return s.s;
 }
 
-int wl_sph_probe_interp(const struct wl_sph_probe *pr, const double *x, double *v, double *p) {
+void wl_sph_probe_face_pressure(const struct wl_sph_probe *pr, const double *x, double z_bed,
+                                double *p) {
+  const double y = pr->dim == 3 ? x[1] : 0.0;
+  const double full = wl_sph_face_shepard_full(&pr->k, pr->dim, (double)pr->k.dp, z_bed, y);
+  const double s = wl_sph_probe_pressure(pr, x, p);
+  if (!(s >= WL_SPH_SURFACE_SHEPARD * full)) *p = 0.0;
+}
+
+int wl_sph_probe_velocity(const struct wl_sph_probe *pr, const double *x, double *v) {
   const struct wl_sph_point_sums s = sums(pr, x);
   const int ok = s.s > 0;
-  for (int a = 0; v && a < pr->dim; a++) v[a] = ok ? s.v[a] / s.s : 0;
-  if (p) *p = ok ? s.p / s.s : 0;
+  for (int a = 0; a < pr->dim; a++) v[a] = ok ? s.v[a] / s.s : 0;
   return ok;
 }
 

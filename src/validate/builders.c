@@ -428,14 +428,15 @@ static double zhou_wall_pressure(const struct wl_particles *p, const struct wl_s
 }
 
 /* The sensor centred at height zc [m]: the mean over its window, half a
- * spacing off the face (assess's probe placement); dry points read 0. */
+ * spacing off the face, each point read as assess's wall probes read
+ * (sph.h wl_sph_probe_face_pressure; dry points 0). */
 static double zhou_sensor(const struct zhou *z, double zc) {
   double ps = 0;
   const int n_pts = 5;
   for (int j = 0; j < n_pts; j++) {
     const double x[2] = {0.5 * z->dp, zc - 0.5 * ZHOU_P2_WINDOW + ZHOU_P2_WINDOW * (j + 0.5) / n_pts};
     double pr = 0;
-    wl_sph_probe_interp(z->probe, x, NULL, &pr);
+    wl_sph_probe_face_pressure(z->probe, x, x[1], &pr); /* the bed at z = 0 */
     ps += pr;
   }
   return ps / n_pts;

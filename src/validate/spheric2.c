@@ -170,7 +170,7 @@ void wl_val_spheric2_sample(const struct wl_sph_probe *pr, double dp, double *p,
   wl_val_spheric2_geometry(dp, &g);
   for (int i = 0; i < WL_VAL_S2_NP; i++) {
     double v = 0;
-    wl_sph_probe_interp(pr, g.probe[i], NULL, &v); /* 0 where dry */
+    wl_sph_probe_face_pressure(pr, g.probe[i], g.probe[i][2], &v); /* the floor at z = 0; 0 where dry */
     p[i] = v;
   }
   for (int i = 0; i < WL_VAL_S2_NH; i++)

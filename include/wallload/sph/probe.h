@@ -15,6 +15,8 @@
 #ifndef WALLLOAD_SPH_PROBE_H
 #define WALLLOAD_SPH_PROBE_H
 
+#include <math.h>
+
 #include "wallload/sph/cells.h"
 #include "wallload/sph/kernel.h"
 
@@ -102,6 +104,40 @@ WL_HD static inline double wl_sph_point_pressure(const struct wl_sph_point_sums 
   const double det = o->s * o->s_zz - o->s_z * o->s_z;
   if (!(det > WL_SPH_PROBE_FIT_MIN * o->s * o->s * h * h)) return o->p / o->s;
   return (o->s_zz * o->p - o->s_z * o->p_z) / det;
+}
+
+/* The Shepard sum that a point half a spacing off a vertical face reads
+ * with still water standing over it, at height z_bed [m] above the foot of
+ * the face (the bed) and across position y [m] (3D; 0 in 2D): the settled
+ * lattice of spacing dp in front of the face (columns dp/2, 3 dp/2, ... from
+ * it; rows from the bed, centres at dp/2, 3 dp/2, ...; across, centres at
+ * dp/2, 3 dp/2, ... from y = 0). Unlike the open water's 1, it is cut by the
+ * face (about 0.6-0.7 at h = 1.7 dp) and by the bed near the foot. A wall
+ * probe or pressure sensor is wet where its Shepard sum reaches
+ * WL_SPH_SURFACE_SHEPARD of this: the gauges' surface rule at the face. */
+static inline double wl_sph_face_shepard_full(const struct wl_sph_const *k, int dim, double dp,
+                                              double z_bed, double y) {
+  const double reach = 2.0 * (double)k->h;
+  const int n = (int)ceil(reach / dp) + 1;
+  const double vol = dim == 3 ? dp * dp * dp : dp * dp;
+  double sum = 0.0;
+  const int j_lo = (int)floor((z_bed - reach) / dp) - 1;
+  for (int i = 0; i <= n; i++) {
+    const double dx = (double)i * dp;
+    for (int j = j_lo > 0 ? j_lo : 0; j <= j_lo + 2 * n + 2; j++) {
+      const double dz = z_bed - (j + 0.5) * dp;
+      if (dim == 2) {
+        sum += vol * (double)wl_sph_kernel_w(k, (wl_real)(dx * dx + dz * dz));
+        continue;
+      }
+      const int l0 = (int)floor((y - reach) / dp) - 1;
+      for (int l = l0; l <= l0 + 2 * n + 2; l++) {
+        const double dy = y - (l + 0.5) * dp;
+        sum += vol * (double)wl_sph_kernel_w(k, (wl_real)(dx * dx + dy * dy + dz * dz));
+      }
+    }
+  }
+  return sum;
 }
 
 #endif
