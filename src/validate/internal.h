@@ -103,6 +103,20 @@ double wl_val_first_above(const double *t, const double *y, int n, int stride, d
 void wl_val_running_mean(const double *t, const double *y, int n, int stride, double width,
                          double *out);
 
+/* The crest of a passing wave in a gauge's record: the highest point of a
+ * quartic fitted by least squares to the contiguous samples around the
+ * highest one that reach WL_VAL_CREST_FIT_LEVEL of it. The highest sample
+ * of a surface that carries particle-scale noise reads the crest plus the
+ * noise's largest excursion (2-3 mm on a wave of 2-4 particles' height:
+ * 5-10 % of H/h = 0.1's 30 mm); the fit averages the noise over the top of
+ * the crest. Its own bias on a smooth crest: about -0.1 % of the height
+ * for sech^2 (the omitted sixth-order term over the fitted window). NaN with
+ * fewer than WL_VAL_CREST_FIT_MIN samples in the window or no positive
+ * sample; *t_crest (may be NULL) gets the crest's time. */
+#define WL_VAL_CREST_FIT_LEVEL 0.6
+#define WL_VAL_CREST_FIT_MIN 9
+double wl_val_crest_fit(const double *t, const double *y, int n, int stride, double *t_crest);
+
 /* Mean and largest value of the samples with t0 <= t <= t1; NaN if none. */
 double wl_val_window_mean(const double *t, const double *y, int n, int stride, double t0,
                           double t1);

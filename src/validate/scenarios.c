@@ -166,7 +166,7 @@ enum wl_status wl_val_run_solitary(const struct wl_val_case *c, const struct wl_
   if (!st) {
     /* speed: least squares of the crests' passage times at the scenario's
      * gauges (crest_centroid_time) */
-    double sx = 0, stt = 0, sxx = 0, sxt = 0, a_last = NAN, x_last = NAN;
+    double sx = 0, stt = 0, sxx = 0, sxt = 0, a_last = NAN, a_fit = NAN, x_last = NAN;
     int m = 0;
     for (int g = 0; g < s.n_gauges; g++) {
       const double xg = s.gauges[g].x.q.si;
@@ -175,16 +175,23 @@ enum wl_status wl_val_run_solitary(const struct wl_val_case *c, const struct wl_
       if (!(tp > cr.rec.t[0] + 0.02) || !(tp < cr.rec.t[cr.rec.n - 1] - 0.02)) continue;
       tp = crest_centroid_time(&cr.rec, g);
       sx += tp, stt += xg, sxx += tp * tp, sxt += tp * xg;
-      if (fabs(xg - (x0 + D)) < 0.25 * h) a_last = ap, x_last = xg;
+      if (fabs(xg - (x0 + D)) < 0.25 * h) {
+        a_last = ap, x_last = xg;
+        a_fit = wl_val_crest_fit(cr.rec.t, cr.rec.eta + g, (int)cr.rec.n, cr.rec.n_gauges, NULL);
+      }
       m++;
     }
     const double speed = m > 1 ? (m * sxt - sx * stt) / (m * sxx - sx * sx) : NAN;
     /* seed 003's ISPH loss, scaled to this travel time, is the bar */
     const double travel = D / c_ref;
     const double tol_a = SOL_ISPH_LOSS * travel / SOL_ISPH_TIME;
-    wl_val_rel(&lv->m[0], "crest height after 20 h", "m", isfinite(x_last) ? a_last : NAN, H, tol_a);
+    /* the crest fitted over the top of the record (wl_val_crest_fit), not
+     * the highest sample, whose particle-scale noise reads high on waves a
+     * few particles tall; the highest sample is reported beside it */
+    wl_val_rel(&lv->m[0], "crest height after 20 h", "m", isfinite(x_last) ? a_fit : NAN, H, tol_a);
     wl_val_rel(&lv->m[1], "celerity", "m/s", speed, c_ref, SOL_TOL_C);
-    lv->n_metrics = 2;
+    wl_val_rel(&lv->m[2], "highest sample at 20 h", "m", isfinite(x_last) ? a_last : NAN, H, NAN);
+    lv->n_metrics = 3;
   }
   wl_assess_case_clear(&cr);
   wl_scenario_clear(&s);

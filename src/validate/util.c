@@ -230,6 +230,61 @@ double wl_val_window_max(const double *t, const double *y, int n, int stride, do
   return mx;
 }
 
+double wl_val_crest_fit(const double *t, const double *y, int n, int stride, double *t_crest) {
+  if (t_crest) *t_crest = NAN;
+  if (n < 1) return NAN;
+  int best = 0;
+  for (int i = 1; i < n; i++)
+    if (y[(size_t)i * (size_t)stride] > y[(size_t)best * (size_t)stride]) best = i;
+  const double top = y[(size_t)best * (size_t)stride];
+  if (!(top > 0)) return NAN;
+  const double level = WL_VAL_CREST_FIT_LEVEL * top;
+  int a = best, b = best;
+  while (a > 0 && y[(size_t)(a - 1) * (size_t)stride] >= level) a--;
+  while (b + 1 < n && y[(size_t)(b + 1) * (size_t)stride] >= level) b++;
+  if (b - a + 1 < WL_VAL_CREST_FIT_MIN) return NAN;
+  /* least squares of c0 + c1 u + ... + c4 u^4, u = (t - tm) / w in [-1, 1] */
+  const double tm = 0.5 * (t[a] + t[b]), w = 0.5 * (t[b] - t[a]);
+  double A[5][6] = {{0}};
+  for (int i = a; i <= b; i++) {
+    const double u = (t[i] - tm) / w, v = y[(size_t)i * (size_t)stride];
+    double pw[9];
+    pw[0] = 1;
+    for (int k = 1; k < 9; k++) pw[k] = pw[k - 1] * u;
+    for (int r = 0; r < 5; r++) {
+      for (int c = 0; c < 5; c++) A[r][c] += pw[r + c];
+      A[r][5] += pw[r] * v;
+    }
+  }
+  for (int c = 0; c < 5; c++) { /* Gauss-Jordan with partial pivoting */
+    int piv = c;
+    for (int r = c + 1; r < 5; r++)
+      if (fabs(A[r][c]) > fabs(A[piv][c])) piv = r;
+    if (!(fabs(A[piv][c]) > 0)) return NAN;
+    for (int k = 0; k < 6; k++) {
+      const double tmp = A[c][k];
+      A[c][k] = A[piv][k];
+      A[piv][k] = tmp;
+    }
+    for (int r = 0; r < 5; r++) {
+      if (r == c) continue;
+      const double f = A[r][c] / A[c][c];
+      for (int k = c; k < 6; k++) A[r][k] -= f * A[c][k];
+    }
+  }
+  double coef[5];
+  for (int k = 0; k < 5; k++) coef[k] = A[k][5] / A[k][k];
+  /* the fitted curve's highest point on the window, on a fine grid */
+  double best_v = -INFINITY, best_u = 0;
+  for (int j = 0; j <= 2000; j++) {
+    const double u = -1.0 + j / 1000.0;
+    const double v = coef[0] + u * (coef[1] + u * (coef[2] + u * (coef[3] + u * coef[4])));
+    if (v > best_v) best_v = v, best_u = u;
+  }
+  if (t_crest) *t_crest = tm + best_u * w;
+  return best_v;
+}
+
 /* ---- simulation helpers ------------------------------------------------------- */
 
 double wl_val_wetted_length(const struct wl_sph_probe *pr, int dim, double x, double y,
