@@ -157,6 +157,27 @@ print('  peak at %.3f s, searched %.3f..%.3f s: late %s, caution %s' % (tp, t0, 
 raise SystemExit(0 if late == has and late == (end < 1.0) else 1)
 PY
 done
+# the explosion's coarse-spacing caution (assess.h
+# WL_ASSESS_EXPLOSION_RUNUP_PPH_MIN): present exactly when the run-up at the
+# wall, recomputed from the stored wall gauge, is under 6 particles high
+# once the record runs past the planned arrival; tiny.yaml's flume with an
+# explosion of 21.8 J alone (eta0 = 0.17 m) at dp = 0.02 m raises about 2.6. Release build only, as the late peaks above.
+sed '/solitary:/d; s/scenario: tiny/scenario: coarse/; s/energy: same-as-solitary/energy: 21.8 J/' \
+  tiny.yaml > coarse.yaml
+if [ -z "${WL_TEST_QUICK:-}" ]; then
+  msg=$("$bin" assess coarse.yaml --quiet --end-time 1.2 -o coarse 2>&1) || bad "coarse.yaml: $msg"
+  python3 - coarse <<'PY' && ok "coarse-spacing caution matches the stored run-up" || bad "coarse-spacing caution"
+import json, csv, sys
+d = sys.argv[1]
+s = json.load(open(d + '/summary.json'))['cases']['explosion']
+rows = list(csv.DictReader(open(d + '/explosion_gauges.csv')))
+runup = max(float(r['eta_wall_m']) for r in rows)
+pph = runup / 0.02
+has = 'caution' in s and 'particles high at dp' in s['caution']
+print('  run-up %.4f m = %.2f particles; caution %s' % (runup, pph, has))
+raise SystemExit(0 if has == (pph < 6) and has and ('%.1f particles' % pph) in s['caution'] else 1)
+PY
+fi
 msg=$("$bin" assess tiny.yaml --quiet --end-time 0.1 2>&1); rc=$?
 [ $rc = 2 ] && grep -q -- "--force" <<<"$msg" && ok "existing output directory refused (exit 2)" || bad "overwrite: exit $rc: $msg"
 "$bin" assess tiny.yaml --quiet --force --end-time 0.1 >/dev/null 2>&1 && ok "--force writes into it" || bad "--force failed"

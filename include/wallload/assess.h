@@ -116,6 +116,7 @@ struct wl_case_result {
    * still_owned: this result ran it and clears it */
   struct wl_case_result *still;
   int still_owned;
+  int still_run; /* this result is itself a still-water reference run */
   char name[32];
   enum wl_status status;    /* WL_OK, WL_EUNSTABLE, WL_EINTERRUPTED, or a setup error */
   char message[WL_ERROR_MSG_MAX]; /* why it stopped, when not WL_OK */
@@ -145,7 +146,7 @@ struct wl_case_result {
   /* A caution about the result, empty when there is none: the peak force
    * came in the last tenth of the record, so a larger load may follow
    * (case_caution in assess.c). */
-  char caution[320];
+  char caution[1024];
   struct wl_flume flume;    /* geometry, probes, gauges */
   struct wl_record rec;      /* the sampled series (sample.h) */
   struct wl_case_loads loads;
@@ -161,6 +162,17 @@ struct wl_case_result {
  * impulse_positive_rest_error): a wave that lifts the wall's force by a
  * few per cent of a deep water's force at rest (seawall3d.yaml: 3 %) [-]. */
 #define WL_ASSESS_REST_CAUTION 0.10
+
+/* An explosion's caution names the spacing when the run-up its waves raise
+ * at the wall is fewer than this many particles high: its short waves then
+ * lose height on the way at that spacing, and the ladder can converge
+ * smoothly to a wrong value. Measured on seawall.yaml's explosion
+ * (2026-11-28): at dp = 0.012 m (run-up about 3.8 particles, the 2-core
+ * ladder's finest level) its positive impulse read 27 % under the GPU
+ * ladder's, outside its band; at 0.006 m (7.7) and 0.0043 m (10.7) the two
+ * agreed within 0.02 % (docs/history/2026-11-28-level-true.md). One
+ * scenario's calibration: the threshold sits between 3.8 and 7.7 [-]. */
+#define WL_ASSESS_EXPLOSION_RUNUP_PPH_MIN 6.0
 
 enum { WL_ASSESS_MAX_LEVELS = WL_SCENARIO_MAX_LEVELS };
 

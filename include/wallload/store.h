@@ -203,7 +203,7 @@ struct wl_results_case {
   char name[32];
   char status[32];    /* "complete", "unstable", "interrupted", "failed" ("" not stored) */
   char stopped[2048]; /* why it stopped ("" when complete) */
-  char caution[512];  /* a caution about the result (late peak; "" when none) */
+  char caution[1024]; /* a caution about the result (late peak; "" when none) */
   double dp, h, c0, particles, fluid_particles, steps, runtime, end_time, time_reached;
   double cutoff;        /* low-pass cut-off of the filtered series [Hz] */
   double peaks_from;    /* peaks are searched from this time on [s] (assess.h) */

@@ -533,6 +533,19 @@ static void case_caution(struct wl_case_result *c) {
              used ? "; " : "", 100.0 * share, l->rest_force_spread,
              100.0 * (l->force_peak.value - l->rest_force) / l->rest_force);
   }
+  /* the explosion's waves at the wall, in particles (once the record runs
+   * past their planned arrival, twice peak_from) */
+  const double pph = l->runup / c->dp;
+  if (c->load == WL_CASE_EXPLOSION && !c->still_run && t1 >= 2.0 * t0 &&
+      pph < WL_ASSESS_EXPLOSION_RUNUP_PPH_MIN) {
+    const size_t used = strlen(c->caution);
+    snprintf(c->caution + used, sizeof c->caution - used,
+             "%sthe run-up at the wall (%.3g m) is %.1f particles high at dp = %.3g m: under "
+             "%.0f the explosion's short waves lose height before the wall and its loads may lie "
+             "outside the ladder's band (seawall.yaml at 3.8: its positive impulse 27 %% under a "
+             "finer ladder's); quote them from a finer spacing",
+             used ? "; " : "", l->runup, pph, c->dp, WL_ASSESS_EXPLOSION_RUNUP_PPH_MIN);
+  }
 }
 
 enum wl_status wl_assess_case(const struct wl_scenario *s, const struct wl_plan *plan,
@@ -581,6 +594,7 @@ static enum wl_status assess_one(const struct wl_scenario *s, const struct wl_pl
   c->load = load;
   snprintf(c->name, sizeof c->name, "%s%s", wl_flume_case_name(load),
            how & ASSESS_STILL_RUN ? ", still water" : "");
+  c->still_run = (how & ASSESS_STILL_RUN) != 0;
   enum wl_status st = wl_flume_build(s, plan, load, &c->flume, err);
   if (st) return st;
   const struct wl_backend_ops *ops = NULL;
