@@ -143,9 +143,11 @@ struct wl_case_result {
    * its wave arriving at 5.8 s). The impulse runs over the whole record. */
   double peak_from;
   double quiet_until;       /* the plan's: the wall at rest until then [s] (plan.h) */
-  /* A caution about the result, empty when there is none: the peak force
-   * came in the last tenth of the record, so a larger load may follow
-   * (case_caution in assess.c). */
+  /* Cautions about the result, "; "-separated, empty when there is none
+   * (case_caution in assess.c): the peak force came in the last tenth of
+   * the record (a larger load may follow); the still-water reference did
+   * not join; the force at rest leaves the positive impulse uncertain; an
+   * explosion's run-up at the wall is too few particles high. */
   char caution[1024];
   struct wl_flume flume;    /* geometry, probes, gauges */
   struct wl_record rec;      /* the sampled series (sample.h) */
