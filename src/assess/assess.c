@@ -529,7 +529,7 @@ static void case_caution(struct wl_case_result *c) {
     snprintf(c->caution + used, sizeof c->caution - used,
              "%sthe positive impulse is uncertain by %.2g %% from the force at rest alone: "
              "that force is known to about +-%.2g N/m (the halves of its window differ by twice "
-             "that) and the wave lifts the force by only %.2g %% of it",
+             "that) and the wave lifts the force by %.0f %% of it",
              used ? "; " : "", 100.0 * share, l->rest_force_spread,
              100.0 * (l->force_peak.value - l->rest_force) / l->rest_force);
   }
