@@ -168,12 +168,14 @@ struct wl_case_result {
 /* An explosion's caution names the spacing when the run-up its waves raise
  * at the wall is fewer than this many particles high: its short waves then
  * lose height on the way at that spacing, and the ladder can converge
- * smoothly to a wrong value. Measured on seawall.yaml's explosion
- * (2026-11-28): at dp = 0.012 m (run-up about 3.8 particles, the 2-core
- * ladder's finest level) its positive impulse read 27 % under the GPU
- * ladder's, outside its band; at 0.006 m (7.7) and 0.0043 m (10.7) the two
- * agreed within 0.02 % (docs/history/2026-11-28-level-true.md). One
- * scenario's calibration: the threshold sits between 3.8 and 7.7 [-]. */
+ * smoothly to a wrong value. Each run's own run-up, measured on
+ * seawall.yaml's flume (2026-11-28, H200; docs/history/2026-11-28-sensors-
+ * and-crests.md): its explosion at dp = 0.012 m raises 1.9 particles (the
+ * 2-core ladder's finest level, whose positive impulse read 27 % under the
+ * GPU ladder's, outside its band), at 0.0043 m 10.7 (converged); a 0.083 g
+ * charge at 3.5 particles still gained 20 % on its last refinement, a
+ * 0.664 g charge gained 0.7 % from 3.6 to 6.3. The threshold sits above
+ * the worst case seen unconverged, with a margin [-]. */
 #define WL_ASSESS_EXPLOSION_RUNUP_PPH_MIN 6.0
 
 enum { WL_ASSESS_MAX_LEVELS = WL_SCENARIO_MAX_LEVELS };

@@ -542,8 +542,8 @@ static void case_caution(struct wl_case_result *c) {
     snprintf(c->caution + used, sizeof c->caution - used,
              "%sthe run-up at the wall (%.3g m) is %.1f particles high at dp = %.3g m: under "
              "%.0f the explosion's short waves lose height before the wall and its loads may lie "
-             "outside the ladder's band (seawall.yaml at 3.8: its positive impulse 27 %% under a "
-             "finer ladder's); quote them from a finer spacing",
+             "outside the ladder's band (seawall.yaml's at 1.9: its positive impulse 27 %% under "
+             "a finer ladder's); quote them from a finer spacing",
              used ? "; " : "", l->runup, pph, c->dp, WL_ASSESS_EXPLOSION_RUNUP_PPH_MIN);
   }
 }
