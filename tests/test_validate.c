@@ -11,6 +11,8 @@
  *    and on the exact solitary waves H/h = 0.1 and 0.6 within 0.2 %; with a particle-scale noise of
  *    +-4 % of the height it stays within 1 % where the highest sample
  *    reads the noise's excursion high;
+ *  - the celerity's crest time (wl_val_crest_centroid_time): the sech^2
+ *    crest's time within dt/20, NaN where the record cuts its window;
  *  - spheric2 (SPHERIC Test 2, reference/spheric2/README.md) without its 4 s
  *    of 3D: the layout against the shared data README's numbers (tank,
  *    water, box, P1-P4 half a spacing off the box face, H1-H4); the built
@@ -85,6 +87,19 @@ static void crest_fit(void) {
   CHECK_REL(an, H, 0.01, "crest fit with +-4 % noise: within 1 % of H");
   CHECK_TRUE(top > 1.02 * H, "the highest noisy sample reads more than 2 % high (what the fit removes)");
   CHECK_TRUE(isnan(wl_val_crest_fit(t, y, 5, 1, NULL)), "fewer than 9 samples over the crest: NaN");
+  /* the half-height centroid: the crest's time on the symmetric crest; NaN
+   * where the window is cut by the record's start (the wave already over
+   * the gauge at t = 0) or its end */
+  /* its own error: the window starts and ends on samples, which need not
+   * straddle the crest evenly; one edge sample (y = H/2 at most) out of
+   * about 21 in the window (y ~ 0.75 H) moves the centroid by up to dt/30 */
+  CHECK_ABS(wl_val_crest_centroid_time(t, y, N, 1), t0, dt / 20,
+            "half-height centroid of a clean sech^2: the crest's time within dt/20");
+  const int k_cut = (int)((t0 - 0.5 * T) / dt); /* inside the half-height window */
+  CHECK_TRUE(isnan(wl_val_crest_centroid_time(t + k_cut, y + k_cut, N - k_cut, 1)),
+             "half-height window cut by the record's start: NaN");
+  CHECK_TRUE(isnan(wl_val_crest_centroid_time(t, y, (int)((t0 + 0.5 * T) / dt), 1)),
+             "half-height window cut by the record's end: NaN");
   /* the exact (Euler) solitary waves that validate starts (waves.h, checked
    * against REFERENCES 3.4 in test_waves), passing a gauge sampled every
    * 0.01 s as validate samples them: the steepest, H/h = 0.6, has the

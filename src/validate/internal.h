@@ -36,6 +36,7 @@ struct wl_val_case {
   double dp0_quick;   /* coarsest spacing of the quick ladder [m] */
   double p[4];        /* case parameters (depth, H/h, ...) */
   int quick_levels;   /* levels of the quick ladder when --ladder is not given (0: 3) */
+  int levels;         /* levels of the full ladder when --ladder is not given (0: 3) */
 };
 
 extern const struct wl_val_case wl_val_cases[];
@@ -118,6 +119,19 @@ void wl_val_running_mean(const double *t, const double *y, int n, int stride, do
 #define WL_VAL_CREST_FIT_LEVEL 0.7
 #define WL_VAL_CREST_FIT_MIN 9
 double wl_val_crest_fit(const double *t, const double *y, int n, int stride, double *t_crest);
+
+/* Passage time of a crest in the record y[k * stride], k < n, at times t:
+ * the centroid of y over the contiguous samples around the highest one
+ * where y is at least half of it. A solitary wave's profile is symmetric
+ * about its crest, so this is the crest's time; unlike the highest sample it
+ * averages the surface's particle noise, which for a wave 2-4 dp high moves
+ * the highest sample by several outputs (celerity +6 % at H/h = 0.1,
+ * 2026-11-26). NaN where that window reaches the record's first or last
+ * sample: a window cut by the record's end, or by the initial wave already
+ * over the gauge at t = 0, has its centroid pulled towards the cut (the
+ * long H/h = 0.1 wave's celerity moved by up to 4 % between levels,
+ * 2026-11-28), or where no sample is positive. */
+double wl_val_crest_centroid_time(const double *t, const double *y, int n, int stride);
 
 /* Mean and largest value of the samples with t0 <= t <= t1; NaN if none. */
 double wl_val_window_mean(const double *t, const double *y, int n, int stride, double t0,

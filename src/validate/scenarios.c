@@ -110,32 +110,20 @@ static void crest(const struct wl_record *r, int g, double *t_peak, double *a_pe
   *a_peak = ap;
 }
 
-/* Passage time of the crest at gauge g: the centroid of eta over the
- * contiguous samples around the highest one where eta is at least half of
- * it. A solitary wave's profile is symmetric about its crest, so this is
- * the crest's time; unlike the highest sample it averages the surface's
- * particle noise, which for a wave 2-4 dp high moves the highest sample
- * by several outputs (celerity +6 % at H/h = 0.1, 2026-11-26). */
-static double crest_centroid_time(const struct wl_record *r, int g) {
-  const size_t ng = (size_t)r->n_gauges;
-  if (!r->n) return NAN;
-  size_t best = 0;
-  for (size_t k = 0; k < r->n; k++)
-    if (r->eta[k * ng + (size_t)g] > r->eta[best * ng + (size_t)g]) best = k;
-  const double half = 0.5 * r->eta[best * ng + (size_t)g];
-  size_t a = best, b = best;
-  while (a > 0 && r->eta[(a - 1) * ng + (size_t)g] >= half) a--;
-  while (b + 1 < r->n && r->eta[(b + 1) * ng + (size_t)g] >= half) b++;
-  double se = 0, ste = 0;
-  for (size_t k = a; k <= b; k++) {
-    const double e = r->eta[k * ng + (size_t)g];
-    se += e;
-    ste += r->t[k] * e;
-  }
-  return se > 0 ? ste / se : NAN;
-}
-
 /* ---- solitary propagation ------------------------------------------------------------------ */
+
+/* Half the wave's width at half its height [m]: X > 0 where eta(X) = H / 2,
+ * by bisection (eta falls monotonically from the crest at X = 0). */
+static double half_width(const struct wl_solitary *sw) {
+  double lo = 0, hi = 1.0 / sw->K;
+  while (wl_waves_solitary_eta(sw, hi) > 0.5 * sw->H) hi *= 2;
+  for (int it = 0; it < 60; it++) {
+    const double mid = 0.5 * (lo + hi);
+    if (wl_waves_solitary_eta(sw, mid) > 0.5 * sw->H) lo = mid;
+    else hi = mid;
+  }
+  return 0.5 * (lo + hi);
+}
 
 #define SOL_TOL_C 0.02    /* issue 3: celerity within 2 % of seed 003 eq 23 */
 #define SOL_ISPH_LOSS 0.10 /* seed 003: ISPH loses 10 % of the height in 5 s */
@@ -157,15 +145,18 @@ enum wl_status wl_val_run_solitary(const struct wl_val_case *c, const struct wl_
   /* the exact wave's celerity (exact.c, checked against REFERENCES 3.4's
    * table in test_waves) */
   const double x0 = plan.solitary.crest_x0, c_ref = wl_waves_solitary_celerity(&plan.solitary.wave);
-  /* the crest passes the last gauge (x0 + D) at D / c; two more depths of
-   * travel so the peak is resolved there */
-  const double t_end = (D + 2 * h) / c_ref;
+  /* the crest passes the last gauge (x0 + D) at D / c; then two more
+   * depths of travel, or two half-widths at half height if longer (H/h =
+   * 0.1: 0.97 m against 2 h = 0.6 m), so that the gauge sees the whole of
+   * the crest that the celerity's centroid and the height's fit read */
+  const double x_half = half_width(&plan.solitary.wave);
+  const double t_end = (D + fmax(2 * h, 2 * x_half)) / c_ref;
   struct wl_case_result cr;
   memset(&cr, 0, sizeof cr);
   st = run_case(&s, &plan, WL_CASE_SOLITARY, ctx, t_end, &cr, lv, err);
   if (!st) {
     /* speed: least squares of the crests' passage times at the scenario's
-     * gauges (crest_centroid_time) */
+     * gauges (wl_val_crest_centroid_time) */
     double sx = 0, stt = 0, sxx = 0, sxt = 0, a_last = NAN, a_fit = NAN, x_last = NAN;
     int m = 0;
     for (int g = 0; g < s.n_gauges; g++) {
@@ -173,12 +164,13 @@ enum wl_status wl_val_run_solitary(const struct wl_val_case *c, const struct wl_
       double tp, ap;
       crest(&cr.rec, g, &tp, &ap);
       if (!(tp > cr.rec.t[0] + 0.02) || !(tp < cr.rec.t[cr.rec.n - 1] - 0.02)) continue;
-      tp = crest_centroid_time(&cr.rec, g);
-      sx += tp, stt += xg, sxx += tp * tp, sxt += tp * xg;
       if (fabs(xg - (x0 + D)) < 0.25 * h) {
         a_last = ap, x_last = xg;
         a_fit = wl_val_crest_fit(cr.rec.t, cr.rec.eta + g, (int)cr.rec.n, cr.rec.n_gauges, NULL);
       }
+      tp = wl_val_crest_centroid_time(cr.rec.t, cr.rec.eta + g, (int)cr.rec.n, cr.rec.n_gauges);
+      if (!isfinite(tp)) continue;
+      sx += tp, stt += xg, sxx += tp * tp, sxt += tp * xg;
       m++;
     }
     const double speed = m > 1 ? (m * sxt - sx * stt) / (m * sxx - sx * sx) : NAN;

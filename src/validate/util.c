@@ -353,3 +353,23 @@ enum wl_status wl_val_run_sim(const struct wl_val_ctx *ctx, const struct wl_sph_
   if (st) return wl_error_set(err, st, "%s", run_err.msg);
   return WL_OK;
 }
+
+double wl_val_crest_centroid_time(const double *t, const double *y, int n, int stride) {
+  if (n < 1) return NAN;
+  const size_t st = (size_t)stride;
+  int best = 0;
+  for (int k = 1; k < n; k++)
+    if (y[(size_t)k * st] > y[(size_t)best * st]) best = k;
+  const double half = 0.5 * y[(size_t)best * st];
+  if (!(half > 0)) return NAN;
+  int a = best, b = best;
+  while (a > 0 && y[(size_t)(a - 1) * st] >= half) a--;
+  while (b + 1 < n && y[(size_t)(b + 1) * st] >= half) b++;
+  if (a == 0 || b + 1 == n) return NAN;
+  double se = 0, ste = 0;
+  for (int k = a; k <= b; k++) {
+    se += y[(size_t)k * st];
+    ste += t[k] * y[(size_t)k * st];
+  }
+  return ste / se;
+}

@@ -133,10 +133,12 @@ enum wl_status wl_validate_run(int i, const struct wl_validate_opts *opts,
   snprintf(r->title, sizeof r->title, "%s", c->title);
   r->ratio = sqrt(2.0);
   r->order = r->extrapolated = NAN;
-  /* the quick ladder of a costly case (spheric2: one 3D level) is shorter
-   * unless --ladder says otherwise */
+  /* the quick ladder of a costly case (spheric2: one 3D level) is shorter,
+   * the full ladder of a case that converges only at finer levels (the
+   * solitary waves) longer, unless --ladder says otherwise */
   const int n_levels = opts->n_levels > 0                  ? opts->n_levels
                        : opts->quick && c->quick_levels > 0 ? c->quick_levels
+                       : !opts->quick && c->levels > 0      ? c->levels
                                                             : 3;
   if (n_levels > WL_VALIDATE_MAX_LEVELS)
     return wl_error_set(err, WL_EINPUT, "validate: --ladder %d: at most %d levels", n_levels,
