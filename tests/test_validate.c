@@ -265,7 +265,13 @@ static void spheric2_short_run(void) {
   CHECK_TRUE(st == WL_OK && lv.status == WL_OK, "spheric2 runs 0.01 s at dp = 0.1 m");
   if (st) printf("%s\n", err.msg);
   CHECK_ABS(lv.t_reached, 0.01, 1e-9, "to its end time");
-  CHECK_TRUE(lv.n_metrics == 18, "18 metrics: P1 4 and its wall particles' plateau, P2-P4 6, heights 7");
+  CHECK_TRUE(lv.n_metrics == 19,
+             "19 metrics: P1 4 and its wall particles' plateau, P2-P4 6, heights 7, the height "
+             "in front of the box over P1's plateau window");
+  CHECK_TRUE(lv.n_metrics == 19 && !strcmp(lv.m[18].name, "H x 0.992 (data H2) over P1's plateau window") &&
+                 isnan(lv.m[18].tol) && isnan(lv.m[18].value),
+             "the height in front of the box over P1's plateau window: reported, NaN after 0.01 s");
+  if (lv.n_metrics == 19) printf("experiment's H2 over P1's plateau window: %.4f m\n", lv.m[18].reference);
   CHECK_TRUE(lv.n_metrics > 4 && !strcmp(lv.m[4].name, "P1 plateau, wall particles' pressure") &&
                  isnan(lv.m[4].tol),
              "P1's plateau from the wall particles: reported, not judged");

@@ -34,7 +34,8 @@
  *    2.5 ms: five samples of either series), 30 % (REFERENCES 6);
  *  - tension: the most negative raw sample of P1-P4, in rho g H, judged
  *    >= -1 (issue 17);
- *  - P2-P4 plateau, H heights: reported, not judged;
+ *  - P2-P4 plateau, H heights: reported, not judged; the height 0.17 m in
+ *    front of the box over P1's plateau window, beside the experiment's;
  *  - P1's plateau from the wall particles' own pressure (the box face's
  *    first layer within a spacing of the sensor): reported, not judged;
  *    it tells a probe artefact (the two parting) from the flow's pressure,
@@ -425,6 +426,15 @@ enum wl_status wl_val_run_spheric2(const struct wl_val_case *c, const struct wl_
       wl_val_compare(r.s.t, yc, r.s.n, d.h[i].x, d.h[i].y, d.h[i].n, 0, t1, &rm, &cr, &nu);
       free(yc);
       wl_val_rmse(&lv->m[j++], hr_name[i], "m", rm, S2_WATER_H, NAN);
+    }
+    /* the water standing 0.17 m in front of the box's face over P1's
+     * plateau window: whether the plateau's pressure follows the depth there
+     * (a deeper pile-up) or departs from it (the flow's dynamics) */
+    if (!st) {
+      const double w0 = me[0].arrival + S2_PLATEAU_T0, w1 = me[0].arrival + S2_PLATEAU_T1;
+      wl_val_rel(&lv->m[j++], "H x 0.992 (data H2) over P1's plateau window", "m",
+                 wl_val_window_mean(r.s.t, r.s.y + WL_VAL_S2_NP + 1, r.s.n, K, w0, w1),
+                 wl_val_window_mean(d.h[1].x, d.h[1].y, d.h[1].n, 1, w0, w1), NAN);
     }
     lv->n_metrics = j;
   }
