@@ -1,4 +1,4 @@
-/* test_sph_vgrad.c: the residual viscosity (sph/vgrad.h).
+/* test_sph_vgrad.c: the residual and the eddy viscosity (sph/vgrad.h).
  *  - the corrected velocity gradient of a linear field v = v0 + G0 x is G0
  *    at every particle of a jittered 2D block, its edges and corners
  *    included (the first-order correction's contract; reference: G0, the
@@ -11,7 +11,10 @@
  *    under 1 % of sqrt(g h) over the last 5 sqrt(h/g) of 20 sqrt(h/g)
  *    (issue 17's still-water bar, REFERENCES 1.1: the fluid at rest).
  *    Without it the same tank reads 3.2 % (`wallload validate hydrostatic`,
- *    reference/RESULTS.md). */
+ *    reference/RESULTS.md);
+ *  - the eddy viscosity (numerics.smagorinsky) of that field against its
+ *    closed form (C_s dp)^2 |S|, and its pair term against the laminar
+ *    term of sph/interact.h at nu = nu_t. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -20,6 +23,7 @@
 #include "wallload/plan.h"
 #include "wallload/scene.h"
 #include "wallload/sph.h"
+#include "wallload/sph/interact.h"
 #include "wallload/sph/vgrad.h"
 
 enum { NX = 16, NZ = 12, N = NX * NZ };
@@ -103,6 +107,44 @@ static void linear_field(void) {
   CHECK_TRUE(mon_max > 1e-3, "the term on the whole v_ij of the linear field's pairs is not 0");
   CHECK_ABS(res_max / mon_max, 0, 1e-3,
             "residual term on a linear field, relative to the same term on the whole v_ij");
+  /* the eddy viscosity (numerics.smagorinsky): nu_t of the linear field
+   * from each particle's gradient against the closed form from G0, S =
+   * (G0 + G0^T)/2, |S| = sqrt(2 S:S) = sqrt(3.2) 1/s; and its pair term
+   * against the laminar term of sph/interact.h with nu = nu_t (the same
+   * physics, written separately there) */
+  struct wl_sph_params pe = cfg.prm;
+  pe.smagorinsky = 0.12;
+  struct wl_sph_const ke;
+  if (wl_sph_const_make(&pe, &ke, &err)) {
+    printf("FAIL eddy setup: %s\n", err.msg);
+    wl_test_failures++;
+  } else {
+    double s2 = 0;
+    for (int a = 0; a < 2; a++)
+      for (int b = 0; b < 2; b++) s2 += 2 * pow(0.5 * (G0[a][b] + G0[b][a]), 2);
+    const double nut0 = pow(0.12 * DP, 2) * sqrt(s2);
+    double nut_err = 0, pair_err = 0;
+    for (int s = 0; s < N; s++) {
+      const wl_real gs[4] = {gbuf[0][s], gbuf[1][s], gbuf[2][s], gbuf[3][s]};
+      nut_err = fmax(nut_err, fabs(wl_sph_eddy_nu(2, &ke, gs) / nut0 - 1));
+    }
+    for (int b = 1; b < N; b++) {
+      const wl_real dx = (wl_real)(x[0] - x[b]), dz = (wl_real)(z[0] - z[b]);
+      const wl_real r2 = dx * dx + dz * dz;
+      if (!(r2 < ke.support2)) continue;
+      const struct wl_sph_pair o =
+          wl_sph_pair_eval(1, 1, &ke, r2, 0, dz, rho[0], 1 / rho[0], 0, rho[b], 1 / rho[b],
+                           ke.mass / rho[b], 0, 0, (wl_real)(4 * nut0));
+      const double c = wl_sph_pair_eddy(&ke, r2, (wl_real)nut0, rho[0] + rho[b]);
+      pair_err = fmax(pair_err, fabs(c / o.c_v - 1));
+    }
+    printf("# eddy viscosity: nu_t %.4g m^2/s (closed form), largest relative error %.2g; pair term "
+           "against the laminar term's, largest relative difference %.2g\n",
+           nut0, nut_err, pair_err);
+    /* G within 1e-4 of |G0| (above) moves |S| by about as much */
+    CHECK_ABS(nut_err, 0, 1e-3, "eddy viscosity of a linear field: (C_s dp)^2 |S| of its gradient");
+    CHECK_ABS(pair_err, 0, 1e-5, "eddy pair term: the laminar term's with nu = nu_t");
+  }
   free(begin);
   free(cursor);
 }

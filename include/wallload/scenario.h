@@ -159,7 +159,7 @@ struct wl_scenario {
   } run;
   struct {
     struct wl_scenario_value coefh, coefsound, cfl, alpha, viscosity, nu, density_diffusion,
-        residual_viscosity, shifting, integrator, verlet_steps, boundary;
+        residual_viscosity, smagorinsky, shifting, integrator, verlet_steps, boundary;
   } numerics;
   struct {
     struct wl_scenario_value template_name;

@@ -81,6 +81,7 @@ struct wl_validate_result {
   char verdict[512];  /* "pass", or which metric missed by how much */
   char integrator[16]; /* time integrator of the runs: "symplectic" or "verlet" */
   double residual;     /* residual viscosity alpha_r of the runs (0: off) */
+  double smagorinsky;  /* the eddy viscosity's Smagorinsky constant of the runs (0: off) */
   char backend[16];    /* backend of the runs: "cpu" or "cuda" */
 };
 
@@ -100,6 +101,8 @@ struct wl_validate_opts {
   int threads;               /* 0: OpenMP's default */
   int verlet;                /* 1: the Verlet integrator instead of the symplectic default */
   double residual;           /* residual viscosity alpha_r of every run (0: the default, off) */
+  double smagorinsky;        /* the eddy viscosity's Smagorinsky constant of every run (0: the
+                                default, off) */
   const char *backend;       /* NULL or "cpu": the CPU; "cuda": the GPU (WL_EUNSUPPORTED
                                 without one); "auto": the GPU when there is one */
   const char *reference_dir; /* NULL: WL_VALIDATE_REFERENCE_DIR (the source tree's reference/) */

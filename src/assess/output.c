@@ -364,6 +364,8 @@ static enum wl_status write_summary(const struct wl_scenario *s, const struct wl
            "delta-SPH coefficient (0: off)", 0);
       jval(&t, "residual_viscosity", prm->residual_alpha, "1",
            "residual viscosity alpha_r (0: off; sph/vgrad.h)", 0);
+      jval(&t, "smagorinsky", prm->smagorinsky, "1",
+           "Smagorinsky constant of the eddy viscosity (0: off; sph/vgrad.h)", 0);
       jval(&t, "shifting", prm->shift_coef, "1", "particle shifting coefficient A (0: off)", 0);
       jval(&t, "wall_condition", prm->boundary, "1",
            prm->boundary == WL_SPH_BOUND_DBC ? "0: dynamic boundary particles (DBC)"

@@ -511,8 +511,8 @@ static enum wl_status cpu_init(void **ctx, const struct wl_sph_config *cfg,
     }
     memcpy(c->p.rho_h, c->p.rho, sizeof(wl_real) * (size_t)host->n);
   }
-  if (k->rav > 0) {
-    /* the residual viscosity's velocity gradients (sph/vgrad.h) */
+  if (k->rav > 0 || k->nut_c > 0) {
+    /* the velocity gradients of the residual and the eddy viscosity (sph/vgrad.h) */
     const size_t bytes = sizeof(wl_real) * (size_t)(c->p.capacity > 0 ? c->p.capacity : 1);
     int ok = 1;
     for (int q = 0; q < dim * dim; q++) ok = ok && (c->gv[q] = malloc(bytes)) != NULL;

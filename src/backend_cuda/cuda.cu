@@ -2398,7 +2398,8 @@ static enum wl_status init_mode(void **ctx, const struct wl_sph_config *cfg,
     const char *pdl = getenv("WL_CUDA_PDL"); /* 0: off, to measure what it gains */
     c->pdl = dev.sm_major >= 9 && !(pdl && !strcmp(pdl, "0"));
   }
-  const int residual = k->rav > 0;
+  /* the velocity gradients' terms (sph/vgrad.h): the residual and the eddy viscosity */
+  const int residual = k->rav > 0 || k->nut_c > 0;
   c->mode = mode >= 0 ? mode : residual ? MODE_FAST : default_mode(dim, host->n);
   if (!(dim == 3 ? loop_built(c->mode, 3) : loop_built(c->mode, 2))) {
     cuda_free(c);
@@ -2407,8 +2408,8 @@ static enum wl_status init_mode(void **ctx, const struct wl_sph_config *cfg,
   }
   if (residual && c->mode != MODE_FAST && c->mode != MODE_REF) {
     cuda_free(c);
-    return wl_error_set(err, WL_EINPUT, "cuda backend: the residual viscosity runs in the fast "
-                        "or the reference force loop, not in loop %d", c->mode);
+    return wl_error_set(err, WL_EINPUT, "cuda backend: the residual and the eddy viscosity run "
+                        "in the fast or the reference force loop, not in loop %d", c->mode);
   }
   if ((st = wl_sph_grid_make(cfg, k, &c->grid, err))) {
     cuda_free(c);

@@ -21,7 +21,8 @@
 
 #define VALIDATE_USAGE                                                                            \
   "usage: wallload validate [CASE...] [--ladder N] [--quick] [-o DIR] [--threads N] "            \
-  "[--integrator symplectic|verlet] [--residual-viscosity A] [--backend cpu|cuda|auto] "      \
+  "[--integrator symplectic|verlet] [--residual-viscosity A] [--smagorinsky CS] "                \
+  "[--backend cpu|cuda|auto] "      \
   "[--reference DIR]"
 
 static void help(void) {
@@ -38,6 +39,8 @@ static void help(void) {
          "  --integrator NAME  symplectic (default) or verlet: the time integrator of every run\n"
          "  --residual-viscosity A  every run with the residual viscosity alpha_r = A (0 to 1;\n"
          "                   default 0, off; docs/numerics.md)\n"
+         "  --smagorinsky CS every run with the eddy viscosity (CS dp)^2 |S| (0 to 0.3; default\n"
+         "                   0, off; 0.12 as DualSPHysics' Laminar+SPS; docs/numerics.md)\n"
          "  --backend NAME   cpu (default), cuda, or auto (the GPU when there is one), as assess;\n"
          "                   spheric2's full ladder (0.2 to 1.1 M particles) is a GPU run: on\n"
          "                   2 CPU cores its finest level alone would take more than a day\n"
@@ -136,7 +139,8 @@ enum wl_status wl_cli_validate(int argc, char **argv, struct wl_error *err) {
       opts.quick = 1;
     } else if (!strcmp(a, "-o") || !strcmp(a, "--ladder") || !strcmp(a, "--threads") ||
                !strcmp(a, "--reference") || !strcmp(a, "--integrator") ||
-               !strcmp(a, "--residual-viscosity") || !strcmp(a, "--backend")) {
+               !strcmp(a, "--residual-viscosity") || !strcmp(a, "--smagorinsky") ||
+               !strcmp(a, "--backend")) {
       if (i + 1 >= argc) {
         st = wl_error_set(err, WL_EUSAGE, "validate: %s needs a value\n%s", a, VALIDATE_USAGE);
         break;
@@ -160,6 +164,12 @@ enum wl_status wl_cli_validate(int argc, char **argv, struct wl_error *err) {
                             "validate: --residual-viscosity: found '%s'; expected 0 to %g", v,
                             WL_SPH_ALPHA_MAX);
         opts.residual = r;
+      } else if (!strcmp(a, "--smagorinsky")) {
+        const double cs = strtod(v, &end);
+        if (*end || !(cs >= 0 && cs <= WL_SPH_SMAGORINSKY_MAX))
+          st = wl_error_set(err, WL_EUSAGE, "validate: --smagorinsky: found '%s'; expected 0 to %g",
+                            v, WL_SPH_SMAGORINSKY_MAX);
+        opts.smagorinsky = cs;
       } else if (!strcmp(a, "--integrator")) {
         if (!strcmp(v, "verlet") || !strcmp(v, "symplectic"))
           opts.verlet = !strcmp(v, "verlet");
@@ -181,7 +191,8 @@ enum wl_status wl_cli_validate(int argc, char **argv, struct wl_error *err) {
     } else if (a[0] == '-') {
       st = wl_error_set(err, WL_EUSAGE,
                         "validate: unknown option '%s'; valid: --ladder N, --quick, -o DIR, "
-                        "--threads N, --integrator NAME, --residual-viscosity A, --backend NAME, "
+                        "--threads N, --integrator NAME, --residual-viscosity A, --smagorinsky CS, "
+                        "--backend NAME, "
                         "--reference DIR, "
                         "--list\n%s",
                         a, VALIDATE_USAGE);

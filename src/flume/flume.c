@@ -116,6 +116,7 @@ static void set_params(const struct wl_scenario *s, const struct wl_plan *plan, 
   prm->nu = s->numerics.nu.q.si;
   prm->delta = s->numerics.density_diffusion.q.si;
   prm->residual_alpha = s->numerics.residual_viscosity.q.si;
+  prm->smagorinsky = s->numerics.smagorinsky.q.si;
   if (prm->delta == 0.0) prm->ddt = WL_SPH_DDT_NONE;
   prm->rho0 = plan->rho;
   prm->g = plan->g;

@@ -888,6 +888,19 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
             "water still, but makes solitary waves about 2.5 %% fast and costs coarse levels up to "
             "17 %% of scenarios/seawall.yaml's explosion peak; do not quote its loads in a design",
          s->numerics.residual_viscosity.q.si);
+  if (s->numerics.smagorinsky.q.si > 0 && s->numerics.viscosity.choice != WL_VISCOSITY_LAMINAR) {
+    char rbuf[32];
+    return wl_error_set(err, WL_EINPUT,
+                        "%s%s: numerics.smagorinsky: %g adds an eddy viscosity to the laminar "
+                        "viscosity's nu; expected 0 or numerics.viscosity: laminar",
+                        s->path, where(&s->numerics.smagorinsky, rbuf),
+                        s->numerics.smagorinsky.q.si);
+  }
+  if (s->numerics.smagorinsky.q.si > 0)
+    note(p, "numerics.smagorinsky = %g is experimental (docs/numerics.md): an eddy viscosity "
+            "where the flow shears at the particle scale; measured on the reference cases, not "
+            "yet on the main job's loads",
+         s->numerics.smagorinsky.q.si);
   enum wl_status st = plan_sides(s, p, err);
   if (st) return st;
   /* each case's speed of sound from its own largest depth, as its flume

@@ -194,6 +194,10 @@ static const struct wl_key numerics_keys[] = {
      WL_SPH_ALPHA_MAX, 0, 0, "0", NULL, NO_FLAG, 0,
      "alpha of the residual viscosity: artificial viscosity on the velocity's departure from its "
      "linear field (0: off; docs/numerics.md)"},
+    {"smagorinsky", KT_QTY, WL_DIM_NONE, OFF(numerics.smagorinsky), NULL, 0,
+     WL_SPH_SMAGORINSKY_MAX, 0, 0, "0", NULL, NO_FLAG, 0,
+     "Smagorinsky constant C_s of the eddy viscosity (C_s dp)^2 |S| added to nu (0: off; "
+     "0.12 as DualSPHysics' Laminar+SPS; docs/numerics.md)"},
     {"shifting", KT_ENUM, WL_DIM_NONE, OFF(numerics.shifting), onoff_choices, NONE, NONE, 0, 0,
      "off", NULL, NO_FLAG, 0, "particle shifting"},
     {"integrator", KT_ENUM, WL_DIM_NONE, OFF(numerics.integrator), integrator_choices, NONE, NONE,

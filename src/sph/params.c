@@ -81,6 +81,13 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
     snprintf(range, sizeof range, "must be in [0, %g]", WL_SPH_ALPHA_MAX);
     return bad(err, "residual_alpha", prm->residual_alpha, range);
   }
+  if (!(prm->smagorinsky >= 0 && prm->smagorinsky <= WL_SPH_SMAGORINSKY_MAX)) {
+    snprintf(range, sizeof range, "must be in [0, %g]", WL_SPH_SMAGORINSKY_MAX);
+    return bad(err, "smagorinsky", prm->smagorinsky, range);
+  }
+  if (prm->smagorinsky > 0 && prm->visc != WL_SPH_VISC_LAMINAR)
+    return bad(err, "smagorinsky", prm->smagorinsky,
+               "needs the laminar viscosity (the eddy viscosity adds to its nu)");
   if (prm->residual_alpha > 0 && prm->integrator == WL_SPH_VERLET)
     return bad(err, "residual_alpha", prm->residual_alpha,
                "needs the symplectic integrator (the Verlet leapfrog amplifies a velocity-"
@@ -149,6 +156,7 @@ enum wl_status wl_sph_const_make(const struct wl_sph_params *prm, struct wl_sph_
   k->lam_ff = (wl_real)(art ? 0.0 : 4.0 * prm->nu);
   k->lam_fb = (wl_real)(art ? 0.0 : 4.0 * prm->nu * prm->visc_bound_factor);
   k->rav = (wl_real)(prm->residual_alpha * c0 * h);
+  k->nut_c = (wl_real)(prm->smagorinsky * prm->smagorinsky * prm->dp * prm->dp);
   k->ddt_k = (wl_real)(prm->ddt == WL_SPH_DDT_NONE ? 0.0 : prm->delta * 2.0 * h * c0);
   k->ddt_fb = prm->ddt == WL_SPH_DDT_FOURTAKAS_FULL && prm->boundary == WL_SPH_BOUND_ADAMI
                   ? k->ddt_k

@@ -51,6 +51,7 @@ static enum wl_status tank_build(const struct tank *tk, double dp, double h_max,
   wl_plan_default_numerics(&cfg->prm); /* what assess runs */
   if (ctx->verlet) cfg->prm.integrator = WL_SPH_VERLET;
   cfg->prm.residual_alpha = ctx->residual;
+  cfg->prm.smagorinsky = ctx->smagorinsky;
   cfg->n_threads = ctx->threads;
   if (tk->coefsound > 0) cfg->prm.coefsound = tk->coefsound;
   struct wl_sph_const k;

@@ -14,6 +14,7 @@ struct wl_val_ctx {
   int quick;
   int verlet;          /* 1: the Verlet integrator (sph/integrate.h) */
   double residual;     /* residual viscosity alpha_r (sph/vgrad.h); 0: off */
+  double smagorinsky;  /* the eddy viscosity's Smagorinsky constant (sph/vgrad.h); 0: off */
   const struct wl_backend_ops *ops; /* the builders' backend (NULL: the CPU's) */
   const char *backend; /* the scenario cases' (wl_assess_opts.backend): "cpu" or "cuda" */
   const char *name;    /* the case's, for progress */

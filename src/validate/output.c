@@ -107,6 +107,7 @@ static enum wl_status write_json(const char *path, const struct wl_validate_resu
     bprintf(&b, ",\n     \"integrator\": ");
     jstr(&b, c->integrator);
     bprintf(&b, ",\n     \"residual_viscosity\": %g", c->residual);
+    bprintf(&b, ", \"smagorinsky\": %g", c->smagorinsky);
     bprintf(&b, ", \"backend\": ");
     jstr(&b, c->backend[0] ? c->backend : "cpu");
     bprintf(&b, ", \"ratio\": ");

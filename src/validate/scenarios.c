@@ -51,6 +51,10 @@ static enum wl_status load_scenario(const char *path, double dp, const struct wl
     s->numerics.residual_viscosity.q.si = ctx->residual;
     s->numerics.residual_viscosity.given = 1;
   }
+  if (ctx->smagorinsky > 0) { /* validate --smagorinsky */
+    s->numerics.smagorinsky.q.si = ctx->smagorinsky;
+    s->numerics.smagorinsky.given = 1;
+  }
   if (ctx->verlet) { /* validate --integrator verlet */
     s->numerics.integrator.choice = WL_INTEGRATOR_VERLET;
     s->numerics.integrator.given = 1;

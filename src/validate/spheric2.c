@@ -145,6 +145,7 @@ enum wl_status wl_val_spheric2_build(double dp, const struct wl_val_ctx *ctx,
   cfg->prm.expected_speed = 2.0 * sqrt(cfg->prm.g * S2_WATER_H);
   if (ctx && ctx->verlet) cfg->prm.integrator = WL_SPH_VERLET;
   if (ctx) cfg->prm.residual_alpha = ctx->residual;
+  if (ctx) cfg->prm.smagorinsky = ctx->smagorinsky;
   cfg->n_threads = ctx ? ctx->threads : 0;
   struct wl_sph_const k;
   enum wl_status st = wl_sph_const_make(&cfg->prm, &k, err);

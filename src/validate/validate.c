@@ -145,10 +145,11 @@ enum wl_status wl_validate_run(int i, const struct wl_validate_opts *opts,
                         WL_VALIDATE_MAX_LEVELS);
   struct wl_val_ctx ctx = {opts->reference_dir ? opts->reference_dir : WL_VALIDATE_REFERENCE_DIR,
                            opts->threads, opts->quick, opts->verlet, opts->residual,
-                           &wl_backend_cpu_ops, "cpu",
+                           opts->smagorinsky, &wl_backend_cpu_ops, "cpu",
                            c->name, 0, opts->progress, opts->user};
   snprintf(r->integrator, sizeof r->integrator, "%s", opts->verlet ? "verlet" : "symplectic");
   r->residual = opts->residual;
+  r->smagorinsky = opts->smagorinsky;
   /* the backend, as assess picks it (--backend cpu|cuda|auto) */
   const char *want = opts->backend ? opts->backend : "cpu";
   if (strcmp(want, "cpu") && strcmp(want, "cuda") && strcmp(want, "auto"))

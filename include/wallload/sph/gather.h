@@ -147,9 +147,10 @@ WL_HD static WL_INLINE void wl_sph_pair_j_of(const int want_ace, const int with_
  * gets the same terms in the same order: the same bits as without cut. The
  * GPU's one-thread-per-particle loop uses it; the CPU's lanes evaluate
  * every candidate (branch-free, vectorised).
- * residual: add the residual viscosity's term (sph/vgrad.h) to each fluid
- * pair (want_ace and with_ddt, not a mirror image); e->gv and in->g must
- * then hold the gradients.
+ * residual: add the terms of the velocity gradients (sph/vgrad.h) to each
+ * pair (want_ace, not a mirror image): the residual viscosity's to a fluid
+ * pair (with_ddt) where k->rav > 0, the eddy viscosity's to a fluid or wall
+ * pair where k->nut_c > 0; e->gv and in->g must then hold the gradients.
  * dim, laminar, want_ace, with_ddt, lanes, cut, residual: compile-time
  * constants. av, lam: see wl_sph_pair_eval. */
 WL_HD static WL_INLINE void wl_sph_gather_range(const int dim, const int laminar,
@@ -190,18 +191,31 @@ WL_HD static WL_INLINE void wl_sph_gather_range(const int dim, const int laminar
       const wl_real uz = in->v[az][l] - uzj;
       wl_sph_pair_sum(dim, laminar, want_ace, with_ddt, k, dx, dy, dz, ux, uy, uz, in->rho[l],
                       in->inv_rho[l], in->p[l], rho_j, inv_rho_j, vol_j, p_j, av, lam, acc, l);
-      if (residual && want_ace && with_ddt && !mirror) {
-        /* fluid pairs: the residual viscosity (sph/vgrad.h) */
+      if (residual && want_ace && !mirror) {
+        /* the terms of the velocity gradients (sph/vgrad.h): the residual
+         * viscosity (fluid pairs) and the eddy viscosity (fluid and wall
+         * pairs), each where it is on */
         wl_real gi[WL_SPH_DIM_MAX * WL_SPH_DIM_MAX], gj[WL_SPH_DIM_MAX * WL_SPH_DIM_MAX];
         for (int q = 0; q < dim * dim; q++) {
           gi[q] = in->g[q][l];
-          gj[q] = WL_LDG(e->gv[q] + j);
+          gj[q] = with_ddt ? WL_LDG(e->gv[q] + j) : WL_R(0.0);
         }
-        const wl_real c =
-            wl_sph_pair_residual(dim, k, dx, dy, dz, ux, uy, uz, gi, gj, in->rho[l] + rho_j);
-        acc->a[0][l] += c * dx;
-        if (dim == 3) acc->a[1][l] += c * dy;
-        acc->a[2][l] += c * dz;
+        if (with_ddt && k->rav > 0) {
+          const wl_real c =
+              wl_sph_pair_residual(dim, k, dx, dy, dz, ux, uy, uz, gi, gj, in->rho[l] + rho_j);
+          acc->a[0][l] += c * dx;
+          if (dim == 3) acc->a[1][l] += c * dy;
+          acc->a[2][l] += c * dz;
+        }
+        if (k->nut_c > 0) {
+          const wl_real nut_i = wl_sph_eddy_nu(dim, k, gi);
+          const wl_real nut = with_ddt ? WL_R(0.5) * (nut_i + wl_sph_eddy_nu(dim, k, gj)) : nut_i;
+          const wl_real c = wl_sph_pair_eddy(k, dx * dx + dy * dy + dz * dz, nut,
+                                             in->rho[l] + rho_j);
+          acc->a[0][l] += c * ux;
+          if (dim == 3) acc->a[1][l] += c * uy;
+          acc->a[2][l] += c * uz;
+        }
       }
     }
   }
@@ -319,9 +333,14 @@ WL_HD static WL_INLINE void wl_sph_gather_block(const int dim, const int laminar
       for (int r = 0; r < nr; r++)
         wl_sph_gather_range(dim, laminar, 1, 1, lanes, cut, k, e, &in, bf[first[r]],
                             bf[last[r] + 1], k->av_ff, k->lam_ff, 0, &f, 0);
-    for (int r = 0; r < nr; r++)
-      wl_sph_gather_range(dim, laminar, 1, 0, lanes, cut, k, e, &in, bb[first[r]],
-                          bb[last[r] + 1], k->av_fb, k->lam_fb, 0, &b, 0);
+    if (e->gv[0] && k->nut_c > 0) /* the eddy viscosity's wall pairs */
+      for (int r = 0; r < nr; r++)
+        wl_sph_gather_range(dim, laminar, 1, 0, lanes, cut, k, e, &in, bb[first[r]],
+                            bb[last[r] + 1], k->av_fb, k->lam_fb, 0, &b, 1);
+    else
+      for (int r = 0; r < nr; r++)
+        wl_sph_gather_range(dim, laminar, 1, 0, lanes, cut, k, e, &in, bb[first[r]],
+                            bb[last[r] + 1], k->av_fb, k->lam_fb, 0, &b, 0);
     wl_sph_gather_mirrors(dim, laminar, lanes, cut, k, g, e, &in, 1, cell, span, &f, &b);
     for (int l = 0; l < m; l++)
       wl_sph_finish(dim, k, e, i0 + l, 1, in.rho[l], &f, &b, l);

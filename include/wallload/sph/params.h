@@ -68,6 +68,7 @@ enum wl_sph_integrator {
 #define WL_SPH_CFL_MIN_OPEN 0.0
 #define WL_SPH_CFL_MAX 1.0
 #define WL_SPH_ALPHA_MAX 1.0
+#define WL_SPH_SMAGORINSKY_MAX 0.3 /* Smagorinsky constants in use: 0.1-0.2 */
 #define WL_SPH_NU_MAX 1.0      /* [m^2/s] */
 #define WL_SPH_DELTA_MAX 1.0
 #define WL_SPH_VERLET_STEPS_MAX 1000
@@ -117,6 +118,8 @@ struct wl_sph_params {
   enum wl_sph_ddt ddt;      /* default WL_SPH_DDT_FOURTAKAS_FULL */
   double delta;             /* density diffusion coefficient [-]; default 0.1 */
   double residual_alpha;    /* residual viscosity alpha_r (sph/vgrad.h) [-]; 0: off (default) */
+  double smagorinsky;       /* Smagorinsky constant C_s of the eddy viscosity (sph/vgrad.h) [-];
+                               0: off (default); laminar viscosity only */
   double cfl;               /* CFL number [-]; default 0.2 */
   enum wl_sph_integrator integrator; /* default WL_SPH_SYMPLECTIC */
   enum wl_sph_boundary boundary;     /* wall condition; default WL_SPH_BOUND_ADAMI */
@@ -200,6 +203,7 @@ struct wl_sph_const {
   wl_real lam_ff;     /* 4 nu (Lo & Shao), fluid-fluid [m^2/s] */
   wl_real lam_fb;     /* 4 nu visc_bound_factor, fluid-boundary [m^2/s] */
   wl_real rav;        /* residual_alpha c0 h (sph/vgrad.h), fluid-fluid [m^2/s]; 0: off */
+  wl_real nut_c;      /* (smagorinsky dp)^2, the eddy viscosity's (sph/vgrad.h) [m^2]; 0: off */
   wl_real ddt_k;      /* delta * 2h * c0 (DualSPHysics DDTkh * Cs0) [m^2/s] */
   wl_real ddt_fb;     /* the same for a fluid particle's wall neighbours: ddt_k under the
                          full diffusion with the wall condition, else 0 (sph/interact.h) */
