@@ -131,8 +131,10 @@ WL_HD static WL_INLINE wl_real wl_sph_pair_residual(const int dim, const struct 
  * viscosity"): Smagorinsky's (1963) model of the motion below the particle
  * scale, as the sub-particle-scale (SPS) model of Dalrymple & Rogers (2006,
  * Coastal Eng. 53:141) and DualSPHysics' Laminar+SPS viscosity take it,
- * in its eddy-viscosity part (their SPS stress tensor's isotropic part,
- * which the pressure absorbs, left out):
+ * in its eddy-viscosity part: the divergence of 2 nu_t S written as the
+ * laminar operator with each pair's nu_t (exact where nu_t is uniform),
+ * instead of their SPS stress tensor's own divergence, whose isotropic
+ * part the pressure absorbs:
  *
  *   nu_t,i = (C_s dp)^2 |S_i|,   |S| = sqrt(2 S:S),   S = (G + G^T) / 2,
  *
