@@ -3,7 +3,10 @@
  * small 2D dam break, a small 3D dam break with a pillar, and the same 3D
  * dam break between free-slip side walls (the solver's mirror planes), the
  * 2D and the free-slip 3D dam breaks with particle shifting, and
- * the 2D and the free-slip 3D dam breaks with the Verlet integrator, the
+ * the 2D and the free-slip 3D dam breaks with the Verlet integrator, with
+ * the residual viscosity and with the eddy viscosity (sph/vgrad.h; the eddy
+ * cases added 2026-11-28 without a GPU to run them: their first run is the
+ * next session's), the
  * 2D dam break with the split and the fast force loops and the free-slip
  * 3D one with the fast loop (the loops that are not their dimension's
  * default; fast is 2D's above WL_LANES_MAX_PARTICLES), and each run's GPU
@@ -110,6 +113,7 @@ struct scene_case {
   int verlet; /* the Verlet integrator (sph/integrate.h) instead of the symplectic one */
   const char *loop; /* the GPU force loop, "split" or "fast"; NULL: the product's */
   double residual;  /* residual viscosity alpha_r (sph/vgrad.h); 0: off */
+  double smagorinsky; /* the eddy viscosity's C_s (sph/vgrad.h), with laminar viscosity; 0: off */
 };
 
 static enum wl_status build(const struct scene_case *sc_, struct wl_sph_config *cfg,
@@ -120,6 +124,11 @@ static enum wl_status build(const struct scene_case *sc_, struct wl_sph_config *
   if (sc_->shift) cfg->prm.shift_coef = 2.0;
   if (sc_->verlet) cfg->prm.integrator = WL_SPH_VERLET;
   cfg->prm.residual_alpha = sc_->residual;
+  if (sc_->smagorinsky > 0) { /* the eddy viscosity adds to the laminar viscosity's nu */
+    cfg->prm.visc = WL_SPH_VISC_LAMINAR;
+    cfg->prm.nu = 1e-6;
+    cfg->prm.smagorinsky = sc_->smagorinsky;
+  }
   if (sc_->mirror) {
     cfg->prm.mirror_lo = cfg->prm.mirror_hi = 1;
     cfg->prm.mirror_y_lo = 0.0;
@@ -378,7 +387,7 @@ static void blocks_vs_steps(const char *name, int verlet, double rho_max_factor,
   wl_error_clear(&err);
   wl_error_clear(&e1);
   wl_error_clear(&e2);
-  const struct scene_case c = {2, 0.01, 0, name, 0, 0, verlet, NULL, 0};
+  const struct scene_case c = {2, 0.01, 0, name, 0, 0, verlet, NULL, 0, 0};
   struct wl_sph_config cfg;
   struct wl_particles init = {0};
   if (build(&c, &cfg, &init, &err) != WL_OK) {
@@ -482,19 +491,19 @@ int main(void) {
     CHECK_ABS((double)bad_sqrt, 0, 0, "wl_sph_sqrt: floats whose bits differ from sqrtf");
     CHECK_ABS((double)bad_rcp, 0, 0, "wl_sph_rcp: floats whose bits differ from 1/x");
   }
-  const struct scene_case c2 = {2, 0.01, 300, "2D dam break", 0, 0, 0, NULL, 0};
-  const struct scene_case c3 = {3, 0.01, 100, "3D dam break with pillar", 0, 0, 0, NULL, 0};
+  const struct scene_case c2 = {2, 0.01, 300, "2D dam break", 0, 0, 0, NULL, 0, 0};
+  const struct scene_case c3 = {3, 0.01, 100, "3D dam break with pillar", 0, 0, 0, NULL, 0, 0};
   const struct scene_case c3m = {3, 0.01, 100, "3D dam break with pillar, free-slip side walls "
-                                 "(mirror planes)", 1, 0, 0, NULL, 0};
+                                 "(mirror planes)", 1, 0, 0, NULL, 0, 0};
   const struct scene_case c2s = {2, 0.01, 300, "2D dam break with particle shifting", 0, 1, 0,
-                                 NULL, 0};
+                                 NULL, 0, 0};
   const struct scene_case c3s = {3, 0.01, 100, "3D dam break with pillar between free-slip walls, "
-                                 "particle shifting", 1, 1, 0, NULL, 0};
+                                 "particle shifting", 1, 1, 0, NULL, 0, 0};
   /* Verlet: 600 steps (15 of them Euler steps), as many force evaluations
    * as the symplectic 2D case's 300 */
-  const struct scene_case c2v = {2, 0.01, 600, "2D dam break, Verlet integrator", 0, 0, 1, NULL, 0};
+  const struct scene_case c2v = {2, 0.01, 600, "2D dam break, Verlet integrator", 0, 0, 1, NULL, 0, 0};
   const struct scene_case c3v = {3, 0.01, 200, "3D dam break with pillar between free-slip walls, "
-                                 "Verlet integrator", 1, 0, 1, NULL, 0};
+                                 "Verlet integrator", 1, 0, 1, NULL, 0, 0};
   run_case(&c2);
   run_case(&c3);
   run_case(&c3m);
@@ -505,18 +514,25 @@ int main(void) {
   /* the loops that are not the default of their dimension (the tests'
    * build of cuda.cu) */
   const struct scene_case c2x = {2, 0.01, 300, "2D dam break, split force loop", 0, 0, 0,
-                                 "split", 0};
+                                 "split", 0, 0};
   const struct scene_case c3x = {3, 0.01, 100, "3D dam break with pillar between free-slip walls, "
-                                 "fast force loop", 1, 0, 0, "fast", 0};
+                                 "fast force loop", 1, 0, 0, "fast", 0, 0};
   /* the 2D loop of runs of WL_LANES_MAX_PARTICLES (cuda.cu) and more */
-  const struct scene_case c2f = {2, 0.01, 300, "2D dam break, fast force loop", 0, 0, 0, "fast", 0};
+  const struct scene_case c2f = {2, 0.01, 300, "2D dam break, fast force loop", 0, 0, 0, "fast", 0, 0};
   /* the residual viscosity (sph/vgrad.h): the product picks the fast loop */
   const struct scene_case c2r = {2, 0.01, 300, "2D dam break with the residual viscosity", 0, 0, 0,
-                                 NULL, 0.5};
+                                 NULL, 0.5, 0};
   const struct scene_case c3r = {3, 0.01, 100, "3D dam break with pillar between free-slip walls, "
-                                 "residual viscosity", 1, 0, 0, NULL, 0.5};
+                                 "residual viscosity", 1, 0, 0, NULL, 0.5, 0};
   run_case(&c2r);
   run_case(&c3r);
+  /* the eddy viscosity (sph/vgrad.h): the same gradient pass and loop */
+  const struct scene_case c2e = {2, 0.01, 300, "2D dam break with the eddy viscosity", 0, 0, 0,
+                                 NULL, 0, 0.12};
+  const struct scene_case c3e = {3, 0.01, 100, "3D dam break with pillar between free-slip walls, "
+                                 "eddy viscosity", 1, 0, 0, NULL, 0, 0.12};
+  run_case(&c2e);
+  run_case(&c3e);
   run_case(&c2x);
   run_case(&c3x);
   run_case(&c2f);
