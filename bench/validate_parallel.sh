@@ -5,6 +5,8 @@
 #   [JOBS=N] [INTEGRATOR=verlet] bench/validate_parallel.sh BIN OUTDIR [LADDER] [CASE...]
 # JOBS: processes at once (default: the number of cores); INTEGRATOR: the
 # time integrator of every run (validate --integrator; default symplectic);
+# LADDER: levels of every case (default, or ''/empty: each case's own, 3 and
+# the solitary cases 5);
 # REF: the reference/ directory (validate --reference; default: the one the
 # binary was built from, which a carried binary does not have). Writes
 # OUTDIR/<case>/validation.json|csv|pdf and OUTDIR/<case>.log;
@@ -12,7 +14,7 @@
 # On the device machine: bench/assess_e2e.sh pack here, then run with carry
 # [".e2e"] and BIN=.e2e/wallload (LD_LIBRARY_PATH=.e2e/lib).
 set -u
-bin=$1 out=$2 ladder=${3:-3}
+bin=$1 out=$2 ladder=${3:-}
 shift 3 2>/dev/null || shift $#
 mkdir -p "$out"
 if [ $# -eq 0 ]; then
@@ -22,7 +24,8 @@ if [ $# -eq 0 ]; then
 fi
 one() {
   local a; a=$(date +%s)
-  "$bin" validate "$1" --ladder "$ladder" --threads 1 ${INTEGRATOR:+--integrator "$INTEGRATOR"} \
+  "$bin" validate "$1" ${ladder:+--ladder "$ladder"} --threads 1 \
+    ${INTEGRATOR:+--integrator "$INTEGRATOR"} \
     ${REF:+--reference "$REF"} \
     -o "$out/$1" >"$out/$1.log" 2>&1
   echo "== $1 rc=$? wall=$(( $(date +%s) - a )) s"
