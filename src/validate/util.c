@@ -230,19 +230,29 @@ double wl_val_window_max(const double *t, const double *y, int n, int stride, do
   return mx;
 }
 
+/* The crest of the record y[k * stride], k < n: the contiguous samples
+ * [*a, *b] around the highest one where y is at least `level` times it.
+ * 0, or -1 where no sample is positive. */
+static int crest_window(const double *y, int n, int stride, double level, int *a, int *b) {
+  if (n < 1) return -1;
+  const size_t st = (size_t)stride;
+  int best = 0;
+  for (int k = 1; k < n; k++)
+    if (y[(size_t)k * st] > y[(size_t)best * st]) best = k;
+  const double top = y[(size_t)best * st];
+  if (!(top > 0)) return -1;
+  *a = *b = best;
+  while (*a > 0 && y[(size_t)(*a - 1) * st] >= level * top) (*a)--;
+  while (*b + 1 < n && y[(size_t)(*b + 1) * st] >= level * top) (*b)++;
+  return 0;
+}
+
 double wl_val_crest_fit(const double *t, const double *y, int n, int stride, double *t_crest) {
   if (t_crest) *t_crest = NAN;
-  if (n < 1) return NAN;
-  int best = 0;
-  for (int i = 1; i < n; i++)
-    if (y[(size_t)i * (size_t)stride] > y[(size_t)best * (size_t)stride]) best = i;
-  const double top = y[(size_t)best * (size_t)stride];
-  if (!(top > 0)) return NAN;
-  const double level = WL_VAL_CREST_FIT_LEVEL * top;
-  int a = best, b = best;
-  while (a > 0 && y[(size_t)(a - 1) * (size_t)stride] >= level) a--;
-  while (b + 1 < n && y[(size_t)(b + 1) * (size_t)stride] >= level) b++;
-  if (b - a + 1 < WL_VAL_CREST_FIT_MIN) return NAN;
+  int a, b;
+  if (crest_window(y, n, stride, WL_VAL_CREST_FIT_LEVEL, &a, &b) ||
+      b - a + 1 < WL_VAL_CREST_FIT_MIN)
+    return NAN;
   /* least squares of c0 + c1 u + ... + c4 u^4, u = (t - tm) / w in [-1, 1] */
   const double tm = 0.5 * (t[a] + t[b]), w = 0.5 * (t[b] - t[a]);
   double A[5][6] = {{0}};
@@ -283,6 +293,18 @@ double wl_val_crest_fit(const double *t, const double *y, int n, int stride, dou
   }
   if (t_crest) *t_crest = tm + best_u * w;
   return best_v;
+}
+
+double wl_val_crest_centroid_time(const double *t, const double *y, int n, int stride) {
+  int a, b;
+  if (crest_window(y, n, stride, 0.5, &a, &b) || a == 0 || b + 1 == n) return NAN;
+  const size_t st = (size_t)stride;
+  double se = 0, ste = 0;
+  for (int k = a; k <= b; k++) {
+    se += y[(size_t)k * st];
+    ste += t[k] * y[(size_t)k * st];
+  }
+  return ste / se;
 }
 
 /* ---- simulation helpers ------------------------------------------------------- */
@@ -352,24 +374,4 @@ enum wl_status wl_val_run_sim(const struct wl_val_ctx *ctx, const struct wl_sph_
   if (st == WL_EUNSTABLE) return WL_OK;
   if (st) return wl_error_set(err, st, "%s", run_err.msg);
   return WL_OK;
-}
-
-double wl_val_crest_centroid_time(const double *t, const double *y, int n, int stride) {
-  if (n < 1) return NAN;
-  const size_t st = (size_t)stride;
-  int best = 0;
-  for (int k = 1; k < n; k++)
-    if (y[(size_t)k * st] > y[(size_t)best * st]) best = k;
-  const double half = 0.5 * y[(size_t)best * st];
-  if (!(half > 0)) return NAN;
-  int a = best, b = best;
-  while (a > 0 && y[(size_t)(a - 1) * st] >= half) a--;
-  while (b + 1 < n && y[(size_t)(b + 1) * st] >= half) b++;
-  if (a == 0 || b + 1 == n) return NAN;
-  double se = 0, ste = 0;
-  for (int k = a; k <= b; k++) {
-    se += y[(size_t)k * st];
-    ste += t[k] * y[(size_t)k * st];
-  }
-  return ste / se;
 }

@@ -92,6 +92,7 @@ struct wl_sph_lanes {
   wl_real v[WL_SPH_DIM_MAX][WL_SPH_LANES];
   wl_real rho[WL_SPH_LANES], inv_rho[WL_SPH_LANES], p[WL_SPH_LANES];
   wl_real g[WL_SPH_DIM_MAX * WL_SPH_DIM_MAX][WL_SPH_LANES]; /* velocity gradient (residual) */
+  wl_real nut[WL_SPH_LANES]; /* its eddy viscosity (sph/vgrad.h), where k->nut_c > 0 */
 };
 
 /* The pair of lane l (the particle's r_ij = (dx, dy, dz), v_ij = (ux, uy,
@@ -208,7 +209,7 @@ WL_HD static WL_INLINE void wl_sph_gather_range(const int dim, const int laminar
           acc->a[2][l] += c * dz;
         }
         if (k->nut_c > 0) {
-          const wl_real nut_i = wl_sph_eddy_nu(dim, k, gi);
+          const wl_real nut_i = in->nut[l];
           const wl_real nut = with_ddt ? WL_R(0.5) * (nut_i + wl_sph_eddy_nu(dim, k, gj)) : nut_i;
           const wl_real c = wl_sph_pair_eddy(k, dx * dx + dy * dy + dz * dz, nut,
                                              in->rho[l] + rho_j);
@@ -315,8 +316,11 @@ WL_HD static WL_INLINE void wl_sph_gather_block(const int dim, const int laminar
     in.rho[l] = e->rho[i];
     in.inv_rho[l] = wl_sph_rcp(e->rho[i]);
     in.p[l] = e->press[i];
+    wl_real gl[WL_SPH_DIM_MAX * WL_SPH_DIM_MAX] = {0};
     if (e->gv[0])
-      for (int q = 0; q < dim * dim; q++) in.g[q][l] = e->gv[q][i];
+      for (int q = 0; q < dim * dim; q++) in.g[q][l] = gl[q] = e->gv[q][i];
+    /* the particle's own eddy viscosity, once for all its pairs */
+    in.nut[l] = e->gv[0] && k->nut_c > 0 ? wl_sph_eddy_nu(dim, k, gl) : WL_R(0.0);
   }
   struct wl_sph_acc f; /* fluid neighbours */
   for (int l = 0; l < lanes; l++) {
