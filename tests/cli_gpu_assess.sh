@@ -4,7 +4,9 @@
 # geometry of tests/test_solitary_wall.c at dp = 0.02 m) with --backend cpu
 # and --backend cuda, in 2D and in a 3D flume 0.16 m wide (free-slip side
 # walls and the symmetry plane: the solver's mirror planes, on the GPU in
-# its split force loop), and the engineer-facing numbers of summary.json and the
+# its split force loop) and in 2D with two resolutions (resolution.refine:
+# the coupling edits a zone of each level on the host between steps,
+# backend.h zone_download), and the engineer-facing numbers of summary.json and the
 # gauge series compared within the tolerances of BENCHMARKS.md ("assess end to
 # end, CPU vs CUDA"): the backends differ in float rounding (order of the
 # neighbour sums, FMA contraction, the GPU's square root and division), which
@@ -25,11 +27,12 @@ command -v nvidia-smi >/dev/null && nvidia-smi -L >/dev/null 2>&1 ||
   { echo "SKIP: no NVIDIA GPU (nvidia-smi -L)"; exit 77; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-for d in 2d 3d; do
-  extra=""
+for d in 2d 3d 2dr; do
+  extra="" refine=""
   [ $d = 3d ] && extra="
   dimensions: 3
   width: 0.16 m"
+  [ $d = 2dr ] && refine=", refine: {from: 2.3 m}"
   cat > "$work/wall$d.yaml" <<YAML
 scenario: gpuwall$d
 water: {depth: 0.2 m}
@@ -39,12 +42,12 @@ wall: {x: 3.287 m, height: 0.6 m, probes: 20}
 gauges: [{name: G1, x: 2.5 m}]
 loads:
   solitary: {height: 0.06 m, generation: initial, at: 1.392 m}
-resolution: {dp: 0.02 m}
+resolution: {dp: 0.02 m$refine}
 run: {output_interval: 0.005 s}
 YAML
 done
 cd "$work" || exit 1
-for d in 2d 3d; do
+for d in 2d 3d 2dr; do
   # until the reflected crest is back at G1 (arrival at the wall 1.19 s)
   msg=$("$bin" assess wall$d.yaml --backend cuda --quiet --end-time 2.0 -o gpu$d 2>&1); rc=$?
   if [ $rc != 0 ] && grep -q "no usable GPU" <<<"$msg"; then
@@ -55,7 +58,7 @@ for d in 2d 3d; do
   [ $rc = 0 ] && ok "$d: assess --backend cpu (exit 0)" || bad "$d: assess --backend cpu: exit $rc: $msg"
 done
 [ $fail = 0 ] || { echo "$fail failed"; exit 1; }
-for d in 2d 3d; do
+for d in 2d 3d 2dr; do
 python3 - $d <<'PY' || fail=$((fail+1))
 import csv, json, sys
 d = sys.argv[1]
@@ -84,6 +87,10 @@ for key, tol in [('peak_force', 0.03), ('peak_force_boundary', 0.05), ('impulse'
     rel = abs(y - x) / abs(x)
     check('%s within %g %%' % (key, 100 * tol), rel <= tol,
           'cpu %.6g, cuda %.6g, %+.2f %%' % (x, y, 100 * (y - x) / abs(x)))
+if d == '2dr':  # two resolutions (vres.h): the water the levels own moves alike
+    wa, wb = v(ca, 'water_change'), v(cb, 'water_change')
+    check('water the levels own changes alike (within 0.1 %)', abs(wb - wa) <= 1e-3,
+          'cpu %+.4f %%, cuda %+.4f %%' % (100 * wa, 100 * wb))
 # gauge G1 before the wave reaches the wall: the rounding has not grown yet
 H = 0.06
 ga = list(csv.DictReader(open('cpu%s/solitary_gauges.csv' % d)))

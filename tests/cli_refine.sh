@@ -3,9 +3,9 @@
 # through `check` and `assess`: the plan prints both levels and what they
 # save, the run completes with the wall in the fine level, its force at
 # rest is rho g d^2/2 (closed form, within the 1.5 % the uniform flume's
-# lattice reads), snapshots carry each particle's dp, and the CUDA backend
-# is refused by name. The accuracy against a uniform run is
-# test_solitary_wall's (label accuracy).
+# lattice reads), and snapshots carry each particle's dp. The accuracy
+# against a uniform run is test_solitary_wall's (label accuracy); the CUDA
+# backend against the CPU's, cli_gpu_assess.sh.
 set -u
 bin=$1; src=$2
 fail=0
@@ -73,9 +73,6 @@ print("force at rest", rest, "reference", static, "(Tait %.2f, kappa %.5f)" % (t
       "samples", len(f))
 sys.exit(0 if len(f) > 5 and abs(rest / static - 1) < 0.015 else 1)
 PY
-out=$("$bin" assess refine.yaml --quiet --end-time 0.01 --backend cuda -o cuda-try 2>&1); rc=$?
-[ $rc = 2 ] && grep -q "resolution.refine" <<<"$out" && ok "the CUDA backend refused by name (exit 2)" ||
-  bad "backend cuda: exit $rc: $out"
 # from: auto: the plan places the interface (test_plan checks the rule by
 # hand) and says so; an explosion beside it keeps one resolution, said
 # (dp = 0.0075 m: the coarse level at 4 particles a wave height; check only)

@@ -296,12 +296,21 @@ struct wl_backend_ops {
                                   double *moment, struct wl_error *err);
   enum wl_status (*run_start)(void *ctx, const struct wl_sph_block_in *in, struct wl_error *err);
   enum wl_status (*run_finish)(void *ctx, struct wl_sph_block_out *out, struct wl_error *err);
-  /* Optional (NULL: the backend's state cannot be edited from the host):
-   * overwrite the state fields (WL_FIELD_SORT) with host's, particles in
-   * the order the last download gave them, with no step between the two.
-   * For a driver that edits particles between steps (vres.h: the buffers'
-   * interpolated values, particles parked and revived). */
-  enum wl_status (*upload)(void *ctx, const struct wl_particles *host, struct wl_error *err);
+  /* Optional, both or neither (NULL: the backend's state cannot be edited
+   * from the host). For a driver that edits a few particles between steps
+   * (vres.h: the buffers' interpolated values, particles parked and
+   * revived) without moving the whole state across (a GPU's bus):
+   * zone_download copies the state fields (WL_FIELD_SORT) of every particle
+   * whose x lies in [x_lo, x_hi], and of the first n_parked fluid particles
+   * outside it that are parked (body WL_SPH_BODY_EXCLUDED), into host,
+   * compacted in the backend's order (so boundary particles first; host->n
+   * and n_bound set; host allocated for the backend's particle count), and
+   * each one's place in the backend into idx; zone_upload writes host's
+   * particles back to those places, with no step between the two. */
+  enum wl_status (*zone_download)(void *ctx, double x_lo, double x_hi, int n_parked,
+                                  struct wl_particles *host, int *idx, struct wl_error *err);
+  enum wl_status (*zone_upload)(void *ctx, const struct wl_particles *host, const int *idx,
+                                struct wl_error *err);
 };
 
 /* Most wall loads one snapshot computes (backend.h snapshot). */

@@ -126,6 +126,20 @@ void wl_particles_clear(struct wl_particles *p);
 enum wl_status wl_particles_copy_state(struct wl_particles *dst, const struct wl_particles *src,
                                        struct wl_error *err);
 
+/* The places of a zone (backend.h zone_download) in p, in p's order, into
+ * idx (room for p->n): every particle whose x lies in [x_lo, x_hi], and the
+ * first n_parked fluid particles outside it that are parked (body
+ * WL_SPH_BODY_EXCLUDED). Returns their number. */
+int wl_particles_zone_select(const struct wl_particles *p, double x_lo, double x_hi, int n_parked,
+                             int *idx);
+
+/* The state fields of src's particles idx[0..m) into dst's [0, m) (room
+ * for m), dst's n = m and n_bound the number of them below src's n_bound
+ * (idx ascending); and back: dst's particles idx[k] from src's k < src->n. */
+void wl_particles_gather(struct wl_particles *dst, const struct wl_particles *src, const int *idx,
+                         int m);
+void wl_particles_scatter(struct wl_particles *dst, const struct wl_particles *src, const int *idx);
+
 /* ---- simulation ----------------------------------------------------------- */
 
 /* Prescribed horizontal motion X(t) of a moving body (piston paddle),
@@ -218,12 +232,16 @@ enum wl_status wl_sph_sim_run(struct wl_sph_sim *sim, const struct wl_sph_run_op
  * particle. NULL on failure (err set). */
 const struct wl_particles *wl_sph_sim_particles(struct wl_sph_sim *sim, struct wl_error *err);
 
-/* The host copy of the state for editing between steps (src/sph/vres.c:
- * buffer values, particles parked and revived), as wl_sph_sim_particles;
- * wl_sph_sim_commit writes it back before the next step. Only for a backend
- * with upload (backend.h; WL_EUNSUPPORTED otherwise) and outside a run. */
-struct wl_particles *wl_sph_sim_edit(struct wl_sph_sim *sim, struct wl_error *err);
-enum wl_status wl_sph_sim_commit(struct wl_sph_sim *sim, struct wl_error *err);
+/* A zone of the state for editing between steps (src/sph/vres.c: buffer
+ * values, particles parked and revived): the particles whose x lies in
+ * [x_lo, x_hi] and the first n_parked parked fluid particles outside it
+ * (backend.h zone_download), boundary particles first, in the backend's
+ * order; wl_sph_sim_commit_zone writes them back before the next step. The
+ * arrays are the simulation's and valid until the commit. Only for a backend
+ * with zone_download (WL_EUNSUPPORTED otherwise) and outside a run. */
+struct wl_particles *wl_sph_sim_edit_zone(struct wl_sph_sim *sim, double x_lo, double x_hi,
+                                          int n_parked, struct wl_error *err);
+enum wl_status wl_sph_sim_commit_zone(struct wl_sph_sim *sim, struct wl_error *err);
 
 /* The load of the fluid on the boundary particles tagged `body` (1 ..
  * WL_SPH_BODY_TAG_MAX; the flume tags its seawall WL_FLUME_BODY_WALL) in

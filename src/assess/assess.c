@@ -339,16 +339,6 @@ static enum wl_status pick_backend(const struct wl_scenario *s, const struct wl_
   else if (opts->backend && !strcmp(opts->backend, "auto")) choice = WL_BACKEND_AUTO;
   *ops = &wl_backend_cpu_ops;
   if (choice == WL_BACKEND_CPU) return WL_OK;
-  /* two resolutions: the CPU backend only (vres.h: it edits the particles
-   * between steps on the host); from: auto lets the GPU run one
-   * (wl_plan_choose) */
-  if (s->resolution.refine.present && !s->resolution.refine.from.is_auto) {
-    if (choice == WL_BACKEND_AUTO) return WL_OK;
-    return wl_error_set(err, WL_EUSAGE,
-                        "%s: resolution.refine: two resolutions run on the CPU backend only "
-                        "(docs/variable-resolution.md); use --backend cpu or auto",
-                        s->path);
-  }
   struct wl_cuda_device dev;
   struct wl_error qerr;
   wl_error_clear(&qerr);
@@ -601,8 +591,8 @@ static enum wl_status assess_one(const struct wl_scenario *s, const struct wl_pl
   if ((st = pick_backend(s, opts, &ops, err))) return st;
   struct case_levels *lv = NULL;
   if (load == WL_CASE_SOLITARY ? plan->solitary.refine : plan->explosion.refine) {
-    /* a plan made without the machine (wl_plan_refine_machine) */
-    if (ops != &wl_backend_cpu_ops)
+    /* from: auto in a plan made without the machine (wl_plan_refine_machine) */
+    if (s->resolution.refine.from.is_auto && ops != &wl_backend_cpu_ops)
       return wl_error_set(err, WL_EUSAGE,
                           "%s: resolution.refine.from: auto was planned for the CPU backend, and "
                           "this run takes the %s backend; use --backend cpu, or let `wallload "

@@ -445,12 +445,23 @@ static enum wl_status cpu_download(void *ctx, struct wl_particles *host, struct 
   return wl_particles_copy_state(host, &c->p, err);
 }
 
-static enum wl_status cpu_upload(void *ctx, const struct wl_particles *host, struct wl_error *err) {
+static enum wl_status cpu_zone_download(void *ctx, double x_lo, double x_hi, int n_parked,
+                                        struct wl_particles *host, int *idx, struct wl_error *err) {
   struct cpu *c = ctx;
-  if (host->n != c->p.n || host->n_bound != c->p.n_bound)
-    return wl_error_set(err, WL_EINPUT, "cpu backend: upload of %d particles (%d boundary) into "
-                        "%d (%d)", host->n, host->n_bound, c->p.n, c->p.n_bound);
-  return wl_particles_copy_state(&c->p, host, err);
+  if (host->dim != c->p.dim || host->capacity < c->p.n)
+    return wl_error_set(err, WL_EINPUT, "cpu backend: a zone of up to %d %dD particles into room "
+                        "for %d %dD", c->p.n, c->p.dim, host->capacity, host->dim);
+  const int m = wl_particles_zone_select(&c->p, x_lo, x_hi, n_parked, idx);
+  wl_particles_gather(host, &c->p, idx, m);
+  return WL_OK;
+}
+
+static enum wl_status cpu_zone_upload(void *ctx, const struct wl_particles *host, const int *idx,
+                                      struct wl_error *err) {
+  struct cpu *c = ctx;
+  (void)err;
+  wl_particles_scatter(&c->p, host, idx);
+  return WL_OK;
 }
 
 static enum wl_status cpu_init(void **ctx, const struct wl_sph_config *cfg,
@@ -549,5 +560,6 @@ const struct wl_backend_ops wl_backend_cpu_ops = {
     .describe = cpu_describe,
     .free = cpu_free,
     .wall_load = cpu_wall_load,
-    .upload = cpu_upload,
+    .zone_download = cpu_zone_download,
+    .zone_upload = cpu_zone_upload,
 };

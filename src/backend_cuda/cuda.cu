@@ -304,6 +304,13 @@ struct gpu {
   cudaGraphExec_t exec2[2];
   struct roles roles[2];
   int graphs; /* exec[] captured */
+  /* backend.h zone_download / zone_upload (allocated at the first): the
+   * places of the zone's particles and of the parked ones beyond it, their
+   * two counts, the zone's fields gathered, and the host's copies of the
+   * places */
+  int *z_idx, *z_park, *z_count;
+  unsigned char *z_buf;
+  int *h_zin, *h_zpark;
   void *allocs[64];       /* everything cudaMalloc'd, for free */
   int n_allocs;
   size_t bytes;           /* device bytes allocated */
@@ -1925,6 +1932,8 @@ static void cuda_free(void *ctx) {
   if (c->h_up) cudaFreeHost(c->h_up);
   if (c->h_dl) cudaFreeHost(c->h_dl);
   if (c->h_load) cudaFreeHost(c->h_load);
+  free(c->h_zin);
+  free(c->h_zpark);
   if (c->snap_ev) cudaEventDestroy(c->snap_ev);
   if (c->stream) cudaStreamDestroy(c->stream);
   free(c);
@@ -2334,10 +2343,203 @@ static enum wl_status cuda_snapshot_wait(void *ctx, struct wl_particles *host, d
   return WL_OK;
 }
 
+/* ---- zones (backend.h zone_download, zone_upload) ---------------------- */
+
+/* The state arrays a zone reads and writes, by value into its kernels. */
+struct zone_arrays {
+  double *pos[WL_SPH_DIM_MAX];
+  wl_real *vel[WL_SPH_DIM_MAX];
+  wl_real *rho;
+  unsigned int *id;
+  unsigned char *kind, *body;
+};
+
+static struct zone_arrays zone_arrays_of(const struct gpu *c) {
+  struct zone_arrays a;
+  memset(&a, 0, sizeof a);
+  for (int d = 0; d < c->dim; d++) a.pos[d] = c->pos[d], a.vel[d] = c->vel[d];
+  a.rho = c->rho, a.id = c->id, a.kind = c->kind, a.body = c->body;
+  return a;
+}
+
+/* Particle i into the zone (its x in [lo, hi]) or, beyond it and parked,
+ * into the parked list: appended in no order (the host sorts them). */
+__global__ void k_zone_mark(const double *__restrict__ x, const unsigned char *__restrict__ kind,
+                            const unsigned char *__restrict__ body, int n, double lo, double hi,
+                            int *in_zone, int *parked, int *count) {
+  const int i = tid();
+  if (i >= n) return;
+  const double xi = x[i];
+  if (xi >= lo && xi <= hi) in_zone[atomicAdd(&count[0], 1)] = i;
+  else if (kind[i] == WL_KIND_FLUID && body[i] == WL_SPH_BODY_EXCLUDED)
+    parked[atomicAdd(&count[1], 1)] = i;
+}
+
+/* The packed layout of m particles' fields (download's, dl_parts): x, y
+ * (z), then velocities, density, id, kind, body, each a run of m. */
+struct zone_layout {
+  size_t pos, vel, rho, id, kind, body, bytes;
+};
+
+static __host__ __device__ struct zone_layout zone_layout_of(int dim, int m) {
+  struct zone_layout l;
+  l.pos = 0;
+  l.vel = l.pos + (size_t)dim * m * sizeof(double);
+  l.rho = l.vel + (size_t)dim * m * sizeof(wl_real);
+  l.id = l.rho + (size_t)m * sizeof(wl_real);
+  l.kind = l.id + (size_t)m * sizeof(unsigned int);
+  l.body = l.kind + (size_t)m;
+  l.bytes = l.body + (size_t)m;
+  return l;
+}
+
+/* Zone particle k <-> its place idx[k] (to_buf: gather into buf; else
+ * scatter from it). */
+template <int DIM>
+__global__ void k_zone_move(struct zone_arrays a, const int *__restrict__ idx, int m,
+                            unsigned char *buf, int to_buf) {
+  const int k = tid();
+  if (k >= m) return;
+  const int i = idx[k];
+  const struct zone_layout l = zone_layout_of(DIM, m);
+  double *pos = (double *)(buf + l.pos);
+  wl_real *vel = (wl_real *)(buf + l.vel), *rho = (wl_real *)(buf + l.rho);
+  unsigned int *id = (unsigned int *)(buf + l.id);
+  unsigned char *kind = buf + l.kind, *body = buf + l.body;
+  if (to_buf) {
+    for (int d = 0; d < DIM; d++) pos[d * m + k] = a.pos[d][i], vel[d * m + k] = a.vel[d][i];
+    rho[k] = a.rho[i], id[k] = a.id[i], kind[k] = a.kind[i], body[k] = a.body[i];
+  } else {
+    for (int d = 0; d < DIM; d++) a.pos[d][i] = pos[d * m + k], a.vel[d][i] = vel[d * m + k];
+    a.rho[i] = rho[k], a.id[i] = id[k], a.kind[i] = kind[k], a.body[i] = body[k];
+  }
+}
+
+/* host <-> the packed layout in buf (to_buf: host into buf). */
+static void zone_pack(int dim, struct wl_particles *host, unsigned char *buf, int m, int to_buf) {
+  const struct zone_layout l = zone_layout_of(dim, m);
+  struct {
+    void *host;
+    size_t off, bytes;
+  } f[2 * WL_SPH_DIM_MAX + 4];
+  int nf = 0;
+  for (int d = 0; d < dim; d++) f[nf++] = {host->pos[d], l.pos + d * m * sizeof(double), m * sizeof(double)};
+  for (int d = 0; d < dim; d++)
+    f[nf++] = {host->vel[d], l.vel + d * m * sizeof(wl_real), m * sizeof(wl_real)};
+  f[nf++] = {host->rho, l.rho, m * sizeof(wl_real)};
+  f[nf++] = {host->id, l.id, m * sizeof(unsigned int)};
+  f[nf++] = {host->kind, l.kind, (size_t)m};
+  f[nf++] = {host->body, l.body, (size_t)m};
+  for (int q = 0; q < nf; q++) {
+    if (to_buf) memcpy(buf + f[q].off, f[q].host, f[q].bytes);
+    else memcpy(f[q].host, buf + f[q].off, f[q].bytes);
+  }
+}
+
+static int cmp_int(const void *a, const void *b) {
+  const int x = *(const int *)a, y = *(const int *)b;
+  return (x > y) - (x < y);
+}
+
+static enum wl_status dalloc(struct gpu *c, void **p, size_t bytes, const char *label,
+                             struct wl_error *err);
+
+static enum wl_status zone_alloc(struct gpu *c, struct wl_error *err) {
+  if (c->z_idx) return WL_OK;
+  const size_t n = (size_t)c->n;
+  enum wl_status st = dalloc(c, (void **)&c->z_idx, n * sizeof(int), "zone places", err);
+  if (!st) st = dalloc(c, (void **)&c->z_park, n * sizeof(int), "zone parked places", err);
+  if (!st) st = dalloc(c, (void **)&c->z_count, 2 * sizeof(int), "zone counts", err);
+  if (!st) st = dalloc(c, (void **)&c->z_buf, download_bytes(c->dim, n), "zone fields", err);
+  if (st) return st;
+  c->h_zin = (int *)malloc(n * sizeof(int));
+  c->h_zpark = (int *)malloc(n * sizeof(int));
+  if (!c->h_zin || !c->h_zpark)
+    return wl_error_set(err, WL_ENOMEM, "cuda backend: out of memory for a zone's places");
+  return WL_OK;
+}
+
+/* backend.h zone_download: the zone marked on the device, its places
+ * sorted here into the backend's order (the parked ones beyond it: the
+ * first n_parked in that order), then its fields gathered there and copied
+ * across through the download's staging buffer. */
+static enum wl_status cuda_zone_download(void *ctx, double x_lo, double x_hi, int n_parked,
+                                         struct wl_particles *host, int *idx,
+                                         struct wl_error *err) {
+  struct gpu *c = (struct gpu *)ctx;
+  enum wl_status st = check_host(c, host, err);
+  if (!st) st = zone_alloc(c, err);
+  if (st) return st;
+  int count[2];
+  CK(cudaMemsetAsync(c->z_count, 0, sizeof count, c->stream));
+  k_zone_mark<<<blocks(c->n), THREADS, 0, c->stream>>>(c->pos[0], c->kind, c->body, c->n, x_lo,
+                                                      x_hi, c->z_idx, c->z_park, c->z_count);
+  CKL("zone mark");
+  CK(cudaMemcpyAsync(count, c->z_count, sizeof count, cudaMemcpyDeviceToHost, c->stream));
+  CK(cudaStreamSynchronize(c->stream));
+  if (count[0] > 0)
+    CK(cudaMemcpyAsync(c->h_zin, c->z_idx, sizeof(int) * (size_t)count[0],
+                       cudaMemcpyDeviceToHost, c->stream));
+  if (count[1] > 0)
+    CK(cudaMemcpyAsync(c->h_zpark, c->z_park, sizeof(int) * (size_t)count[1],
+                       cudaMemcpyDeviceToHost, c->stream));
+  CK(cudaStreamSynchronize(c->stream));
+  qsort(c->h_zin, (size_t)count[0], sizeof(int), cmp_int);
+  qsort(c->h_zpark, (size_t)count[1], sizeof(int), cmp_int);
+  const int np = n_parked < count[1] ? (n_parked > 0 ? n_parked : 0) : count[1];
+  int m = 0, a = 0, b = 0, nb = 0;
+  while (a < count[0] || b < np) /* the two sorted lists merged */
+    idx[m++] = b >= np || (a < count[0] && c->h_zin[a] < c->h_zpark[b]) ? c->h_zin[a++]
+                                                                         : c->h_zpark[b++];
+  while (nb < m && idx[nb] < c->nb) nb++;
+  host->n = m, host->n_bound = nb;
+  if (m == 0) return WL_OK;
+  const size_t bytes = zone_layout_of(c->dim, m).bytes;
+  CK(cudaMemcpyAsync(c->z_idx, idx, sizeof(int) * (size_t)m, cudaMemcpyHostToDevice, c->stream));
+  if (c->dim == 3)
+    k_zone_move<3><<<blocks(m), THREADS, 0, c->stream>>>(zone_arrays_of(c), c->z_idx, m, c->z_buf, 1);
+  else
+    k_zone_move<2><<<blocks(m), THREADS, 0, c->stream>>>(zone_arrays_of(c), c->z_idx, m, c->z_buf, 1);
+  CKL("zone gather");
+  CK(cudaMemcpyAsync(c->h_dl, c->z_buf, bytes, cudaMemcpyDeviceToHost, c->stream));
+  CK(cudaStreamSynchronize(c->stream));
+  zone_pack(c->dim, host, c->h_dl, m, 0);
+  return WL_OK;
+}
+
+/* backend.h zone_upload: host packed into the staging buffer, copied
+ * across and scattered to its places; enqueued (the next step follows it
+ * in the stream; the staging buffer is next written after a wait). */
+static enum wl_status cuda_zone_upload(void *ctx, const struct wl_particles *host, const int *idx,
+                                       struct wl_error *err) {
+  struct gpu *c = (struct gpu *)ctx;
+  const int m = host->n;
+  if (m == 0) return WL_OK;
+  if (!c->z_idx || m > c->n)
+    return wl_error_set(err, WL_EINPUT, "cuda backend: upload of a zone of %d particles without "
+                        "its download", m);
+  const size_t bytes = zone_layout_of(c->dim, m).bytes;
+  zone_pack(c->dim, (struct wl_particles *)host, c->h_dl, m, 1);
+  CK(cudaMemcpyAsync(c->z_buf, c->h_dl, bytes, cudaMemcpyHostToDevice, c->stream));
+  CK(cudaMemcpyAsync(c->z_idx, idx, sizeof(int) * (size_t)m, cudaMemcpyHostToDevice, c->stream));
+  if (c->dim == 3)
+    k_zone_move<3><<<blocks(m), THREADS, 0, c->stream>>>(zone_arrays_of(c), c->z_idx, m, c->z_buf, 0);
+  else
+    k_zone_move<2><<<blocks(m), THREADS, 0, c->stream>>>(zone_arrays_of(c), c->z_idx, m, c->z_buf, 0);
+  CKL("zone scatter");
+  /* the pageable idx and the staging buffer are read by the copies above
+   * before the caller may change them */
+  CK(cudaStreamSynchronize(c->stream));
+  return WL_OK;
+}
+
 /* cudaMalloc of one labelled array, counted and remembered for free. */
 static enum wl_status dalloc(struct gpu *c, void **p, size_t bytes, const char *label,
                              struct wl_error *err) {
   *p = NULL;
+  if (c->n_allocs == (int)(sizeof c->allocs / sizeof c->allocs[0]))
+    return wl_error_set(err, WL_ENOMEM, "cuda backend: more than %d device arrays ('%s')",
+                        c->n_allocs, label);
   if (bytes == 0) bytes = 1;
   const cudaError_t e = cudaMalloc(p, bytes);
   if (e != cudaSuccess) {
@@ -2598,6 +2800,7 @@ static enum wl_status cuda_init(void **ctx, const struct wl_sph_config *cfg,
 extern "C" const struct wl_backend_ops wl_backend_cuda_ops = {
     "cuda", cuda_init, cuda_step, cuda_download, cuda_describe, cuda_free, cuda_wall_load,
     cuda_run, cuda_snapshot, cuda_snapshot_wait, cuda_run_start, cuda_run_finish,
+    cuda_zone_download, cuda_zone_upload,
 };
 #else
 /* The tests' build: one backend per force loop, for test_cuda_backend to
@@ -2613,6 +2816,7 @@ extern "C" const struct wl_backend_ops wl_backend_cuda_ops = {
   extern "C" const struct wl_backend_ops wl_backend_cuda_##loop##_ops = {                        \
       "cuda", init_##loop, cuda_step, cuda_download, cuda_describe, cuda_free, cuda_wall_load,   \
       cuda_run, cuda_snapshot, cuda_snapshot_wait, cuda_run_start, cuda_run_finish,              \
+      cuda_zone_download, cuda_zone_upload,                                                      \
   };
 TEST_OPS(ref, MODE_REF)
 TEST_OPS(fast, MODE_FAST)

@@ -824,10 +824,6 @@ static enum wl_status check_rules(struct ctx *c, struct wl_scenario *s) {
                       "the explosion's crater lies in the fine level; expected `from` seaward of "
                       "loads.explosion.at (the crater collapses in the coarse level and its "
                       "waves cross into the fine one)");
-    if (s->run.backend.given && s->run.backend.choice == WL_BACKEND_CUDA)
-      return at_value(c, rf, "resolution.refine.from",
-                      "two resolutions run on the CPU backend only (docs/variable-resolution.md); "
-                      "use run.backend: cpu or auto, or remove resolution.refine");
   }
   if (s->sweep.present) return check_sweep(c, s);
   return WL_OK;

@@ -150,7 +150,7 @@ static const struct wl_key resolution_keys[] = {
      "list of dp factors, e.g. [1, 0.71, 0.5]"},
     {"refine", KT_MAP, WL_DIM_NONE, 0, NULL, NONE, NONE, 0, 0, NULL, refine_keys,
      OFF(resolution.refine.present), 0,
-     "two resolutions in one run (2D, CPU backend; docs/variable-resolution.md): dp at the wall, "
+     "two resolutions in one run (2D; docs/variable-resolution.md): dp at the wall, "
      "2 dp seaward of `from`"},
     {0}};
 

@@ -139,3 +139,49 @@ enum wl_status wl_particles_copy_state(struct wl_particles *dst, const struct wl
   dst->n_bound = src->n_bound;
   return WL_OK;
 }
+
+int wl_particles_zone_select(const struct wl_particles *p, double x_lo, double x_hi, int n_parked,
+                             int *idx) {
+  int m = 0, parked = 0;
+  for (int i = 0; i < p->n; i++) {
+    const double x = p->pos[0][i];
+    if (x >= x_lo && x <= x_hi) idx[m++] = i;
+    else if (parked < n_parked && p->kind[i] == WL_KIND_FLUID &&
+             p->body[i] == WL_SPH_BODY_EXCLUDED)
+      idx[m++] = i, parked++;
+  }
+  return m;
+}
+
+void wl_particles_gather(struct wl_particles *dst, const struct wl_particles *src, const int *idx,
+                         int m) {
+  int nf;
+  const struct wl_field_desc *fd = wl_particles_fields(&nf);
+  for (int f = 0; f < nf; f++) {
+    if (!(fd[f].flags & WL_FIELD_SORT)) continue;
+    const size_t es = wl_field_type_size(fd[f].type);
+    for (int c = 0; c < wl_field_components(&fd[f], src->dim); c++) {
+      char *d = *slot(dst, &fd[f], c);
+      const char *s = *slot(src, &fd[f], c);
+      for (int k = 0; k < m; k++) memcpy(d + (size_t)k * es, s + (size_t)idx[k] * es, es);
+    }
+  }
+  int nb = 0;
+  while (nb < m && idx[nb] < src->n_bound) nb++;
+  dst->n = m;
+  dst->n_bound = nb;
+}
+
+void wl_particles_scatter(struct wl_particles *dst, const struct wl_particles *src, const int *idx) {
+  int nf;
+  const struct wl_field_desc *fd = wl_particles_fields(&nf);
+  for (int f = 0; f < nf; f++) {
+    if (!(fd[f].flags & WL_FIELD_SORT)) continue;
+    const size_t es = wl_field_type_size(fd[f].type);
+    for (int c = 0; c < wl_field_components(&fd[f], src->dim); c++) {
+      char *d = *slot(dst, &fd[f], c);
+      const char *s = *slot(src, &fd[f], c);
+      for (int k = 0; k < src->n; k++) memcpy(d + (size_t)idx[k] * es, s + (size_t)k * es, es);
+    }
+  }
+}

@@ -28,6 +28,9 @@ struct wl_sph_sim {
   struct wl_sph_const k;
   struct wl_particles host; /* download target */
   int host_valid;           /* host holds the current state */
+  struct wl_particles zone; /* wl_sph_sim_edit_zone's particles (allocated at the first) */
+  int *zone_idx;            /* their places in the backend */
+  int zone_open;            /* an edit not yet committed */
   double t;
   long steps;
   double dt_next;           /* from the last force evaluations [s] */
@@ -70,6 +73,8 @@ void wl_sph_sim_free(struct wl_sph_sim *sim) {
   finish_pending(sim);
   if (sim->ops && sim->ctx) sim->ops->free(sim->ctx);
   wl_particles_clear(&sim->host);
+  wl_particles_clear(&sim->zone);
+  free(sim->zone_idx);
   for (int b = 0; b <= WL_SPH_BODIES_MAX; b++) motion_clear(&sim->motion[b]);
   free(sim);
 }
@@ -470,20 +475,34 @@ const struct wl_particles *wl_sph_sim_particles(struct wl_sph_sim *sim, struct w
   return &sim->host;
 }
 
-struct wl_particles *wl_sph_sim_edit(struct wl_sph_sim *sim, struct wl_error *err) {
-  if (!sim->ops->upload) {
+struct wl_particles *wl_sph_sim_edit_zone(struct wl_sph_sim *sim, double x_lo, double x_hi,
+                                          int n_parked, struct wl_error *err) {
+  if (!sim->ops->zone_download || !sim->ops->zone_upload) {
     wl_error_set(err, WL_EUNSUPPORTED, "%s backend: its particles cannot be edited between steps",
                  sim->ops->name);
     return NULL;
   }
+  if (!sim->zone_idx) {
+    const int cap = sim->host.capacity;
+    if (wl_particles_alloc(&sim->zone, sim->cfg.prm.dim, cap, 0, err) != WL_OK) return NULL;
+    if (!(sim->zone_idx = malloc(sizeof(int) * (size_t)cap))) {
+      wl_error_set(err, WL_ENOMEM, "sph: out of memory for the places of %d particles", cap);
+      return NULL;
+    }
+  }
   finish_pending(sim);
   sim->snap = 0;
-  return (struct wl_particles *)wl_sph_sim_particles(sim, err);
+  if (sim->ops->zone_download(sim->ctx, x_lo, x_hi, n_parked, &sim->zone, sim->zone_idx, err))
+    return NULL;
+  sim->host_valid = 0; /* the edit changes the state the host copy holds */
+  sim->zone_open = 1;
+  return &sim->zone;
 }
 
-enum wl_status wl_sph_sim_commit(struct wl_sph_sim *sim, struct wl_error *err) {
-  if (!sim->host_valid) return wl_error_set(err, WL_EINPUT, "sph: commit without an edit");
-  return sim->ops->upload(sim->ctx, &sim->host, err);
+enum wl_status wl_sph_sim_commit_zone(struct wl_sph_sim *sim, struct wl_error *err) {
+  if (!sim->zone_open) return wl_error_set(err, WL_EINPUT, "sph: commit without an edit");
+  sim->zone_open = 0;
+  return sim->ops->zone_upload(sim->ctx, &sim->zone, sim->zone_idx, err);
 }
 
 enum wl_status wl_sph_sim_wall_load(struct wl_sph_sim *sim, int body, double z_ref,

@@ -1,7 +1,12 @@
 /* vres.c: variable resolution by coupled subdomains (vres.h). Every level
- * is a wl_sph_sim of its own; between steps the driver edits their host
- * copies (wl_sph_sim_edit / _commit): classification, the buffers' fit from
- * the other level, their shifting, removal and creation. */
+ * is a wl_sph_sim of its own; between steps the driver edits a zone of each
+ * on the host (wl_sph_sim_edit_zone / _commit_zone: the particles within
+ * the coupling's reach of the interface, and as many parked ones as the
+ * flux points can revive in a step): classification, the buffers' fit from
+ * the other level, their shifting, removal and creation. Particles outside
+ * the zone are the levels' own fluid deep in their ranges (or parked), which
+ * the coupling neither reads nor changes, so the zone gives the bits that
+ * the whole state would. */
 #include <math.h>
 #include <omp.h>
 #include <stdlib.h>
@@ -339,7 +344,11 @@ static enum wl_status refill(struct level *L, struct wl_particles *p, const stru
 static enum wl_status couple(struct wl_vres *v, double dt, struct wl_error *err) {
   struct wl_particles *p[WL_VRES_LEVELS_MAX];
   for (int l = 0; l < v->n; l++) {
-    p[l] = wl_sph_sim_edit(v->lv[l].sim, err);
+    /* a particle moves less than a zone's margin (2h + dp beyond the
+     * bands) in a step, so none leaves the class its place gives unseen;
+     * each flux point revives at most one parked particle a step */
+    const struct level *L = &v->lv[l];
+    p[l] = wl_sph_sim_edit_zone(L->sim, L->zone_lo, L->zone_hi, L->n_points, err);
     if (!p[l]) return err->status;
     classify(&v->lv[l], p[l]);
   }
@@ -354,7 +363,7 @@ static enum wl_status couple(struct wl_vres *v, double dt, struct wl_error *err)
     if (st) return st;
   }
   for (int l = 0; l < v->n; l++) {
-    const enum wl_status st = wl_sph_sim_commit(v->lv[l].sim, err);
+    const enum wl_status st = wl_sph_sim_commit_zone(v->lv[l].sim, err);
     if (st) return st;
   }
   return WL_OK;
@@ -389,9 +398,9 @@ static enum wl_status level_init(struct wl_vres *v, struct level *L, const struc
   const struct wl_sph_params *prm = &s->cfg->prm;
   if (prm->dim != 2)
     return wl_error_set(err, WL_EUNSUPPORTED, "vres: %dD; this stage couples 2D levels", prm->dim);
-  if (!ops->upload)
+  if (!ops->zone_download || !ops->zone_upload)
     return wl_error_set(err, WL_EUNSUPPORTED, "vres: the %s backend cannot take edited particles "
-                        "back (backend.h upload)", ops->name);
+                        "back (backend.h zone_upload)", ops->name);
   if (!(s->own_lo < s->own_hi))
     return wl_error_set(err, WL_EINPUT, "vres: a level owns x in [%g, %g] m; need lo < hi",
                         s->own_lo, s->own_hi);
