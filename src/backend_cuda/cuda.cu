@@ -305,12 +305,13 @@ struct gpu {
   struct roles roles[2];
   int graphs; /* exec[] captured */
   /* backend.h zone_download / zone_upload (allocated at the first): the
-   * places of the zone's particles and of the parked ones beyond it, their
-   * two counts, the zone's fields gathered, and the host's copies of the
-   * places */
-  int *z_idx, *z_park, *z_count;
-  unsigned char *z_buf;
-  int *h_zin, *h_zpark;
+   * zone's places, each particle's flag (in the zone, parked beyond it,
+   * neither), the zone's fields gathered, and the host's copies of the
+   * flags and places */
+  int *z_idx;
+  unsigned char *z_flag, *z_buf;
+  unsigned char *h_zflag; /* pinned */
+  int *h_zidx;            /* pinned */
   void *allocs[64];       /* everything cudaMalloc'd, for free */
   int n_allocs;
   size_t bytes;           /* device bytes allocated */
@@ -1932,8 +1933,8 @@ static void cuda_free(void *ctx) {
   if (c->h_up) cudaFreeHost(c->h_up);
   if (c->h_dl) cudaFreeHost(c->h_dl);
   if (c->h_load) cudaFreeHost(c->h_load);
-  free(c->h_zin);
-  free(c->h_zpark);
+  if (c->h_zflag) cudaFreeHost(c->h_zflag);
+  if (c->h_zidx) cudaFreeHost(c->h_zidx);
   if (c->snap_ev) cudaEventDestroy(c->snap_ev);
   if (c->stream) cudaStreamDestroy(c->stream);
   free(c);
@@ -2362,17 +2363,17 @@ static struct zone_arrays zone_arrays_of(const struct gpu *c) {
   return a;
 }
 
-/* Particle i into the zone (its x in [lo, hi]) or, beyond it and parked,
- * into the parked list: appended in no order (the host sorts them). */
-__global__ void k_zone_mark(const double *__restrict__ x, const unsigned char *__restrict__ kind,
+/* Particle i's flag: 1 in the zone (its x in [lo, hi]), 2 parked beyond
+ * it, 0 neither. */
+__global__ void k_zone_flag(const double *__restrict__ x, const unsigned char *__restrict__ kind,
                             const unsigned char *__restrict__ body, int n, double lo, double hi,
-                            int *in_zone, int *parked, int *count) {
+                            unsigned char *flag) {
   const int i = tid();
   if (i >= n) return;
   const double xi = x[i];
-  if (xi >= lo && xi <= hi) in_zone[atomicAdd(&count[0], 1)] = i;
-  else if (kind[i] == WL_KIND_FLUID && body[i] == WL_SPH_BODY_EXCLUDED)
-    parked[atomicAdd(&count[1], 1)] = i;
+  flag[i] = xi >= lo && xi <= hi ? 1
+            : kind[i] == WL_KIND_FLUID && body[i] == WL_SPH_BODY_EXCLUDED ? 2
+                                                                          : 0;
 }
 
 /* The packed layout of m particles' fields (download's, dl_parts): x, y
@@ -2436,11 +2437,6 @@ static void zone_pack(int dim, struct wl_particles *host, unsigned char *buf, in
   }
 }
 
-static int cmp_int(const void *a, const void *b) {
-  const int x = *(const int *)a, y = *(const int *)b;
-  return (x > y) - (x < y);
-}
-
 static enum wl_status dalloc(struct gpu *c, void **p, size_t bytes, const char *label,
                              struct wl_error *err);
 
@@ -2448,21 +2444,18 @@ static enum wl_status zone_alloc(struct gpu *c, struct wl_error *err) {
   if (c->z_idx) return WL_OK;
   const size_t n = (size_t)c->n;
   enum wl_status st = dalloc(c, (void **)&c->z_idx, n * sizeof(int), "zone places", err);
-  if (!st) st = dalloc(c, (void **)&c->z_park, n * sizeof(int), "zone parked places", err);
-  if (!st) st = dalloc(c, (void **)&c->z_count, 2 * sizeof(int), "zone counts", err);
+  if (!st) st = dalloc(c, (void **)&c->z_flag, n, "zone flags", err);
   if (!st) st = dalloc(c, (void **)&c->z_buf, download_bytes(c->dim, n), "zone fields", err);
   if (st) return st;
-  c->h_zin = (int *)malloc(n * sizeof(int));
-  c->h_zpark = (int *)malloc(n * sizeof(int));
-  if (!c->h_zin || !c->h_zpark)
-    return wl_error_set(err, WL_ENOMEM, "cuda backend: out of memory for a zone's places");
+  CK(cudaMallocHost((void **)&c->h_zflag, n));
+  CK(cudaMallocHost((void **)&c->h_zidx, n * sizeof(int)));
   return WL_OK;
 }
 
-/* backend.h zone_download: the zone marked on the device, its places
- * sorted here into the backend's order (the parked ones beyond it: the
- * first n_parked in that order), then its fields gathered there and copied
- * across through the download's staging buffer. */
+/* backend.h zone_download: every particle flagged on the device, the flags
+ * read here in the backend's order (the zone, and the first n_parked
+ * parked particles beyond it), then the zone's fields gathered there and
+ * copied across through the download's staging buffer. Two waits. */
 static enum wl_status cuda_zone_download(void *ctx, double x_lo, double x_hi, int n_parked,
                                          struct wl_particles *host, int *idx,
                                          struct wl_error *err) {
@@ -2470,46 +2463,41 @@ static enum wl_status cuda_zone_download(void *ctx, double x_lo, double x_hi, in
   enum wl_status st = check_host(c, host, err);
   if (!st) st = zone_alloc(c, err);
   if (st) return st;
-  int count[2];
-  CK(cudaMemsetAsync(c->z_count, 0, sizeof count, c->stream));
-  k_zone_mark<<<blocks(c->n), THREADS, 0, c->stream>>>(c->pos[0], c->kind, c->body, c->n, x_lo,
-                                                      x_hi, c->z_idx, c->z_park, c->z_count);
-  CKL("zone mark");
-  CK(cudaMemcpyAsync(count, c->z_count, sizeof count, cudaMemcpyDeviceToHost, c->stream));
+  k_zone_flag<<<blocks(c->n), THREADS, 0, c->stream>>>(c->pos[0], c->kind, c->body, c->n, x_lo,
+                                                      x_hi, c->z_flag);
+  CKL("zone flags");
+  CK(cudaMemcpyAsync(c->h_zflag, c->z_flag, (size_t)c->n, cudaMemcpyDeviceToHost, c->stream));
   CK(cudaStreamSynchronize(c->stream));
-  if (count[0] > 0)
-    CK(cudaMemcpyAsync(c->h_zin, c->z_idx, sizeof(int) * (size_t)count[0],
-                       cudaMemcpyDeviceToHost, c->stream));
-  if (count[1] > 0)
-    CK(cudaMemcpyAsync(c->h_zpark, c->z_park, sizeof(int) * (size_t)count[1],
-                       cudaMemcpyDeviceToHost, c->stream));
-  CK(cudaStreamSynchronize(c->stream));
-  qsort(c->h_zin, (size_t)count[0], sizeof(int), cmp_int);
-  qsort(c->h_zpark, (size_t)count[1], sizeof(int), cmp_int);
-  const int np = n_parked < count[1] ? (n_parked > 0 ? n_parked : 0) : count[1];
-  int m = 0, a = 0, b = 0, nb = 0;
-  while (a < count[0] || b < np) /* the two sorted lists merged */
-    idx[m++] = b >= np || (a < count[0] && c->h_zin[a] < c->h_zpark[b]) ? c->h_zin[a++]
-                                                                         : c->h_zpark[b++];
-  while (nb < m && idx[nb] < c->nb) nb++;
+  int m = 0, parked = 0, nb = 0;
+  for (int i = 0; i < c->n; i++) {
+    const unsigned char f = c->h_zflag[i];
+    if (f == 1 || (f == 2 && parked < n_parked)) {
+      parked += f == 2;
+      nb += i < c->nb;
+      c->h_zidx[m++] = i;
+    }
+  }
+  memcpy(idx, c->h_zidx, sizeof(int) * (size_t)m);
   host->n = m, host->n_bound = nb;
   if (m == 0) return WL_OK;
-  const size_t bytes = zone_layout_of(c->dim, m).bytes;
-  CK(cudaMemcpyAsync(c->z_idx, idx, sizeof(int) * (size_t)m, cudaMemcpyHostToDevice, c->stream));
+  CK(cudaMemcpyAsync(c->z_idx, c->h_zidx, sizeof(int) * (size_t)m, cudaMemcpyHostToDevice,
+                     c->stream));
   if (c->dim == 3)
     k_zone_move<3><<<blocks(m), THREADS, 0, c->stream>>>(zone_arrays_of(c), c->z_idx, m, c->z_buf, 1);
   else
     k_zone_move<2><<<blocks(m), THREADS, 0, c->stream>>>(zone_arrays_of(c), c->z_idx, m, c->z_buf, 1);
   CKL("zone gather");
-  CK(cudaMemcpyAsync(c->h_dl, c->z_buf, bytes, cudaMemcpyDeviceToHost, c->stream));
+  CK(cudaMemcpyAsync(c->h_dl, c->z_buf, zone_layout_of(c->dim, m).bytes, cudaMemcpyDeviceToHost,
+                     c->stream));
   CK(cudaStreamSynchronize(c->stream));
   zone_pack(c->dim, host, c->h_dl, m, 0);
   return WL_OK;
 }
 
-/* backend.h zone_upload: host packed into the staging buffer, copied
- * across and scattered to its places; enqueued (the next step follows it
- * in the stream; the staging buffer is next written after a wait). */
+/* backend.h zone_upload: host and its places packed into the pinned
+ * staging buffers, copied across and scattered; enqueued only (the next
+ * step follows in the stream, and the host next writes those buffers after
+ * a download's wait). */
 static enum wl_status cuda_zone_upload(void *ctx, const struct wl_particles *host, const int *idx,
                                        struct wl_error *err) {
   struct gpu *c = (struct gpu *)ctx;
@@ -2518,18 +2506,17 @@ static enum wl_status cuda_zone_upload(void *ctx, const struct wl_particles *hos
   if (!c->z_idx || m > c->n)
     return wl_error_set(err, WL_EINPUT, "cuda backend: upload of a zone of %d particles without "
                         "its download", m);
-  const size_t bytes = zone_layout_of(c->dim, m).bytes;
   zone_pack(c->dim, (struct wl_particles *)host, c->h_dl, m, 1);
-  CK(cudaMemcpyAsync(c->z_buf, c->h_dl, bytes, cudaMemcpyHostToDevice, c->stream));
-  CK(cudaMemcpyAsync(c->z_idx, idx, sizeof(int) * (size_t)m, cudaMemcpyHostToDevice, c->stream));
+  memcpy(c->h_zidx, idx, sizeof(int) * (size_t)m);
+  CK(cudaMemcpyAsync(c->z_buf, c->h_dl, zone_layout_of(c->dim, m).bytes, cudaMemcpyHostToDevice,
+                     c->stream));
+  CK(cudaMemcpyAsync(c->z_idx, c->h_zidx, sizeof(int) * (size_t)m, cudaMemcpyHostToDevice,
+                     c->stream));
   if (c->dim == 3)
     k_zone_move<3><<<blocks(m), THREADS, 0, c->stream>>>(zone_arrays_of(c), c->z_idx, m, c->z_buf, 0);
   else
     k_zone_move<2><<<blocks(m), THREADS, 0, c->stream>>>(zone_arrays_of(c), c->z_idx, m, c->z_buf, 0);
   CKL("zone scatter");
-  /* the pageable idx and the staging buffer are read by the copies above
-   * before the caller may change them */
-  CK(cudaStreamSynchronize(c->stream));
   return WL_OK;
 }
 
