@@ -483,9 +483,11 @@ struct wl_vres_layout;
 void wl_plan_refine_layout(const struct wl_plan *p, double x_if, struct wl_vres_opts *vo,
                            struct wl_vres_layout *lay);
 
-/* resolution.refine.from: auto in s for machine m: one resolution where
- * the run takes the GPU (m->device_bytes > 0; the coupling edits particles
- * on the host between steps), s->resolution.refine.gpu. wl_plan_choose
+/* resolution.refine in s for machine m: from: auto runs one resolution
+ * where the run takes the GPU (m->device_bytes > 0; the coupling edits
+ * particles on the host between steps, slower there than one resolution),
+ * s->resolution.refine.gpu; a given `from` runs and the plan notes the cost,
+ * s->resolution.refine.gpu_given. wl_plan_choose
  * calls it; a sweep, which plans its cases without wl_plan_choose, for
  * each case. */
 void wl_plan_refine_machine(struct wl_scenario *s, const struct wl_plan_machine *m);

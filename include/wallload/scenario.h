@@ -152,6 +152,8 @@ struct wl_scenario {
                                         (plan.c plan_refine places it from the scene) */
       int gpu; /* from: auto on a machine whose run takes the GPU (wl_plan_choose): the
                   CUDA backend runs one resolution */
+      int gpu_given; /* a given `from` on such a machine: it runs, slower than one
+                        resolution there (plan.c's note) */
     } refine;
   } resolution;
   struct {

@@ -46,10 +46,15 @@
  * Either integrator: buffer particles move with their fitted velocity
  * under both (sph/integrate.h).
  *
+ * The coupling runs on the host, on a zone of each level (the particles
+ * within its reach of the interface and a flux point's worth of parked
+ * ones: backend.h zone_download / zone_upload, sph.h wl_sph_sim_edit_zone),
+ * so either backend runs it; on a GPU it costs a round trip and the host's
+ * work every step (docs/variable-resolution.md, "On the GPU").
+ *
  * Limits of this stage: 2D, two levels, the interface a vertical line, a
- * flat bed under the flux points (z_bed), a backend with upload (the CPU
- * backend); no loads, gauges or outputs of its own: the caller reads each
- * level (wl_vres_level) in the range it owns. */
+ * flat bed under the flux points (z_bed); no loads, gauges or outputs of its
+ * own: the caller reads each level (wl_vres_level) in the range it owns. */
 #ifndef WALLLOAD_VRES_H
 #define WALLLOAD_VRES_H
 

@@ -733,7 +733,9 @@ static enum wl_status plan_refine(const struct wl_scenario *s, struct wl_plan *p
     if (!p->solitary.present) none = "the scenario has no solitary case";
     else if (p->dims != 2) none = "two resolutions run in 2D only and this scenario plans 3D";
     else if (s->resolution.refine.gpu)
-      none = "this run takes the GPU, where two resolutions do not run yet";
+      none = "this run takes the GPU, where the two levels' coupling (on the host, every step) "
+             "takes longer than the uniform fine run (seawall.yaml at dp = 0.006 m: 84 s against "
+             "5.5 s; docs/variable-resolution.md)";
     else if (p->solitary.wave.H / p->dp_coarse < WL_PLAN_REFINE_COARSE_PPH_MIN) {
       snprintf(why, sizeof why,
                "the coarse level (dp = %.4g m) would hold %.1f particles over the solitary wave's "
@@ -801,6 +803,11 @@ static enum wl_status plan_refine(const struct wl_scenario *s, struct wl_plan *p
             "solitary wave's height; below %g the wave it hands to the fine level is off by more "
             "than 2 %% (docs/variable-resolution.md): a smaller dp, or no refine",
          p->dp_coarse, p->solitary.wave.H / p->dp_coarse, WL_PLAN_REFINE_COARSE_PPH_MIN);
+  if (s->resolution.refine.gpu_given)
+    note(p, "resolution.refine on a GPU: the levels' coupling runs on the host every step, so the "
+            "run takes longer than dp everywhere would (seawall.yaml's solitary case at dp = "
+            "0.006 m: 84 s against 5.5 s; docs/variable-resolution.md); the cost above counts "
+            "particle-steps, not that");
   if (p->explosion.refine)
     note(p, "resolution.refine: the explosion's short waves cross the coarse level and lose "
             "height there (seawall.yaml: a quarter of the positive impulse at the wall; "
@@ -1394,8 +1401,9 @@ static int fits_memory(const struct wl_plan_cost *cost, const struct wl_plan_mac
 }
 
 void wl_plan_refine_machine(struct wl_scenario *s, const struct wl_plan_machine *m) {
-  s->resolution.refine.gpu = s->resolution.refine.present && s->resolution.refine.from.is_auto &&
-                             m->device_bytes > 0;
+  const int on_gpu = s->resolution.refine.present && m->device_bytes > 0;
+  s->resolution.refine.gpu = on_gpu && s->resolution.refine.from.is_auto;
+  s->resolution.refine.gpu_given = on_gpu && !s->resolution.refine.from.is_auto;
 }
 
 enum wl_status wl_plan_choose(struct wl_scenario *s, const struct wl_plan_machine *m,
