@@ -2416,6 +2416,16 @@ __global__ void k_zone_move(struct zone_arrays a, const int *__restrict__ idx, i
   }
 }
 
+/* k_zone_move of the m zone particles at c->z_idx, enqueued. */
+static void zone_launch(const struct gpu *c, int m, int to_buf) {
+  if (c->dim == 3)
+    k_zone_move<3><<<blocks(m), THREADS, 0, c->stream>>>(zone_arrays_of(c), c->z_idx, m, c->z_buf,
+                                                         to_buf);
+  else
+    k_zone_move<2><<<blocks(m), THREADS, 0, c->stream>>>(zone_arrays_of(c), c->z_idx, m, c->z_buf,
+                                                         to_buf);
+}
+
 /* host <-> the packed layout in buf (to_buf: host into buf). */
 static void zone_pack(int dim, struct wl_particles *host, unsigned char *buf, int m, int to_buf) {
   const struct zone_layout l = zone_layout_of(dim, m);
@@ -2482,10 +2492,7 @@ static enum wl_status cuda_zone_download(void *ctx, double x_lo, double x_hi, in
   if (m == 0) return WL_OK;
   CK(cudaMemcpyAsync(c->z_idx, c->h_zidx, sizeof(int) * (size_t)m, cudaMemcpyHostToDevice,
                      c->stream));
-  if (c->dim == 3)
-    k_zone_move<3><<<blocks(m), THREADS, 0, c->stream>>>(zone_arrays_of(c), c->z_idx, m, c->z_buf, 1);
-  else
-    k_zone_move<2><<<blocks(m), THREADS, 0, c->stream>>>(zone_arrays_of(c), c->z_idx, m, c->z_buf, 1);
+  zone_launch(c, m, 1);
   CKL("zone gather");
   CK(cudaMemcpyAsync(c->h_dl, c->z_buf, zone_layout_of(c->dim, m).bytes, cudaMemcpyDeviceToHost,
                      c->stream));
@@ -2512,10 +2519,7 @@ static enum wl_status cuda_zone_upload(void *ctx, const struct wl_particles *hos
                      c->stream));
   CK(cudaMemcpyAsync(c->z_idx, c->h_zidx, sizeof(int) * (size_t)m, cudaMemcpyHostToDevice,
                      c->stream));
-  if (c->dim == 3)
-    k_zone_move<3><<<blocks(m), THREADS, 0, c->stream>>>(zone_arrays_of(c), c->z_idx, m, c->z_buf, 0);
-  else
-    k_zone_move<2><<<blocks(m), THREADS, 0, c->stream>>>(zone_arrays_of(c), c->z_idx, m, c->z_buf, 0);
+  zone_launch(c, m, 0);
   CKL("zone scatter");
   return WL_OK;
 }

@@ -153,19 +153,28 @@ int wl_particles_zone_select(const struct wl_particles *p, double x_lo, double x
   return m;
 }
 
-void wl_particles_gather(struct wl_particles *dst, const struct wl_particles *src, const int *idx,
-                         int m) {
+/* The state fields between a particle set and its zone: zone particle k
+ * is all's particle idx[k] (to_zone: all's into zone; else back). */
+static void zone_move(struct wl_particles *zone, struct wl_particles *all, const int *idx, int m,
+                      int to_zone) {
   int nf;
   const struct wl_field_desc *fd = wl_particles_fields(&nf);
   for (int f = 0; f < nf; f++) {
     if (!(fd[f].flags & WL_FIELD_SORT)) continue;
     const size_t es = wl_field_type_size(fd[f].type);
-    for (int c = 0; c < wl_field_components(&fd[f], src->dim); c++) {
-      char *d = *slot(dst, &fd[f], c);
-      const char *s = *slot(src, &fd[f], c);
-      for (int k = 0; k < m; k++) memcpy(d + (size_t)k * es, s + (size_t)idx[k] * es, es);
+    for (int c = 0; c < wl_field_components(&fd[f], all->dim); c++) {
+      char *z = *slot(zone, &fd[f], c), *a = *slot(all, &fd[f], c);
+      for (int k = 0; k < m; k++) {
+        char *zk = z + (size_t)k * es, *ak = a + (size_t)idx[k] * es;
+        memcpy(to_zone ? zk : ak, to_zone ? ak : zk, es);
+      }
     }
   }
+}
+
+void wl_particles_gather(struct wl_particles *dst, const struct wl_particles *src, const int *idx,
+                         int m) {
+  zone_move(dst, (struct wl_particles *)src, idx, m, 1);
   int nb = 0;
   while (nb < m && idx[nb] < src->n_bound) nb++;
   dst->n = m;
@@ -173,15 +182,5 @@ void wl_particles_gather(struct wl_particles *dst, const struct wl_particles *sr
 }
 
 void wl_particles_scatter(struct wl_particles *dst, const struct wl_particles *src, const int *idx) {
-  int nf;
-  const struct wl_field_desc *fd = wl_particles_fields(&nf);
-  for (int f = 0; f < nf; f++) {
-    if (!(fd[f].flags & WL_FIELD_SORT)) continue;
-    const size_t es = wl_field_type_size(fd[f].type);
-    for (int c = 0; c < wl_field_components(&fd[f], src->dim); c++) {
-      char *d = *slot(dst, &fd[f], c);
-      const char *s = *slot(src, &fd[f], c);
-      for (int k = 0; k < src->n; k++) memcpy(d + (size_t)idx[k] * es, s + (size_t)k * es, es);
-    }
-  }
+  zone_move((struct wl_particles *)src, dst, idx, src->n, 0);
 }
