@@ -2363,17 +2363,13 @@ static struct zone_arrays zone_arrays_of(const struct gpu *c) {
   return a;
 }
 
-/* Particle i's flag: 1 in the zone (its x in [lo, hi]), 2 parked beyond
- * it, 0 neither. */
+/* Particle i's flag (sph/particles.h wl_sph_zone_flag). */
 __global__ void k_zone_flag(const double *__restrict__ x, const unsigned char *__restrict__ kind,
                             const unsigned char *__restrict__ body, int n, double lo, double hi,
                             unsigned char *flag) {
   const int i = tid();
   if (i >= n) return;
-  const double xi = x[i];
-  flag[i] = xi >= lo && xi <= hi ? 1
-            : kind[i] == WL_KIND_FLUID && body[i] == WL_SPH_BODY_EXCLUDED ? 2
-                                                                          : 0;
+  flag[i] = (unsigned char)wl_sph_zone_flag(x[i], kind[i], body[i], lo, hi);
 }
 
 /* The packed layout of m particles' fields (download's, dl_parts): x, y

@@ -693,6 +693,23 @@ static const char *refine_problem(const struct wl_scenario *s, const struct wl_p
   return NULL;
 }
 
+/* An experimental numerics option (docs/numerics.md) at value v: off at 0;
+ * refused where `refuse` (the key, its line and why); else a plan note
+ * that it is experimental and what it costs. */
+static enum wl_status experimental_option(const struct wl_scenario *s, struct wl_plan *p,
+                                          const struct wl_scenario_value *v, const char *key,
+                                          int refuse, const char *refusal, const char *caution,
+                                          struct wl_error *err) {
+  if (!(v->q.si > 0)) return WL_OK;
+  if (refuse) {
+    char rbuf[32];
+    return wl_error_set(err, WL_EINPUT, "%s%s: %s: %g %s", s->path, where(v, rbuf), key, v->q.si,
+                        refusal);
+  }
+  note(p, "%s = %g is experimental (docs/numerics.md): %s", key, v->q.si, caution);
+  return WL_OK;
+}
+
 /* resolution.refine: the two levels' layout (vres.h wl_vres_layout) and
  * which cases run it. An interface the scenario gives must pass
  * refine_problem (else the error names the key); `from: auto` places one
@@ -879,35 +896,27 @@ static enum wl_status plan_resolution(const struct wl_scenario *s, struct wl_pla
     if (rs) return rs;
   }
   p->evals_per_step = s->numerics.integrator.choice == WL_INTEGRATOR_VERLET ? 1 : 2;
-  if (s->numerics.residual_viscosity.q.si > 0 && p->evals_per_step == 1) {
-    char rbuf[32];
-    return wl_error_set(err, WL_EINPUT,
-                        "%s%s: numerics.residual_viscosity: %g needs numerics.integrator: "
-                        "symplectic; the Verlet leapfrog amplifies a velocity-dependent damping "
-                        "(its odd-even mode grows each step between the Euler steps), and "
-                        "scenarios/seawall.yaml's explosion load diverged with it; expected 0 "
-                        "or integrator: symplectic",
-                        s->path, where(&s->numerics.residual_viscosity, rbuf),
-                        s->numerics.residual_viscosity.q.si);
-  }
-  if (s->numerics.residual_viscosity.q.si > 0)
-    note(p, "numerics.residual_viscosity = %g is experimental (docs/numerics.md): it keeps still "
-            "water still, but makes solitary waves about 2.5 %% fast and costs coarse levels up to "
-            "17 %% of scenarios/seawall.yaml's explosion peak; do not quote its loads in a design",
-         s->numerics.residual_viscosity.q.si);
-  if (s->numerics.smagorinsky.q.si > 0 && s->numerics.viscosity.choice != WL_VISCOSITY_LAMINAR) {
-    char rbuf[32];
-    return wl_error_set(err, WL_EINPUT,
-                        "%s%s: numerics.smagorinsky: %g adds an eddy viscosity to the laminar "
-                        "viscosity's nu; expected 0 or numerics.viscosity: laminar",
-                        s->path, where(&s->numerics.smagorinsky, rbuf),
-                        s->numerics.smagorinsky.q.si);
-  }
-  if (s->numerics.smagorinsky.q.si > 0)
-    note(p, "numerics.smagorinsky = %g is experimental (docs/numerics.md): an eddy viscosity "
-            "where the flow shears at the particle scale; measured on the reference cases, not "
-            "yet on the main job's loads",
-         s->numerics.smagorinsky.q.si);
+  enum wl_status xs = experimental_option(
+      s, p, &s->numerics.residual_viscosity, "numerics.residual_viscosity",
+      p->evals_per_step == 1,
+      "needs numerics.integrator: symplectic; the Verlet leapfrog amplifies a velocity-dependent "
+      "damping (its odd-even mode grows each step between the Euler steps), and "
+      "scenarios/seawall.yaml's explosion load diverged with it; expected 0 or integrator: "
+      "symplectic",
+      "it keeps still water still, but makes solitary waves about 2.5 % fast and costs coarse "
+      "levels up to 17 % of scenarios/seawall.yaml's explosion peak; do not quote its loads in a "
+      "design",
+      err);
+  if (!xs)
+    xs = experimental_option(
+        s, p, &s->numerics.smagorinsky, "numerics.smagorinsky",
+        s->numerics.viscosity.choice != WL_VISCOSITY_LAMINAR,
+        "adds an eddy viscosity to the laminar viscosity's nu; expected 0 or numerics.viscosity: "
+        "laminar",
+        "an eddy viscosity where the flow shears at the particle scale; measured on the reference "
+        "cases, not yet on the main job's loads",
+        err);
+  if (xs) return xs;
   enum wl_status st = plan_sides(s, p, err);
   if (st) return st;
   /* each case's speed of sound from its own largest depth, as its flume

@@ -144,11 +144,8 @@ int wl_particles_zone_select(const struct wl_particles *p, double x_lo, double x
                              int *idx) {
   int m = 0, parked = 0;
   for (int i = 0; i < p->n; i++) {
-    const double x = p->pos[0][i];
-    if (x >= x_lo && x <= x_hi) idx[m++] = i;
-    else if (parked < n_parked && p->kind[i] == WL_KIND_FLUID &&
-             p->body[i] == WL_SPH_BODY_EXCLUDED)
-      idx[m++] = i, parked++;
+    const int f = wl_sph_zone_flag(p->pos[0][i], p->kind[i], p->body[i], x_lo, x_hi);
+    if (f == 1 || (f == 2 && parked < n_parked)) idx[m++] = i, parked += f == 2;
   }
   return m;
 }

@@ -32,6 +32,14 @@ enum wl_particle_kind {
  * its velocity (DualSPHysics 5.4's VRes buffers). */
 #define WL_SPH_BODY_BUFFER 254
 
+/* A particle's place in a zone (backend.h zone_download): 1 in it (its x in
+ * [lo, hi]), 2 parked beyond it (a candidate for revival), 0 neither. */
+static inline WL_HD int wl_sph_zone_flag(double x, unsigned char kind, unsigned char body,
+                                         double lo, double hi) {
+  if (x >= lo && x <= hi) return 1;
+  return kind == WL_KIND_FLUID && body == WL_SPH_BODY_EXCLUDED ? 2 : 0;
+}
+
 struct wl_particles {
   int dim;      /* 2: components (x, z); 3: (x, y, z) */
   int n;        /* particles in use */
