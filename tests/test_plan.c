@@ -120,6 +120,8 @@ static void refine_auto(void) {
   if (make(text, &s, &p)) {
     CHECK_TRUE(p.refine && p.refine_auto && p.solitary.refine, "from: auto refines the solitary case");
     CHECK_REL(p.dp_coarse, 0.025, 1e-12, "the coarse level at 2 dp");
+    CHECK_TRUE(has_note(&p, "water piles into the fine level"),
+               "check says that two levels read the solitary impulse high");
     CHECK_REL(p.refine_from, 10.0 - 2 * 0.5 - beyond * 0.025, 1e-9,
               "the interface: two depths and the coarse level's reach seaward of the toe (by hand)");
   }
@@ -142,6 +144,7 @@ static void refine_auto(void) {
   snprintf(text, sizeof text, slope, 0.08, "", "");
   if (make(text, &s, &p)) {
     CHECK_TRUE(!p.refine && !p.solitary.refine, "from: auto keeps one resolution under 4 a height");
+    CHECK_TRUE(!has_note(&p, "water piles into the fine level"), "and no two-level caveat");
     CHECK_TRUE(has_note(&p, "from: auto: one resolution"), "and check says why");
   }
   wl_scenario_clear(&s);
