@@ -710,6 +710,13 @@ static enum wl_status experimental_option(const struct wl_scenario *s, struct wl
   return WL_OK;
 }
 
+/* Why two levels do not pay on a GPU, as `check` says it (measured:
+ * docs/variable-resolution.md, "On the GPU"). */
+#define REFINE_GPU_COST                                                                        \
+  "the two levels' coupling runs on the host every step, so the run takes longer than dp "    \
+  "everywhere would (seawall.yaml's solitary case at dp = 0.006 m: 84 s against 5.5 s; "       \
+  "docs/variable-resolution.md)"
+
 /* resolution.refine: the two levels' layout (vres.h wl_vres_layout) and
  * which cases run it. An interface the scenario gives must pass
  * refine_problem (else the error names the key); `from: auto` places one
@@ -750,9 +757,7 @@ static enum wl_status plan_refine(const struct wl_scenario *s, struct wl_plan *p
     if (!p->solitary.present) none = "the scenario has no solitary case";
     else if (p->dims != 2) none = "two resolutions run in 2D only and this scenario plans 3D";
     else if (s->resolution.refine.gpu)
-      none = "this run takes the GPU, where the two levels' coupling (on the host, every step) "
-             "takes longer than the uniform fine run (seawall.yaml at dp = 0.006 m: 84 s against "
-             "5.5 s; docs/variable-resolution.md)";
+      none = "this run takes the GPU, where " REFINE_GPU_COST;
     else if (p->solitary.wave.H / p->dp_coarse < WL_PLAN_REFINE_COARSE_PPH_MIN) {
       snprintf(why, sizeof why,
                "the coarse level (dp = %.4g m) would hold %.1f particles over the solitary wave's "
@@ -826,9 +831,7 @@ static enum wl_status plan_refine(const struct wl_scenario *s, struct wl_plan *p
             "everywhere (solitary_wall at h/30-h/40; seawall.yaml +4 %% at dp = 0.006 m), the "
             "peaks within 1.2 %% (docs/history/2026-11-28-vres-pileup.md)");
   if (s->resolution.refine.gpu_given)
-    note(p, "resolution.refine on a GPU: the levels' coupling runs on the host every step, so the "
-            "run takes longer than dp everywhere would (seawall.yaml's solitary case at dp = "
-            "0.006 m: 84 s against 5.5 s; docs/variable-resolution.md); the cost above counts "
+    note(p, "resolution.refine on a GPU: " REFINE_GPU_COST "; the cost above counts "
             "particle-steps, not that");
   if (p->explosion.refine)
     note(p, "resolution.refine: the explosion's short waves cross the coarse level and lose "

@@ -158,10 +158,8 @@ static enum wl_status grid_build(struct level *L, const struct wl_particles *p, 
 }
 
 /* A zone of at most this many fluid particles is coupled on one thread:
- * waking a team of sleeping threads costs more than these loops (measured
- * 2026-11-28: a 2 200-particle flume's coupling 0.30 -> 0.10 ms a step on 2
- * threads; seawall.yaml's solitary case at dp = 0.006 m on the GPU machine's
- * 16 threads, 2.1 -> 1.1 ms a step in all). */
+ * waking a team of sleeping threads costs more than these loops
+ * (docs/history/2026-11-28-vres-gpu.md). */
 #define WL_VRES_SERIAL_MAX 20000
 
 /* Most particles of a level within 2h of a point (a lattice holds about 40;
