@@ -77,9 +77,12 @@ typedef double (*wl_scene_eta_fn)(double x, void *user);
  * bed_x[i], bed_z[i], i < n_bed, bed_x increasing; [m]) and the free surface
  * eta(x), in columns laid from x1: each column's lowest particle dp/2 from
  * the bed (the bed is a wall face: its first boundary layer is dp/2 below;
- * on a slope the column starts dp / (2 cos theta) above it), as many
- * particles as put its top face nearest eta(x), stacked hydrostatically
- * (see above). Each column is as wide as makes the particles still water at
+ * on a slope the column starts dp / (2 cos theta) above it), stacked
+ * hydrostatically (see above). Where eta(x) departs from `level` (a wave, a
+ * crater) the columns' counts are rounded with each remainder carried to the
+ * next column, seaward first, so that the water above or below the level is
+ * laid to half a particle in all and each column's top within a spacing of
+ * eta. Each column is as wide as makes the particles still water at
  * `level` would give it hold compressed water exactly to that level (a
  * little under dp: the water is denser at depth), so still water is level
  * over beds of every depth; over a bed a whole number of rows below the
