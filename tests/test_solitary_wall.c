@@ -150,20 +150,25 @@ int main(int argc, char **argv) {
   gsl_set_error_handler_off();
   setvbuf(stdout, NULL, _IOLBF, 0); /* progress lines survive a timeout */
   const int quick = getenv("WL_TEST_QUICK") != NULL;
-  /* [verlet] [0.2|0.3]: the integrator, and one wave height (both without) */
+  /* [verlet] [0.2|0.3] [refine [DP]]: the integrator, one wave height (both without), or the
+   * two-level pair (at fine spacing DP, default REFINE_DP) */
   int verlet = 0, only = 0, refine = 0;
+  double refine_dp = REFINE_DP;
   for (int a = 1; a < argc; a++) {
+    char *end;
     if (!strcmp(argv[a], "verlet")) verlet = 1;
     else if (!strcmp(argv[a], "refine")) refine = 1;
+    else if (refine && a == argc - 1 && (refine_dp = strtod(argv[a], &end)) > 0 && !*end)
+      ; /* refine DP: the pair at another fine spacing [m] */
     else if (!strcmp(argv[a], "0.3")) only = 3;
     else if (!strcmp(argv[a], "0.2")) only = 2;
     else {
-      printf("FAIL unknown argument '%s' (verlet, refine, 0.2, 0.3)\n", argv[a]);
+      printf("FAIL unknown argument '%s' (verlet, refine [DP], 0.2, 0.3)\n", argv[a]);
       return 1;
     }
   }
   if (refine) {
-    refine_against_uniform(0.3, 1.559253, REFINE_DP, verlet);
+    refine_against_uniform(0.3, 1.559253, refine_dp, verlet);
     return TEST_RESULT();
   }
   struct wl_case_result cr;
