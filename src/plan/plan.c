@@ -827,7 +827,7 @@ static enum wl_status plan_refine(const struct wl_scenario *s, struct wl_plan *p
          p->dp_coarse, p->solitary.wave.H / p->dp_coarse, WL_PLAN_REFINE_COARSE_PPH_MIN);
   if (p->solitary.refine)
     note(p, "resolution.refine: water piles into the fine level as the solitary wave enters and "
-            "stays after the reflection: the positive impulse reads 1.4-3.6 %% above dp "
+            "stays after the reflection: the positive impulse reads up to 3.7 %% above dp "
             "everywhere (solitary_wall at h/30-h/40; seawall.yaml +4 %% at dp = 0.006 m), the "
             "peaks within 1.2 %% (docs/history/2026-11-28-vres-pileup.md)");
   if (s->resolution.refine.gpu_given)
