@@ -156,10 +156,11 @@ int main(int argc, char **argv) {
   double refine_dp = REFINE_DP;
   for (int a = 1; a < argc; a++) {
     char *end;
+    const double dp_given = strtod(argv[a], &end);
     if (!strcmp(argv[a], "verlet")) verlet = 1;
     else if (!strcmp(argv[a], "refine")) refine = 1;
-    else if (refine && a == argc - 1 && (refine_dp = strtod(argv[a], &end)) > 0 && !*end)
-      ; /* refine DP: the pair at another fine spacing [m] */
+    else if (refine && a == argc - 1 && dp_given > 0 && !*end)
+      refine_dp = dp_given; /* refine DP: the pair at another fine spacing [m] */
     else if (!strcmp(argv[a], "0.3")) only = 3;
     else if (!strcmp(argv[a], "0.2")) only = 2;
     else {

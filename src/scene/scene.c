@@ -330,7 +330,7 @@ enum wl_status wl_scene_fluid_surface(struct wl_scene *sc, double x0, double x1,
    * (column_fill), rounded with the remainder carried on to the next column
    * (error diffusion), so that a wave or a crater holds its volume to half a
    * particle. Rounding each column alone dropped every tail under dp/2: a
-   * solitary wave started 2.4 % short of its volume at dp = H/6. Columns at
+   * solitary wave started 2.4 % short of its volume at dp = H/9. Columns at
    * the still level keep the count they were laid with. */
   enum wl_status st = WL_OK;
   double *zc = NULL, *rc = NULL, x[3], *fill_rho = NULL, carry = 0;
