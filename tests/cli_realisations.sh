@@ -25,9 +25,12 @@ trap 'rm -rf "$work"' EXIT
 echo "leak:libfontconfig.so" > "$work/lsan.supp"
 export LSAN_OPTIONS="suppressions=$work/lsan.supp${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
 # Under the sanitizers (WL_TEST_QUICK) a coarser ladder: this test checks
-# the bookkeeping, not the physics.
+# the bookkeeping, not the physics. Not coarser than dp 0.04 m (5 particles
+# in the depth): from dp 0.05 m the finer level's wall force never rises
+# above its force at rest within the run, and the positive impulse's band
+# has nothing to check; 1.0 s lets the wave reach the wall.
 dp0=0.035 end=1.2
-[ -n "${WL_TEST_QUICK:-}" ] && dp0=0.05 end=1.2
+[ -n "${WL_TEST_QUICK:-}" ] && dp0=0.04 end=1.0
 cat > "$work/real.yaml" <<YAML
 scenario: real
 water: {depth: 0.2 m}
