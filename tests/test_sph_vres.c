@@ -251,9 +251,16 @@ static int coupled(const struct basin *b, double dpc, double dpf, double x_if, s
   wl_vres_layout(x_if, dpc, dpf, WL_PLAN_COEFH_2D * sqrt(2.0), 1, o, &lay);
   struct wl_sph_config cfg[2];
   struct wl_particles init[2] = {{0}, {0}};
+  /* Each level's water holds the columns whose centres lie in its range and
+   * band, as `assess` lays them (the flume built whole, then cropped at the
+   * band's far edge; src/assess/levels.c). The scene lays whole columns from
+   * a range's far end, so the fine level's range starts half a spacing
+   * seaward of its band's edge: laid from the edge itself, the column
+   * straddling it was left out, and the fine level started a column (1 kg/m
+   * at dp = 0.005 m) short of what the coupling assumes (2026-11-29). */
   if (basin_level(b, dpc, 0, lay.water_hi[0] + 3 * dpc, 0, lay.water_hi[0], w, &cfg[0], &init[0]) ||
-      basin_level(b, dpf, lay.water_lo[1] - 3 * dpf, b->length, lay.water_lo[1], b->length, w,
-                  &cfg[1], &init[1]))
+      basin_level(b, dpf, lay.water_lo[1] - 3 * dpf, b->length, lay.water_lo[1] - 0.5 * dpf,
+                  b->length, w, &cfg[1], &init[1]))
     return 1;
   struct wl_vres_level_spec s[2];
   memset(s, 0, sizeof s);
