@@ -253,14 +253,17 @@ static int coupled(const struct basin *b, double dpc, double dpf, double x_if, s
   struct wl_particles init[2] = {{0}, {0}};
   /* Each level's water holds the columns whose centres lie in its range and
    * band, as `assess` lays them (the flume built whole, then cropped at the
-   * band's far edge; src/assess/levels.c). The scene lays whole columns from
-   * a range's far end, so the fine level's range starts half a spacing
-   * seaward of its band's edge: laid from the edge itself, the column
-   * straddling it was left out, and the fine level started a column (1 kg/m
-   * at dp = 0.005 m) short of what the coupling assumes (2026-11-29). */
+   * band's far edge; src/assess/levels.c). A wave's surface is laid in whole
+   * columns back from the range's far end (the wall), so the fine level's
+   * wave starts half a spacing seaward of its band's edge: laid from the
+   * edge itself, the column straddling it was left out, and the fine level
+   * started a column (1 kg/m at dp = 0.005 m) short of what the coupling
+   * assumes (2026-11-29). A still block is laid from its near end, whose
+   * first column's centre is half a spacing inside it. */
+  const double fine_x0 = lay.water_lo[1] - (w ? 0.5 * dpf : 0.0);
   if (basin_level(b, dpc, 0, lay.water_hi[0] + 3 * dpc, 0, lay.water_hi[0], w, &cfg[0], &init[0]) ||
-      basin_level(b, dpf, lay.water_lo[1] - 3 * dpf, b->length, lay.water_lo[1] - 0.5 * dpf,
-                  b->length, w, &cfg[1], &init[1]))
+      basin_level(b, dpf, lay.water_lo[1] - 3 * dpf, b->length, fine_x0, b->length, w, &cfg[1],
+                  &init[1]))
     return 1;
   struct wl_vres_level_spec s[2];
   memset(s, 0, sizeof s);
@@ -409,14 +412,19 @@ static int still(double periods, int strict) {
  * is printed beside it: the coupling passes on the coarse level's flow, so
  * the crest in the fine level can be no nearer the uniform fine run's than
  * the coarse level's own wave is at the interface. Measured (docs/history/
- * 2026-11-27-variable-resolution-overlap.md, "fifteenth session"): at
- * equal spacing (ratio 1) every bar is met by a factor 5 or more; at a
- * factor 2 with the coarse level at 4 particles a wave height (H/h 0.4,
- * fine rows 20) the crest at G2 reads +1.7 % of H, as the coarse level's
- * wave is above the fine one's at the interface; at 8 (fine rows 40) +0.9
- * %, and the return into the coarse level +1.3 %. The two-sided bar is
- * kept: issue 19 words it as height lost, and a wave that arrives too high
- * is as wrong a load. */
+ * 2026-11-27-variable-resolution-overlap.md, "fifteenth session", with the
+ * fine level laid a column short at its band's edge, which hid part of
+ * what the coupling does): at equal spacing (ratio 1) every bar was met by
+ * a factor 5 or more; at a factor 2 with the coarse level at 4 particles a
+ * wave height (H/h 0.4, fine rows 20) the crest at G2 read +1.7 % of H; at
+ * 8 (fine rows 40) +0.9 %, and the return into the coarse level +1.3 %.
+ * With the fine level laid whole (2026-11-29, docs/history/2026-11-29-
+ * vres-flux-rounding.md), fine rows 20: G2 +0.95 %, G3 -1.55 %, the
+ * interface's reflection 0.80 mm over the uniform run's (bar 0.8 mm),
+ * celerity +0.14 %, the return +5.25 % of H: the fine level's surplus of
+ * water (issue 19's pile-up) comes back with the reflection. The
+ * two-sided bar is kept: issue 19 words it as height lost, and a wave that
+ * arrives too high is as wrong a load. */
 
 #define FL_H 0.2     /* still water [m] */
 #define FL_L 5.5     /* wall to wall [m] */
