@@ -20,7 +20,15 @@
  *    below WL_VRES_DRY_MAX is above the other level's water and removed;
  *  - optionally the buffer particles are shifted along the interface
  *    (sph/shift.h's law, coefficient `shift`; the normal component removed
- *    so a band neither gains nor loses particles by it);
+ *    so a band neither gains nor loses particles by it), and with
+ *    `shift_across` across it too, less the band's mean displacement across
+ *    (spacing the band without a drift of its water through it). A band's
+ *    particles move with the donor's velocity and nothing else spaces them
+ *    across; unspaced, the symmetric pressure term pushes the fluid beside a
+ *    band away from where they crowd: issue 19's pile-up,
+ *    docs/history/2026-11-29-vres-band-spacing.md, where spacing them took
+ *    the pile-up away and lowered the transmitted wave, so it is measured
+ *    and not yet the default;
  *  - inflow refills a band: points one dp apart on its far edge accumulate
  *    the mass flux rho (u . n) dp dt of the other level there (never below
  *    zero; only under its water, wetness WL_VRES_WET_MIN), and each whole
@@ -87,6 +95,7 @@ struct wl_vres_opts {
   double z_bed;    /* the flat bed under the flux points [m] */
   double z_top;    /* the highest the water may reach at a band's far edge [m] */
   double shift;    /* > 0: shift buffer particles along the interface (sph/shift.h's A) */
+  int shift_across; /* 1: and across it, less the band's mean (above; measured, not the default) */
 };
 
 /* Counts since the start, per level. */

@@ -35,7 +35,8 @@ struct level {
   struct wl_sph_sim *sim;
   int threads;             /* the level's CPU threads, for the coupling's per-particle loops */
   struct fit_out *fits;    /* per particle, refill's first pass */
-  int fits_cap;
+  double *across;          /* per particle, shift_buffers' displacement across the interface */
+  int fits_cap;            /* of fits and across */
   const struct wl_sph_const *k;
   double lo, hi, w, dp, h, mass;
   double mass_lo, mass_hi; /* the part of its range its own mass counts (vres.h overlap) */
@@ -52,6 +53,7 @@ struct level {
 struct wl_vres {
   int n;
   double t, z_bed, z_top, shift;
+  int shift_across;
   struct level lv[WL_VRES_LEVELS_MAX];
 };
 
@@ -71,6 +73,7 @@ void wl_vres_free(struct wl_vres *v) {
     free(L->pt_n);
     free(L->acc);
     free(L->fits);
+    free(L->across);
     grid_free(&L->grid);
   }
   free(v);
@@ -218,30 +221,58 @@ static int fit_at(const struct level *D, const struct wl_particles *p, double x,
 }
 
 /* Particle shifting of level L's buffer particles (sph/shift.h's law,
- * delta r = -A h |v| dt dC/dz, capped at 0.1 dp), from the level's own
- * particles (its grid: fluid, buffer, walls), along the interface only:
- * its normal component is removed, as DualSPHysics' BufferShiftingCpu
- * does, so shifting moves no particle into or out of a band. Not where the
- * concentration is below 0.9 (a free surface). */
-static void shift_buffers(const struct level *L, struct wl_particles *p, double dt, double A) {
+ * delta r = -A h |v| dt grad C, each component capped at 0.1 dp), from the
+ * level's own particles (its grid: fluid, buffer, walls), along the
+ * interface: its normal component removed, as DualSPHysics'
+ * BufferShiftingCpu does, so shifting moves no particle into or out of a
+ * band. across: the normal component too, less its mean over the band
+ * (spacing without a drift of the band's water through it, whose inflow is
+ * the donor's alone), a particle that it would take out of its band keeping
+ * its x. A band's particles move with the donor's velocity and nothing else
+ * spaces them across; the symmetric pressure term pushes the fluid beside a
+ * band away from where they crowd, with the whole hydrostatic pressure
+ * behind it (docs/history/2026-11-29-vres-band-spacing.md: spaced across,
+ * the pile-up went and the transmitted wave read about 1.5 % of H lower).
+ * Not where the concentration is below 0.9 (a free surface). Serial: the
+ * band means sum in particle order, the same bits on any thread count. */
+static void shift_buffers(struct level *L, struct wl_particles *p, double dt, double A,
+                          int across) {
   const double cap = 0.1 * L->dp;
   int idx[WL_VRES_NEIGHBOURS_MAX];
   double r2[WL_VRES_NEIGHBOURS_MAX];
+  double sum[2] = {0, 0}; /* the across components' sums, by band: seaward of lo, beyond hi */
+  long cnt[2] = {0, 0};
   for (int i = p->n_bound; i < p->n; i++) {
+    L->across[i] = 0;
     if (p->body[i] != WL_SPH_BODY_BUFFER) continue;
-    const double z = p->pos[1][i];
-    const int n = neighbours(L, p, p->pos[0][i], z, idx, r2);
-    double dcdz = 0, conc = 0;
+    const double x = p->pos[0][i], z = p->pos[1][i];
+    const int n = neighbours(L, p, x, z, idx, r2);
+    double dcdx = 0, dcdz = 0, conc = 0;
     for (int q = 0; q < n; q++) {
       const int j = idx[q];
       const double vol = L->mass / (double)p->rho[j];
       conc += vol * (double)wl_sph_kernel_w(L->k, (wl_real)r2[q]);
-      dcdz += vol * (double)wl_sph_kernel_f(L->k, (wl_real)r2[q]) * (z - p->pos[1][j]); /* 0: j = i */
+      const double f = vol * (double)wl_sph_kernel_f(L->k, (wl_real)r2[q]);
+      dcdx += f * (x - p->pos[0][j]); /* 0: j = i */
+      dcdz += f * (z - p->pos[1][j]);
     }
     if (conc < 0.9) continue;
-    const double speed = hypot((double)p->vel[0][i], (double)p->vel[1][i]);
-    const double d = -A * L->h * speed * dt * dcdz;
-    p->pos[1][i] += d > cap ? cap : d < -cap ? -cap : d;
+    const double s = -A * L->h * hypot((double)p->vel[0][i], (double)p->vel[1][i]) * dt;
+    const double dz = s * dcdz, dx = s * dcdx;
+    p->pos[1][i] += dz > cap ? cap : dz < -cap ? -cap : dz;
+    if (!across) continue;
+    const int e = x < L->lo ? 0 : 1;
+    L->across[i] = dx > cap ? cap : dx < -cap ? -cap : dx;
+    sum[e] += L->across[i];
+    cnt[e]++;
+  }
+  if (!across || cnt[0] + cnt[1] == 0) return;
+  for (int i = p->n_bound; i < p->n; i++) {
+    if (p->body[i] != WL_SPH_BODY_BUFFER || L->across[i] == 0) continue;
+    const double x = p->pos[0][i];
+    const int e = x < L->lo ? 0 : 1;
+    const double xn = x + L->across[i] - sum[e] / (double)cnt[e];
+    if (in_band(L, xn)) p->pos[0][i] = xn;
   }
 }
 
@@ -278,6 +309,18 @@ static void classify(struct level *L, struct wl_particles *p) {
   }
 }
 
+/* Room for n particles' fits and displacements across in L. */
+static enum wl_status fits_reserve(struct level *L, int n, struct wl_error *err) {
+  if (n <= L->fits_cap) return WL_OK;
+  free(L->fits);
+  free(L->across);
+  L->fits = malloc(sizeof *L->fits * (size_t)n);
+  L->across = malloc(sizeof *L->across * (size_t)n);
+  L->fits_cap = L->fits && L->across ? n : 0;
+  if (!L->fits_cap) return wl_error_set(err, WL_ENOMEM, "vres: out of memory for %d fits", n);
+  return WL_OK;
+}
+
 /* Level L's buffer particles from donor level D (vres.h), then the flux
  * points' creation. */
 static enum wl_status refill(struct level *L, struct wl_particles *p, const struct level *D,
@@ -285,12 +328,8 @@ static enum wl_status refill(struct level *L, struct wl_particles *p, const stru
   /* the fits first, side by side (each reads the donor level only), then
    * their use in particle order (parking counts its slots): the same bits
    * on any number of threads */
-  if (p->n > L->fits_cap) {
-    free(L->fits);
-    L->fits = malloc(sizeof *L->fits * (size_t)p->n);
-    L->fits_cap = L->fits ? p->n : 0;
-    if (!L->fits) return wl_error_set(err, WL_ENOMEM, "vres: out of memory for %d fits", p->n);
-  }
+  enum wl_status st = fits_reserve(L, p->n, err);
+  if (st) return st;
   struct fit_out *fits = L->fits;
   const int n = p->n, n_bound = p->n_bound;
 #pragma omp parallel for schedule(dynamic, 64) num_threads(L->threads) \
@@ -365,7 +404,11 @@ static enum wl_status couple(struct wl_vres *v, double dt, struct wl_error *err)
     if (st) return st;
   }
   if (dt > 0 && v->shift > 0)
-    for (int l = 0; l < v->n; l++) shift_buffers(&v->lv[l], p[l], dt, v->shift);
+    for (int l = 0; l < v->n; l++) {
+      const enum wl_status st = fits_reserve(&v->lv[l], p[l]->n, err);
+      if (st) return st;
+      shift_buffers(&v->lv[l], p[l], dt, v->shift, v->shift_across);
+    }
   for (int l = 0; l < v->n; l++) {
     const enum wl_status st = refill(&v->lv[l], p[l], &v->lv[1 - l], p[1 - l], dt, err);
     if (st) return st;
@@ -484,6 +527,7 @@ enum wl_status wl_vres_alloc(struct wl_vres **out, const struct wl_backend_ops *
   v->z_bed = opts ? opts->z_bed : 0.0;
   v->z_top = opts ? opts->z_top : 0.0;
   v->shift = opts && opts->shift >= 0 ? opts->shift : 0.0;
+  v->shift_across = opts && opts->shift_across;
   enum wl_status st = WL_OK;
   for (int l = 0; l < n_levels && !st; l++) {
     st = level_init(v, &v->lv[l], ops, &levels[l], opts, err);
