@@ -413,20 +413,11 @@ static int still(double periods, int strict) {
  * reflection below 1 % of H, celerity within 1 %). The uniform coarse run
  * is printed beside it: the coupling passes on the coarse level's flow, so
  * the crest in the fine level can be no nearer the uniform fine run's than
- * the coarse level's own wave is at the interface. Measured (docs/history/
- * 2026-11-27-variable-resolution-overlap.md, "fifteenth session", with the
- * fine level laid a column short at its band's edge, which hid part of
- * what the coupling does): at equal spacing (ratio 1) every bar was met by
- * a factor 5 or more; at a factor 2 with the coarse level at 4 particles a
- * wave height (H/h 0.4, fine rows 20) the crest at G2 read +1.7 % of H; at
- * 8 (fine rows 40) +0.9 %, and the return into the coarse level +1.3 %.
- * With the fine level laid whole (2026-11-29, docs/history/2026-11-29-
- * vres-flux-rounding.md), fine rows 20: G2 +0.95 %, G3 -1.55 %, the
- * interface's reflection 0.80 mm over the uniform run's (bar 0.8 mm),
- * celerity +0.14 %, the return +5.25 % of H: the fine level's surplus of
- * water (issue 19's pile-up) comes back with the reflection. The
- * two-sided bar is kept: issue 19 words it as height lost, and a wave that
- * arrives too high is as wrong a load. */
+ * the coarse level's own wave is at the interface. What it reads, dated,
+ * is beside the ctest lines (tests/CMakeLists.txt) and in docs/history
+ * (2026-11-27-variable-resolution-overlap.md, 2026-11-29-vres-band-
+ * spacing.md). The two-sided bar is kept: issue 19 words it as height
+ * lost, and a wave that arrives too high is as wrong a load. */
 
 #define FL_H 0.2     /* still water [m] */
 #define FL_L 5.5     /* wall to wall [m] */
@@ -440,6 +431,16 @@ static double g_t_end = FL_T_END;
 /* The initial crest's offset from FL_CREST [m]: the solitary mode's
  * realisations (below) start the same wave a fraction of a spacing apart. */
 static double g_crest_dx = 0;
+#define REALISATIONS_MAX 16
+
+/* The solitary mode's realisations (WL_VRES_REALISATIONS, default 3, at most
+ * REALISATIONS_MAX), and realisation k's crest offset at fine spacing dpf. */
+static int realisations(void) {
+  const char *env = getenv("WL_VRES_REALISATIONS");
+  const int n = env && atoi(env) > 0 ? atoi(env) : 3;
+  return n < REALISATIONS_MAX ? n : REALISATIONS_MAX;
+}
+static double realisation_offset(double dpf, int k) { return 0.3 * dpf * k; }
 #define FL_GAUGES 8
 /* G1 in the coarse level; G2 and G3 in the fine, 1.5 m or more from the
  * wall, whose reflection would otherwise lift their crests. The rest are
@@ -793,8 +794,8 @@ static int solitary_once(double eps, double ratio, double d[SOL_N]) {
   return 0;
 }
 
-/* Realisations of the solitary mode (WL_VRES_REALISATIONS, default 3): the
- * same wave started 0, 0.3, 0.6, ... fine spacings further along, each in
+/* Realisations of the solitary mode (realisations() above): the same wave
+ * started 0, 0.3, 0.6, ... fine spacings further along, each in
  * the coupled flume and in its own uniform fine run. One pair of runs is
  * one draw of the start's acoustic noise: the uniform fine run's own G2
  * crest moved by 2.5 % of H between starts 3 mm apart (2026-11-29,
@@ -803,15 +804,10 @@ static int solitary_once(double eps, double ratio, double d[SOL_N]) {
  * realisation's difference, and print the spread. */
 static int solitary(double eps, double ratio) {
   const double H = eps * FL_H, dpf = FL_H / g_fine_rows;
-  const char *env = getenv("WL_VRES_REALISATIONS");
-  const int n = env && atoi(env) > 0 ? atoi(env) : 3;
-  double d[16][SOL_N], mean[SOL_N] = {0}, sd[SOL_N] = {0};
-  if (n > 16) {
-    printf("FAIL WL_VRES_REALISATIONS %d: at most 16\n", n);
-    return 1;
-  }
+  const int n = realisations();
+  double d[REALISATIONS_MAX][SOL_N], mean[SOL_N] = {0}, sd[SOL_N] = {0};
   for (int r = 0; r < n; r++) {
-    g_crest_dx = 0.3 * dpf * r;
+    g_crest_dx = realisation_offset(dpf, r);
     printf("realisation %d: initial crest at %.4f m\n", r + 1, FL_CREST + g_crest_dx);
     if (solitary_once(eps, ratio, d[r])) return 1;
     for (int k = 0; k < SOL_N; k++) mean[k] += d[r][k] / n;
@@ -936,10 +932,8 @@ int main(int argc, char **argv) {
     if (argc > 4) g_fine_rows = atof(argv[4]);
     static struct record r;
     const double dps[2] = {FL_H / g_fine_rows, ratio * FL_H / g_fine_rows};
-    const char *env = getenv("WL_VRES_REALISATIONS");
-    const int n = env && atoi(env) > 0 ? atoi(env) : 3;
-    for (int k = 0; k < n; k++) { /* the solitary mode's realisations' starts */
-      g_crest_dx = 0.3 * dps[0] * k;
+    for (int k = 0; k < realisations(); k++) { /* the solitary mode's realisations' starts */
+      g_crest_dx = realisation_offset(dps[0], k);
       for (int q = 0; q < (ratio > 1 ? 2 : 1); q++) {
         if (flume_run(eps, dps[q], 0, g_t_end, &r, NULL, NULL)) return 1;
         ref_save(&r, eps, dps[q]);
