@@ -104,12 +104,12 @@ static void crater_mach(void) {
  * change (on a flat bed, the solitary wave's half-length to 1 % of H,
  * acosh(10) / k, k = sqrt(3 H / (4 d^3)), if longer), less the coarse
  * level's reach beyond it: three bands of overlap, its band and 2 h_c. A
- * band is whole rows of at least 2 h: h = 1.2 sqrt(2) dp = 1.697 dp, so
- * 4 dp_c; the reach is 12 + 4 + 2 x 1.697 = 19.394 dp_c. */
+ * band is whole rows of at least 3 h: h = 1.2 sqrt(2) dp = 1.697 dp, so
+ * 5.09, 6 dp_c; the reach is 18 + 6 + 2 x 1.697 = 27.394 dp_c. */
 static void refine_auto(void) {
   struct wl_scenario s;
   struct wl_plan p;
-  const double beyond = 12.0 + 4.0 + 2.0 * 1.2 * sqrt(2.0); /* in coarse spacings */
+  const double beyond = 18.0 + 6.0 + 2.0 * 1.2 * sqrt(2.0); /* in coarse spacings */
   char text[1024];
   const char *slope = "scenario: t\nwater: {depth: 0.5 m}\ndomain: {length: 20 m}\n"
                       "bathymetry: [{from: 10 m, slope: 1/10}, {from: 13 m, slope: 0}]\n"
@@ -120,8 +120,8 @@ static void refine_auto(void) {
   if (make(text, &s, &p)) {
     CHECK_TRUE(p.refine && p.refine_auto && p.solitary.refine, "from: auto refines the solitary case");
     CHECK_REL(p.dp_coarse, 0.025, 1e-12, "the coarse level at 2 dp");
-    CHECK_TRUE(has_note(&p, "water piles into the fine level"),
-               "check says that two levels read the solitary impulse high");
+    CHECK_TRUE(has_note(&p, "positive impulse about 1 % high"),
+               "check says how far two levels read the solitary impulse");
     CHECK_REL(p.refine_from, 10.0 - 2 * 0.5 - beyond * 0.025, 1e-9,
               "the interface: two depths and the coarse level's reach seaward of the toe (by hand)");
   }
@@ -144,7 +144,7 @@ static void refine_auto(void) {
   snprintf(text, sizeof text, slope, 0.08, "", "");
   if (make(text, &s, &p)) {
     CHECK_TRUE(!p.refine && !p.solitary.refine, "from: auto keeps one resolution under 4 a height");
-    CHECK_TRUE(!has_note(&p, "water piles into the fine level"), "and no two-level caveat");
+    CHECK_TRUE(!has_note(&p, "positive impulse about 1 % high"), "and no two-level caveat");
     CHECK_TRUE(has_note(&p, "from: auto: one resolution"), "and check says why");
   }
   wl_scenario_clear(&s);

@@ -212,6 +212,16 @@ struct wl_plan {
  * impulses within the same spread, for 4 % more runtime
  * (docs/variable-resolution.md, "In a scenario"). */
 #define WL_PLAN_REFINE_OVERLAP_BANDS 3.0
+/* resolution.refine: each level's band (its buffer) is this many of its h
+ * wide, unshifted. Against the uniform fine run (means of two or three
+ * starts; docs/variable-resolution.md, "The band's width"): 2h bands read
+ * solitary_wall's h/40 positive impulse +3.6 % (the fluid beside a crowded
+ * band runs ahead and piles water into the fine level), 3h bands +1.1 %,
+ * and seawall.yaml's at dp = 0.006 m +0.7 %, peaks and run-up within 1.5 %.
+ * Spacing the bands across the interface (vres.h shift_across) moved the
+ * impulse by -4 to -5 % in both: within 0.7 % at solitary_wall, -3.5 % at
+ * seawall.yaml, so it stays off. */
+#define WL_PLAN_REFINE_BUFFER_H 3.0
 /* Below this many particles over the wave height the coarse level does not
  * carry the wave to the fine level within 2 % (measured, as above); `check`
  * says so. */
@@ -476,7 +486,7 @@ double wl_plan_realisation_x(double x_center, double dp, int r, int n);
 
 /* resolution.refine's two levels laid out at x_if for plan p (vres.h
  * wl_vres_layout, the fine level landward, WL_PLAN_REFINE_OVERLAP_BANDS of
- * overlap set in *vo; vo may be NULL): the layout the plan checks and
+ * overlap and WL_PLAN_REFINE_BUFFER_H bands set in *vo; vo may be NULL): the layout the plan checks and
  * prices and the run builds. */
 struct wl_vres_opts;
 struct wl_vres_layout;

@@ -26,9 +26,10 @@
  *    particles move with the donor's velocity and nothing else spaces them
  *    across; unspaced, the symmetric pressure term pushes the fluid beside a
  *    band away from where they crowd: issue 19's pile-up,
- *    docs/history/2026-11-29-vres-band-spacing.md, where spacing them took
- *    the pile-up away and lowered the transmitted wave, so it is measured
- *    and not yet the default;
+ *    docs/history/2026-11-29-vres-band-spacing.md. Spacing them took the
+ *    pile-up away but lowered the transmitted wave by about as much, and
+ *    which error is left depends on the case (plan.h
+ *    WL_PLAN_REFINE_BUFFER_H), so it is measured and off by default;
  *  - inflow refills a band: points one dp apart on its far edge accumulate
  *    the mass flux rho (u . n) dp dt of the other level there (never below
  *    zero; only under its water, wetness WL_VRES_WET_MIN), and each whole

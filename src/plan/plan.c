@@ -611,6 +611,7 @@ void wl_plan_refine_layout(const struct wl_plan *p, double x_if, struct wl_vres_
   struct wl_vres_opts own = {0};
   if (!vo) vo = &own;
   vo->overlap = WL_PLAN_REFINE_OVERLAP_BANDS;
+  vo->buffer_h = WL_PLAN_REFINE_BUFFER_H;
   wl_vres_layout(x_if, p->dp_coarse, p->dp, p->h_sml / p->dp, 1, vo, lay);
 }
 
@@ -826,10 +827,10 @@ static enum wl_status plan_refine(const struct wl_scenario *s, struct wl_plan *p
             "than 2 %% (docs/variable-resolution.md): a smaller dp, or no refine",
          p->dp_coarse, p->solitary.wave.H / p->dp_coarse, WL_PLAN_REFINE_COARSE_PPH_MIN);
   if (p->solitary.refine)
-    note(p, "resolution.refine: water piles into the fine level as the solitary wave enters and "
-            "stays after the reflection: the positive impulse reads up to 3.7 %% above dp "
-            "everywhere (solitary_wall at h/30-h/40; seawall.yaml +4 %% at dp = 0.006 m), the "
-            "peaks within 1.2 %% (docs/history/2026-11-28-vres-pileup.md)");
+    note(p, "resolution.refine: the coupling reads the solitary case's positive impulse about 1 %% "
+            "high against dp everywhere (solitary_wall at h/40 +1.1 %%, seawall.yaml at dp = "
+            "0.006 m +0.7 %%; peaks within 0.4 %%, run-up within 1.5 %%; means of two or three "
+            "starts, one run scatters by 1-3 %% in run-up; docs/variable-resolution.md)");
   if (s->resolution.refine.gpu_given)
     note(p, "resolution.refine on a GPU: " REFINE_GPU_COST "; the cost above counts "
             "particle-steps, not that");
