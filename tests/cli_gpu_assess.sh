@@ -32,7 +32,7 @@ for d in 2d 3d 2dr; do
   [ $d = 3d ] && extra="
   dimensions: 3
   width: 0.16 m"
-  [ $d = 2dr ] && refine=", refine: {from: 2.2 m}"
+  [ $d = 2dr ] && refine=", refine: {from: 2.1 m}"
   cat > "$work/wall$d.yaml" <<YAML
 scenario: gpuwall$d
 water: {depth: 0.2 m}
