@@ -486,8 +486,8 @@ double wl_plan_realisation_x(double x_center, double dp, int r, int n);
 
 /* resolution.refine's two levels laid out at x_if for plan p (vres.h
  * wl_vres_layout, the fine level landward, WL_PLAN_REFINE_OVERLAP_BANDS of
- * overlap and WL_PLAN_REFINE_BUFFER_H bands set in *vo; vo may be NULL): the layout the plan checks and
- * prices and the run builds. */
+ * overlap and WL_PLAN_REFINE_BUFFER_H bands set in *vo; vo may be NULL):
+ * the layout the plan checks and prices and the run builds. */
 struct wl_vres_opts;
 struct wl_vres_layout;
 void wl_plan_refine_layout(const struct wl_plan *p, double x_if, struct wl_vres_opts *vo,
