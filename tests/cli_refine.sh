@@ -14,14 +14,14 @@ bad() { echo "FAIL $1"; fail=$((fail+1)); }
 work=$(mktemp -d)
 trap 'if [ "$(exec sh -c "echo \$PPID")" = "$$" ]; then rm -rf "$work"; fi' EXIT
 cd "$work" || exit 1
-dp=0.02; t_end=0.6; xf=2.2; wall=3.3
+dp=0.02; t_end=0.6; xf=2.2; wall=3.3; length=3.8
 # under the sanitizers (WL_TEST_QUICK): the pipeline at a coarser spacing
 # (its wider overlap and bands, 36 dp each side, need a longer flume)
-[ -n "${WL_TEST_QUICK:-}" ] && dp=0.03 && t_end=0.3 && xf=2.4 && wall=4.3
+[ -n "${WL_TEST_QUICK:-}" ] && dp=0.03 && t_end=0.3 && xf=2.4 && wall=4.3 && length=4.8
 cat >refine.yaml <<YAML
 scenario: refine
 water: { depth: 0.24 m }
-domain: { dimensions: 2, length: $(python3 -c "print($wall + 0.5)") m }
+domain: { dimensions: 2, length: $length m }
 wall: { x: $wall m, height: 0.6 m, probes: 20 }
 loads: { solitary: { height: 0.06 m, theory: exact, generation: initial, at: 1.4 m } }
 resolution: { dp: $dp m, refine: { from: $xf m } }

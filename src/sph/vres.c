@@ -243,7 +243,7 @@ static void shift_buffers(struct level *L, struct wl_particles *p, double dt, do
   double sum[2] = {0, 0}; /* the across components' sums, by band: seaward of lo, beyond hi */
   long cnt[2] = {0, 0};
   for (int i = p->n_bound; i < p->n; i++) {
-    L->across[i] = 0;
+    if (across) L->across[i] = 0;
     if (p->body[i] != WL_SPH_BODY_BUFFER) continue;
     const double x = p->pos[0][i], z = p->pos[1][i];
     const int n = neighbours(L, p, x, z, idx, r2);
@@ -405,7 +405,7 @@ static enum wl_status couple(struct wl_vres *v, double dt, struct wl_error *err)
   }
   if (dt > 0 && v->shift > 0)
     for (int l = 0; l < v->n; l++) {
-      const enum wl_status st = fits_reserve(&v->lv[l], p[l]->n, err);
+      const enum wl_status st = v->shift_across ? fits_reserve(&v->lv[l], p[l]->n, err) : WL_OK;
       if (st) return st;
       shift_buffers(&v->lv[l], p[l], dt, v->shift, v->shift_across);
     }
