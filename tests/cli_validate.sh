@@ -17,7 +17,8 @@
 #    to judge; see README "Known accuracy gaps");
 #  - error paths: unknown case -> exit 2 naming the valid cases; bad --ladder,
 #    unknown option, bad --backend -> exit 2; a reference directory without
-#    the data -> exit 2 (dambreak's tables, spheric2's experiment file);
+#    the data -> exit 2 (dambreak's tables, spheric2's experiment file,
+#    charlesworth's Navier-Stokes series);
 #  - the backend of the runs is recorded (validation.json "backend": "cpu");
 #  - spheric2 (3D, 4 s) is listed; its run is not here (about 10 min on 2
 #    cores at --quick): tests/test_validate.c checks its layout, build,
@@ -114,6 +115,12 @@ rc=$?
 rc=$?
 [ "$rc" = 2 ] && grep -q "spheric2/kleefsman2005_exp.dat" "$TMP/e" && pass "spheric2 without its data -> exit 2 naming the file" ||
   fail "spheric2 without its data -> exit $rc: $(cat "$TMP/e")"
+mkdir -p "$TMP/cwref/charlesworth" && cp "$SRC/reference/charlesworth/scenario.yaml" "$TMP/cwref/charlesworth/"
+"$BIN" validate charlesworth --quick --ladder 1 --reference "$TMP/cwref" -o "$TMP/e7" >"$TMP/o" 2>"$TMP/e"
+rc=$?
+[ "$rc" = 2 ] && grep -q "charlesworth/vof_gauge.csv" "$TMP/e" &&
+  pass "charlesworth without its Navier-Stokes series -> exit 2 naming the file" ||
+  fail "charlesworth without vof_gauge.csv -> exit $rc: $(cat "$TMP/e")"
 "$BIN" validate hydrostatic --quick --ladder 1 --backend gpu -o "$TMP/e6" >"$TMP/o" 2>"$TMP/e"
 rc=$?
 [ "$rc" = 2 ] && grep -q "backend: found 'gpu'; valid: cpu, cuda, auto" "$TMP/e" &&

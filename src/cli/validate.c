@@ -66,11 +66,18 @@ static void print_metric(const struct wl_validate_metric *m) {
     break;
   case WL_VALIDATE_RMSE:
   case WL_VALIDATE_RATIO:
-    printf("      %-34s %12.5g / %-12.5g %-6s = %8.2f %%   tol %.1f %%  %s\n", m->name, m->value,
-           m->reference, m->unit, 100 * m->error, isnan(m->tol) ? NAN : 100 * m->tol, mark);
+    if (isnan(m->tol))
+      printf("      %-34s %12.5g / %-12.5g %-6s = %8.2f %%   tol    n/a  %s\n", m->name,
+             m->value, m->reference, m->unit, 100 * m->error, mark);
+    else
+      printf("      %-34s %12.5g / %-12.5g %-6s = %8.2f %%   tol %.1f %%  %s\n", m->name,
+             m->value, m->reference, m->unit, 100 * m->error, 100 * m->tol, mark);
     break;
   case WL_VALIDATE_CORR:
-    printf("      %-34s r = %.4f%34s tol >= %.3f  %s\n", m->name, m->value, "", m->tol, mark);
+    if (isnan(m->tol))
+      printf("      %-34s r = %.4f%34s tol      n/a  %s\n", m->name, m->value, "", mark);
+    else
+      printf("      %-34s r = %.4f%34s tol >= %.3f  %s\n", m->name, m->value, "", m->tol, mark);
     break;
   }
 }

@@ -662,7 +662,7 @@ const struct wl_val_case wl_val_cases[] = {
      "solitary wave H/h = 0.3 on a wall: run-up (Su & Mirie 1980), impulse 2I",
      wl_val_run_solitary_wall, 0.02, 0.04, {0.2, 0.3, 1.559253, 0}, 0, 0},
     {"charlesworth", "charlesworth",
-     "seed 001 crater (32 lb at 8 ft): wave at 17.22 m vs linear Cauchy-Poisson",
+     "seed 001 crater (32 lb at 8 ft): wave at 17.22 m vs Navier-Stokes (VOF)",
      wl_val_run_crater, 0.5, 1.0, {8.0, 4.0, 0, 0}, 0, 0},
     {"spheric2", "spheric2",
      "3D dam break on a box (SPHERIC Test 2): P1-P4, H1-H4 vs Kleefsman et al. 2005",

@@ -14,11 +14,14 @@
  *                  Mirie 1980, REFERENCES 4.1) and impulse 2I (REFERENCES
  *                  4.2 with I from the exact-wave table of 3.4)
  *  charlesworth    seed 001's crater from 32 lb at 8 ft (eta0 = 2.07 m,
- *                  R0 = 8.28 m), the wave at 17.22 m against the linear
- *                  Cauchy-Poisson solution of the same initial surface
- *                  (REFERENCES 5.1, plane form) with the wall as an image;
- *                  RMSE and correlation judged by seed 001's own figures
- *                  (RMSE <= 11.4 %, r >= 0.93). */
+ *                  R0 = 8.28 m), the wave at 17.22 m against a two-phase
+ *                  Navier-Stokes (VOF) solution of the same initial value
+ *                  problem (reference/charlesworth/vof_gauge.csv, made by
+ *                  reference/charlesworth/vof/), RMSE and correlation
+ *                  judged by seed 001's own figures (RMSE <= 11.4 %, r >=
+ *                  0.93); the linear Cauchy-Poisson solution of the same
+ *                  surface (REFERENCES 5.1, plane form, the wall as an
+ *                  image) reported beside it. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -334,6 +337,41 @@ static void cauchy_clear(struct cauchy *cp) {
   memset(cp, 0, sizeof *cp);
 }
 
+/* Seed 001's measures of a modelled series mod against a reference ref (n
+ * samples): RMSE (its eq 16), the Pearson correlation, the reference's and
+ * the model's largest |eta|. */
+struct crater_fit {
+  double rmse, r, ref_max, mod_max;
+};
+
+static struct crater_fit crater_measures(const double *mod, const double *ref, size_t n) {
+  double sm = 0, se = 0, smm = 0, see = 0, sme = 0, s2 = 0;
+  struct crater_fit f = {NAN, NAN, 0, 0};
+  for (size_t k = 0; k < n; k++) {
+    s2 += (mod[k] - ref[k]) * (mod[k] - ref[k]);
+    sm += mod[k], se += ref[k], smm += mod[k] * mod[k], see += ref[k] * ref[k];
+    sme += mod[k] * ref[k];
+    f.ref_max = fmax(f.ref_max, fabs(ref[k]));
+    f.mod_max = fmax(f.mod_max, fabs(mod[k]));
+  }
+  const double dn = (double)n;
+  f.rmse = n ? sqrt(s2 / dn) : NAN;
+  const double cov = sme - sm * se / dn, vm = smm - sm * sm / dn, ve = see - se * se / dn;
+  f.r = (n > 1 && vm > 0 && ve > 0) ? cov / sqrt(vm * ve) : NAN;
+  return f;
+}
+
+/* Why the Navier-Stokes solution is the judged reference, not the linear
+ * one: linear theory assumes eta0/h << 1, and here eta0/h = 0.41 with a
+ * rim that stands 2.07 m above still water and drops to it in a jump; the
+ * crater's collapse and the steepening of its waves are outside it. At
+ * the gauge the linear wave's largest |eta| is 30-45 % above what the VOF
+ * solution and this solver agree on (reference/charlesworth/README.md),
+ * so seed 001's RMSE bar, set for SPH against Charlesworth's record (not
+ * available as data), can only be held against a solution of the same
+ * nonlinear problem. The VOF series is a second, independent computation
+ * (finite volumes, interFoam, two grids; its own grid difference is in the
+ * README) of exactly this 2D initial value problem. */
 enum wl_status wl_val_run_crater(const struct wl_val_case *c, const struct wl_val_ctx *ctx,
                                  double dp, struct wl_validate_level *lv, struct wl_error *err) {
   const double t_end = ctx->quick ? c->p[1] : c->p[0];
@@ -341,7 +379,13 @@ enum wl_status wl_val_run_crater(const struct wl_val_case *c, const struct wl_va
   snprintf(path, sizeof path, "%s/%s/scenario.yaml", ctx->ref_dir, c->dir);
   struct wl_scenario s;
   struct wl_plan plan;
+  struct wl_val_table vof;
+  memset(&vof, 0, sizeof vof);
   enum wl_status st = load_scenario(path, dp, ctx, &s, &plan, lv, err);
+  if (!st) {
+    snprintf(path, sizeof path, "%s/%s/vof_gauge.csv", ctx->ref_dir, c->dir);
+    st = wl_val_table_read(path, &vof, err);
+  }
   if (st) {
     wl_scenario_clear(&s);
     return st;
@@ -357,45 +401,47 @@ enum wl_status wl_val_run_crater(const struct wl_val_case *c, const struct wl_va
   if (!st && s.n_gauges > 0) {
     const double xg = s.gauges[0].x.q.si, xc = px->x_center, xw = s.wall.x.q.si;
     const double xl = cr.flume.x_left;
-    const size_t n = cr.rec.n, ng = (size_t)cr.rec.n_gauges;
-    double *ref = malloc(sizeof(double) * (n + 1)), *mod = malloc(sizeof(double) * (n + 1));
-    if (!ref || !mod) {
+    const size_t ng = (size_t)cr.rec.n_gauges;
+    size_t n = 0; /* the samples the VOF record covers */
+    while (n < cr.rec.n && cr.rec.t[n] <= vof.x[vof.n - 1] + 1e-9) n++;
+    double *lin = malloc(sizeof(double) * (n + 1)), *ns = malloc(sizeof(double) * (n + 1)),
+           *mod = malloc(sizeof(double) * (n + 1));
+    if (!lin || !ns || !mod) {
       st = wl_error_set(err, WL_ENOMEM, "validate: no memory");
     } else {
-      double sm = 0, se = 0, smm = 0, see = 0, sme = 0, s2 = 0, peak_ref = 0, peak_mod = 0,
-             amax = 0;
       for (size_t k = 0; k < n; k++) {
         const double t = cr.rec.t[k];
         /* the wave and its images in the seawall and the left end (both
          * reflect as vertical walls in linear theory) */
-        ref[k] = cauchy_eta(&cp, xg - xc, t) + cauchy_eta(&cp, 2 * xw - xg - xc, t) +
+        lin[k] = cauchy_eta(&cp, xg - xc, t) + cauchy_eta(&cp, 2 * xw - xg - xc, t) +
                  cauchy_eta(&cp, xg + xc - 2 * xl, t);
+        ns[k] = wl_val_interp(vof.x, vof.y, vof.n, t);
         mod[k] = cr.rec.eta[k * ng];
-        s2 += (mod[k] - ref[k]) * (mod[k] - ref[k]);
-        sm += mod[k], se += ref[k], smm += mod[k] * mod[k], see += ref[k] * ref[k];
-        sme += mod[k] * ref[k];
-        amax = fmax(amax, fabs(ref[k]));
-        peak_ref = fmax(peak_ref, fabs(ref[k]));
-        peak_mod = fmax(peak_mod, fabs(mod[k]));
       }
-      const double dn = (double)n;
-      const double rmse = n ? sqrt(s2 / dn) : NAN; /* seed 001 eq 16 */
-      const double cov = sme - sm * se / dn, vm = smm - sm * sm / dn, ve = see - se * se / dn;
-      const double r = (n > 1 && vm > 0 && ve > 0) ? cov / sqrt(vm * ve) : NAN;
-      wl_val_rmse(&lv->m[0], "eta RMSE / max|eta_ref|", "m", rmse, amax, CRATER_TOL_RMSE);
-      wl_val_corr(&lv->m[1], "eta correlation", r, CRATER_TOL_R);
+      const struct crater_fit fn = crater_measures(mod, ns, n), fl = crater_measures(mod, lin, n);
+      wl_val_rmse(&lv->m[0], "eta RMSE / max|eta_ref| (VOF)", "m", fn.rmse,
+                  fn.ref_max, CRATER_TOL_RMSE);
+      wl_val_corr(&lv->m[1], "eta correlation (VOF)", fn.r, CRATER_TOL_R);
       /* the 2D section of the axisymmetric lip holds -(2/3) eta0 R0 of
        * water less than the still level, so the leading wave at the gauge
        * can be a trough: the largest |eta| is compared */
-      wl_val_rel(&lv->m[2], "largest |eta| at the gauge", "m", peak_mod, peak_ref, NAN);
-      lv->n_metrics = 3;
+      wl_val_rel(&lv->m[2], "largest |eta| at the gauge (VOF)", "m", fn.mod_max,
+                 fn.ref_max, NAN);
+      wl_val_rmse(&lv->m[3], "eta RMSE / max|eta_ref| (linear)", "m", fl.rmse,
+                  fl.ref_max, NAN);
+      wl_val_corr(&lv->m[4], "eta correlation (linear)", fl.r, NAN);
+      wl_val_rel(&lv->m[5], "largest |eta| at the gauge (linear)", "m", fl.mod_max,
+                 fl.ref_max, NAN);
+      lv->n_metrics = 6;
     }
-    free(ref);
+    free(lin);
+    free(ns);
     free(mod);
   } else if (!st) {
     st = wl_error_set(err, WL_EINPUT, "%s: the reference scenario needs a gauge", path);
   }
   cauchy_clear(&cp);
+  wl_val_table_clear(&vof);
   wl_assess_case_clear(&cr);
   wl_scenario_clear(&s);
   return st;
