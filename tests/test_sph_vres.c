@@ -428,6 +428,15 @@ static int still(double periods, int strict) {
  * (for diagnosis: about 2.1 s holds the incident crest at every gauge;
  * the reflection and return are then not measured). */
 static double g_t_end = FL_T_END;
+static int g_t_end_given; /* WL_VRES_T_END set */
+
+/* The solitary and refs modes' end: FL_T_END is the H/h = 0.4 wave's
+ * return to G1 with its smoothing window; a slower wave (H/h < 0.4) gets
+ * the same window stretched by its celerity, sqrt(g (h + H)) (H/h = 0.2:
+ * 5.62 s; at 5.2 s its crest came back at the record's last sample). */
+static void t_end_for(double eps) {
+  if (!g_t_end_given && eps < 0.4) g_t_end = FL_T_END * sqrt((1 + 0.4) / (1 + eps));
+}
 /* The initial crest's offset from FL_CREST [m]: the solitary mode's
  * realisations (below) start the same wave a fraction of a spacing apart. */
 static double g_crest_dx = 0;
@@ -925,7 +934,10 @@ static int threads_same(void) { return threads_same_with(0) || threads_same_with
 int main(int argc, char **argv) {
   const char *mode = argc > 1 ? argv[1] : "suite";
   g_verlet = getenv("WL_VRES_VERLET") && atoi(getenv("WL_VRES_VERLET")) > 0;
-  if (getenv("WL_VRES_T_END") && atof(getenv("WL_VRES_T_END")) > 0) g_t_end = atof(getenv("WL_VRES_T_END"));
+  if (getenv("WL_VRES_T_END") && atof(getenv("WL_VRES_T_END")) > 0) {
+    g_t_end = atof(getenv("WL_VRES_T_END"));
+    g_t_end_given = 1;
+  }
   if (!strcmp(mode, "quick")) {
     if (fit() || layout() || still(2, 0) || threads_same()) return 1;
   } else if (!strcmp(mode, "suite")) {
@@ -935,6 +947,7 @@ int main(int argc, char **argv) {
   } else if (!strcmp(mode, "refs")) { /* the uniform references into WL_VRES_REF_DIR */
     const double eps = argc > 2 ? atof(argv[2]) : 0.4, ratio = argc > 3 ? atof(argv[3]) : 2;
     if (argc > 4) g_fine_rows = atof(argv[4]);
+    t_end_for(eps);
     static struct record r;
     const double dps[2] = {FL_H / g_fine_rows, ratio * FL_H / g_fine_rows};
     for (int k = 0; k < realisations(); k++) { /* the solitary mode's realisations' starts */
@@ -951,6 +964,7 @@ int main(int argc, char **argv) {
     if (argc > 5) g_shift = atof(argv[5]);
     if (argc > 6) g_overlap = atof(argv[6]);
     if (argc > 7) g_fine_rows = atof(argv[7]);
+    t_end_for(eps);
     if (solitary(eps, ratio)) return 1;
   } else {
     printf("unknown mode %s (quick, suite, still, refs [H/h [dp ratio [fine rows]]], solitary "
