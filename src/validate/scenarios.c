@@ -365,9 +365,9 @@ static struct crater_fit crater_measures(const double *mod, const double *ref, s
  * one: linear theory assumes eta0/h << 1, and here eta0/h = 0.41 with a
  * rim that stands 2.07 m above still water and drops to it in a jump; the
  * crater's collapse and the steepening of its waves are outside it. At
- * the gauge the linear wave's largest |eta| is 30-45 % above what the VOF
- * solution and this solver agree on (reference/charlesworth/README.md),
- * so seed 001's RMSE bar, set for SPH against Charlesworth's record (not
+ * the gauge the linear wave reads 20 % RMSE from the VOF solution, its
+ * largest |eta| 18 % high, where this solver reads 6.5-8.3 % from it
+ * (reference/charlesworth/README.md), so seed 001's RMSE bar, set for SPH against Charlesworth's record (not
  * available as data), can only be held against a solution of the same
  * nonlinear problem. The VOF series is a second, independent computation
  * (finite volumes, interFoam, two grids; its own grid difference is in the
