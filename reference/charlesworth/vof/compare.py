@@ -40,8 +40,8 @@ def interp(rows, t):
 def crater_transform(k):
     """F(k) = 2 int_0^R eta0 (2 x^2/R^2 - 1) cos(k x) dx, in closed form."""
     R, e = mc.R0, mc.ETA0
-    if k * R < 1e-3:
-        return 2 * e * (-R / 3 + (k * R) ** 2 * R * (1.0 / 6 - 2.0 / 5) * 0.5)
+    if k * R < 1e-3:  # its series: 2 eta0 (-R/3 - k^2 R^3 / 30)
+        return 2 * e * (-R / 3 - (k * R) ** 2 * R / 30)
     s, c = math.sin(k * R), math.cos(k * R)
     return 2 * e * (s / k + 4 * c / (R * k * k) - 4 * s / (R * R * k ** 3))
 
